@@ -1,0 +1,20 @@
+# Runs a command that must fail cleanly: exit code 1 or 2 (not a signal), stderr of exactly one
+# line that contains EXPECT.
+# Usage: cmake "-DCOMMAND=<cmd;args>" -DEXPECT=<text> -P check_cli_error.cmake
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "expected a failure, got exit code 0")
+endif()
+if(NOT rc MATCHES "^[12]$")
+  message(FATAL_ERROR "expected exit code 1 or 2, got '${rc}' (a crash?)\n${err}")
+endif()
+string(STRIP "${err}" stripped)
+string(FIND "${stripped}" "\n" newline)
+if(NOT newline EQUAL -1)
+  message(FATAL_ERROR "expected a one-line error, got:\n${err}")
+endif()
+string(FIND "${stripped}" "${EXPECT}" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "error does not mention '${EXPECT}':\n${err}")
+endif()
+message(STATUS "clean error: ${stripped}")

@@ -1,0 +1,181 @@
+// rt: the renderer students and lecturers run. It links the stage code (the student files).
+//   rt render SCENE.json -o OUT.png [--mode M] [--width W --height H] [--threads N]
+//   rt gallery [--out DIR]       every scene of every stage, in its own mode
+//   rt info SCENE.json           what the scene contains and which features the renderer uses
+//   rt gl-info [--window]        the OpenGL context the GPU stage will use
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include "gl/headless_context.h"
+#include "image/image.h"
+#include "render/progress.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace fs = std::filesystem;
+using namespace rt;
+
+namespace {
+
+const std::map<std::string, RenderMode> kModes = {
+    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
+    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
+    {"shaded", RenderMode::Shaded}};
+
+struct RenderArgs {
+    std::string scene;
+    std::string output;
+    std::optional<RenderMode> mode;
+    int width = 0, height = 0, threads = 0;
+    bool quiet = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run_render(const RenderArgs& args) {
+    Scene scene = load_scene(args.scene);
+    if (args.width > 0) scene.image.width = args.width;
+    if (args.height > 0) scene.image.height = args.height;
+    const RenderMode mode = args.mode.value_or(scene.mode);
+    const auto start = std::chrono::steady_clock::now();
+    RenderOptions options;
+    options.threads = args.threads;
+    options.show_progress = !args.quiet && stdout_is_terminal();
+    const Image image = render(scene, mode, options);
+    write_image(image, args.output);
+    if (!args.quiet)
+        std::printf("%s: %dx%d, %s, %d threads, %.2f s -> %s\n", args.scene.c_str(),
+                    scene.image.width, scene.image.height, to_string(mode),
+                    resolve_thread_count(args.threads), seconds_since(start), args.output.c_str());
+    return 0;
+}
+
+// Every stage folder with scenes, in order: stages/NN-name/scenes/*.json.
+int run_gallery(const fs::path& source, const fs::path& out, int threads) {
+    std::vector<fs::path> stages;
+    for (const auto& entry : fs::directory_iterator(source / "stages"))
+        if (entry.is_directory() && fs::is_directory(entry.path() / "scenes"))
+            stages.push_back(entry.path());
+    std::sort(stages.begin(), stages.end());
+    int count = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (const fs::path& stage : stages) {
+        std::vector<fs::path> scenes;
+        for (const auto& entry : fs::directory_iterator(stage / "scenes"))
+            if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+        std::sort(scenes.begin(), scenes.end());
+        const fs::path stage_out = out / stage.filename();
+        fs::create_directories(stage_out);
+        for (const fs::path& scene_file : scenes) {
+            const Scene scene = load_scene(scene_file);
+            RenderOptions options;
+            options.threads = threads;
+            const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
+            write_image(render(scene, scene.mode, options), image_file);
+            std::printf("  %s\n", fs::relative(image_file, out.parent_path()).c_str());
+            ++count;
+        }
+    }
+    std::printf("rendered %d scenes of %zu stages in %.1f s\ngallery: %s\n", count, stages.size(),
+                seconds_since(start), fs::absolute(out).lexically_normal().c_str());
+    return 0;
+}
+
+int run_info(const std::string& file) {
+    const Scene scene = load_scene(file);
+    std::printf("%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
+                "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
+                file.c_str(), scene.image.width, scene.image.height, to_string(scene.mode),
+                scene.spheres.size(), scene.planes.size(), scene.triangles.size(),
+                scene.vertices.size(), scene.boxes.size(), scene.materials.size(),
+                scene.lights.size(), scene.features.describe().c_str());
+    return 0;
+}
+
+int run_gl_info(bool window) {
+    const GlInfo info = window ? query_window_gl() : query_headless_gl();
+    if (!info.ok) {
+        std::fprintf(stderr, "rt: error: %s\n", info.error.c_str());
+        return 1;
+    }
+    std::printf("%s context\n  vendor:   %s\n  renderer: %s\n  version:  %s (%d.%d)\n  GLSL:     %s\n",
+                window ? "GLFW window" : "OSMesa headless", info.vendor.c_str(),
+                info.renderer.c_str(), info.version.c_str(), info.major, info.minor,
+                info.glsl_version.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"rt: the course ray tracer (docs/conventions.md, docs/scene-format.md)"};
+    app.require_subcommand(1);
+
+    RenderArgs render_args;
+    std::string mode_name;
+    auto* render_cmd = app.add_subcommand("render", "render one scene file to an image");
+    render_cmd->add_option("scene", render_args.scene, "scene file (.json)")->required();
+    render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)")
+        ->required();
+    render_cmd->add_option("--mode", mode_name, "override the scene's mode")
+        ->check(CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded"}));
+    render_cmd->add_option("--width", render_args.width, "override the image width")
+        ->check(CLI::Range(1, 16384));
+    render_cmd->add_option("--height", render_args.height, "override the image height")
+        ->check(CLI::Range(1, 16384));
+    render_cmd->add_option("--threads", render_args.threads, "threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
+
+    fs::path gallery_out = "gallery";
+    fs::path source = RT_SOURCE_DIR;
+    int gallery_threads = 0;
+    auto* gallery_cmd = app.add_subcommand("gallery", "render every scene of every stage");
+    gallery_cmd->add_option("--out", gallery_out, "output folder (default: ./gallery)");
+    gallery_cmd->add_option("--source", source, "source tree holding stages/")
+        ->check(CLI::ExistingDirectory);
+    gallery_cmd->add_option("--threads", gallery_threads, "threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+
+    std::string info_scene;
+    auto* info_cmd = app.add_subcommand("info", "describe a scene file");
+    info_cmd->add_option("scene", info_scene, "scene file (.json)")->required();
+
+    bool gl_window = false;
+    auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
+    gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line, compiler-style, exit code 2 (usage error), instead of CLI11's two lines.
+        std::fprintf(stderr, "rt: error: %s; run `rt --help` or `rt render --help`\n", e.what());
+        return 2;
+    }
+
+    try {
+        if (*render_cmd) {
+            if (!mode_name.empty()) render_args.mode = kModes.at(mode_name);
+            return run_render(render_args);
+        }
+        if (*gallery_cmd) return run_gallery(source, gallery_out, gallery_threads);
+        if (*info_cmd) return run_info(info_scene);
+        if (*gl_cmd) return run_gl_info(gl_window);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

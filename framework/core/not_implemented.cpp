@@ -1,0 +1,35 @@
+#include "core/not_implemented.h"
+
+#include <cstdio>
+#include <string>
+
+namespace rt {
+namespace {
+std::atomic<std::uint64_t> g_total{0};
+thread_local std::uint64_t t_this_thread = 0;
+
+// __FILE__ is absolute in CMake builds; show it relative to the source tree so the message reads
+// the same on every machine and names the path a student knows.
+std::string relative_to_source(const char* file) {
+    std::string path(file);
+    const std::string root = RT_SOURCE_DIR "/";
+    if (path.rfind(root, 0) == 0) path.erase(0, root.size());
+    return path;
+}
+}  // namespace
+
+void report_not_implemented(const char* function, const char* file, int line,
+                            const char* handout, std::atomic<bool>& reported) {
+    g_total.fetch_add(1, std::memory_order_relaxed);
+    ++t_this_thread;
+    if (!reported.exchange(true)) {
+        std::fprintf(stderr, "not implemented: %s (%s:%d); read %s\n", function,
+                     relative_to_source(file).c_str(), line, handout);
+        std::fflush(stderr);
+    }
+}
+
+std::uint64_t stub_calls_total() { return g_total.load(std::memory_order_relaxed); }
+std::uint64_t stub_calls_this_thread() { return t_this_thread; }
+
+}  // namespace rt

@@ -1,0 +1,30 @@
+// The stub mechanism: what a released starter tree runs where a solution was removed.
+//
+//   RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-sphere");
+//
+// prints once per call site, on stderr,
+//   not implemented: intersect_sphere (stages/02-intersections/intersections.cpp:57);
+//   read stages/02-intersections/README.md#ray-sphere
+// and counts the call, so the renderer paints the pixel magenta (visibly wrong) and the stage
+// tests fail even where a stub's return value happens to be right.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+
+namespace rt {
+
+void report_not_implemented(const char* function, const char* file, int line,
+                            const char* handout, std::atomic<bool>& reported);
+
+// Stubs reached so far, by all threads / by the calling thread.
+std::uint64_t stub_calls_total();
+std::uint64_t stub_calls_this_thread();
+
+}  // namespace rt
+
+#define RT_NOT_IMPLEMENTED(handout)                                                   \
+    do {                                                                              \
+        static std::atomic<bool> rt_reported_{false};                                 \
+        ::rt::report_not_implemented(__func__, __FILE__, __LINE__, handout, rt_reported_); \
+    } while (0)

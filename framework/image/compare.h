@@ -1,0 +1,36 @@
+// Image comparison used by the stage image tests and by the grader: the semantics of
+// OpenImageIO's idiff and Blender's render tests. A pixel fails when some channel differs from
+// the reference by more than `tolerance` (8-bit sRGB steps); the image passes when at most
+// `max_failing_percent` of its pixels fail.
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+
+namespace rt {
+
+struct CompareOptions {
+    int tolerance = 2;                 // 8-bit steps a channel may differ (rounding, -O levels)
+    double max_failing_percent = 0.1;  // share of pixels allowed past the tolerance
+    // Forgive anti-aliased edges: a pixel also passes when some reference pixel in its 3x3
+    // neighbourhood is within tolerance.
+    bool neighbourhood = false;
+};
+
+struct CompareResult {
+    bool size_matches = false;
+    int max_difference = 0;        // largest channel difference, 0..255
+    long long failing_pixels = 0;
+    double failing_percent = 100;
+    double mean_abs_difference = 0;  // per channel, in 8-bit steps
+    bool passed = false;
+    Image8 heat_map;  // black where equal, brighter red the larger the difference, white if failing
+
+    std::string summary() const;  // one line for logs and test failures
+};
+
+CompareResult compare_images(const Image8& actual, const Image8& reference,
+                             const CompareOptions& options = {});
+
+}  // namespace rt

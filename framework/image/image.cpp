@@ -1,0 +1,93 @@
+#include "image/image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+namespace rt {
+
+float linear_to_srgb(float x) {
+    if (!(x > 0)) return 0;  // also NaN
+    if (x >= 1) return 1;
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1 / 2.4f) - 0.055f;
+}
+
+float srgb_to_linear(float x) {
+    if (!(x > 0)) return 0;
+    if (x >= 1) return 1;
+    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
+Image8 to_image8(const Image& image) {
+    Image8 out{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size() * 3)};
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            out.data[i * 3 + c] = std::uint8_t(std::lround(linear_to_srgb(image.pixels[i][c]) * 255));
+    return out;
+}
+
+namespace {
+
+// OpenImageIO's messages may span lines; errors here are one line.
+std::string one_line(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+}
+
+void write_pixels(const std::filesystem::path& file, int width, int height, OIIO::TypeDesc type,
+                  const void* data, bool linear) {
+    auto out = OIIO::ImageOutput::create(file.string());
+    if (!out)
+        throw ImageError(file.string() + ": error: cannot write this image type (" +
+                         one_line(OIIO::geterror()) + "); use a .png or .exr file name");
+    OIIO::ImageSpec spec(width, height, 3, type);
+    spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
+    if (!out->open(file.string(), spec) || !out->write_image(type, data) || !out->close())
+        throw ImageError(file.string() + ": error: writing failed (" + one_line(out->geterror()) +
+                         "); check that the folder exists and is writable");
+}
+
+}  // namespace
+
+void write_image(const Image& image, const std::filesystem::path& file) {
+    const std::string ext = file.extension().string();
+    if (ext == ".exr") {
+        write_pixels(file, image.width, image.height, OIIO::TypeDesc::FLOAT, image.pixels.data(),
+                     true);
+    } else if (ext == ".png") {
+        write_image8(to_image8(image), file);
+    } else {
+        throw ImageError(file.string() + ": error: unknown image extension \"" + ext +
+                         "\"; use .png (sRGB, 8-bit) or .exr (linear float)");
+    }
+}
+
+void write_image8(const Image8& image, const std::filesystem::path& file) {
+    write_pixels(file, image.width, image.height, OIIO::TypeDesc::UINT8, image.data.data(), false);
+}
+
+Image8 read_image8(const std::filesystem::path& file) {
+    if (!std::filesystem::is_regular_file(file))
+        throw ImageError(file.string() + ": error: no such image file; check the path");
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in)
+        throw ImageError(file.string() + ": error: cannot read image (" + one_line(OIIO::geterror()) +
+                         "); is it a PNG?");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 ||
+        spec.nchannels < 1 || spec.nchannels > 4)
+        throw ImageError(file.string() + ": error: unsupported size or channel count");
+    const int channels = spec.nchannels;
+    std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+        throw ImageError(file.string() + ": error: cannot decode image (" + one_line(in->geterror()) + ")");
+    Image8 out{spec.width, spec.height, std::vector<std::uint8_t>(std::size_t(spec.width) * spec.height * 3)};
+    for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
+        for (int c = 0; c < 3; ++c)
+            out.data[i * 3 + c] = raw[i * channels + (channels >= 3 ? c : 0)];
+    return out;
+}
+
+}  // namespace rt

@@ -1,0 +1,57 @@
+// Images: linear float RGB in memory; written as sRGB-encoded 8-bit PNG for viewing or as
+// linear EXR for data (docs/conventions.md#colour). Read back through OpenImageIO.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "core/real.h"
+
+namespace rt {
+
+// Linear RGB, row-major, row 0 at the top of the picture.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<Color> pixels;
+
+    Image() = default;
+    Image(int w, int h, Color fill = Color(0)) : width(w), height(h), pixels(std::size_t(w) * h, fill) {}
+    Color& at(int x, int y) { return pixels[std::size_t(y) * width + x]; }
+    const Color& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
+};
+
+// 8-bit sRGB-encoded RGB, the form of images on disk: what graders compare.
+struct Image8 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> data;  // 3 bytes a pixel
+
+    const std::uint8_t* at(int x, int y) const { return &data[(std::size_t(y) * width + x) * 3]; }
+    std::uint8_t* at(int x, int y) { return &data[(std::size_t(y) * width + x) * 3]; }
+};
+
+class ImageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The sRGB transfer function (IEC 61966-2-1), for one linear value clamped to [0, 1].
+float linear_to_srgb(float linear);
+float srgb_to_linear(float encoded);
+
+// Linear to 8-bit sRGB with rounding to nearest. NaN becomes 0; values outside [0, 1] clamp.
+Image8 to_image8(const Image& image);
+
+// Writes by extension: .png (8-bit sRGB) or .exr (linear float). Throws ImageError naming the
+// file on failure (unknown extension, unwritable folder, ...).
+void write_image(const Image& image, const std::filesystem::path& file);
+void write_image8(const Image8& image, const std::filesystem::path& file);
+
+// Reads any 8-bit RGB or RGBA image OpenImageIO can (alpha is dropped; grey is expanded).
+// Throws ImageError naming the file when it is missing, unreadable or not 8-bit.
+Image8 read_image8(const std::filesystem::path& file);
+
+}  // namespace rt

@@ -1,0 +1,127 @@
+#include "render/render.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include "core/not_implemented.h"
+#include "render/progress.h"
+#include "student/stage02.h"
+
+namespace rt {
+namespace {
+
+const Color kStubColor{1, 0, 1};  // magenta: a stub was reached for this pixel
+
+// Debug visualisations are display values: store them so that the sRGB encoding at write time
+// gives back exactly the visualised value.
+Color display_value(Color value) {
+    return Color(srgb_to_linear(value.r), srgb_to_linear(value.g), srgb_to_linear(value.b));
+}
+
+Color unit_vector_colour(const Vec3& v) { return Color(Real(0.5) * (v + Vec3(1))); }
+
+// A stable, well-spread colour per primitive id (an integer hash, not a random generator, so
+// the image is identical on every machine).
+Color primitive_colour(int id) {
+    std::uint32_t h = std::uint32_t(id + 1) * 2654435761u;
+    h ^= h >> 15;
+    h *= 2246822519u;
+    h ^= h >> 13;
+    return Color(float(h & 255), float((h >> 8) & 255), float((h >> 16) & 255)) / 255.0f * 0.8f +
+           0.2f;
+}
+
+// Per pixel: the visualised colour, plus the hit distance for the depth mode.
+struct PixelResult {
+    Color colour{0};
+    Real depth = -1;  // < 0: no hit
+};
+
+PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
+    PixelResult out;
+    const Ray ray = camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
+    if (mode == RenderMode::Directions) {
+        if (all_finite(ray.direction)) out.colour = display_value(unit_vector_colour(ray.direction));
+        return out;
+    }
+    Hit hit;
+    if (!intersect_nearest(ray, scene, Interval{0, kInfinity}, hit)) {
+        out.colour = mode == RenderMode::Shaded ? scene.background : Color(0);
+        return out;
+    }
+    switch (mode) {
+        case RenderMode::Normals: out.colour = display_value(unit_vector_colour(hit.normal)); break;
+        case RenderMode::Depth: out.depth = hit.t; break;
+        case RenderMode::PrimitiveId: out.colour = display_value(primitive_colour(hit.primitive)); break;
+        default: break;
+    }
+    return out;
+}
+
+// Depth: near hits white, far hits dark grey, misses black; the range is the image's own
+// [nearest, farthest] hit, a deterministic reduction over all pixels.
+void map_depth(const std::vector<Real>& depth, Image& image) {
+    Real near = kInfinity, far = 0;
+    for (Real d : depth)
+        if (d >= 0) near = std::min(near, d), far = std::max(far, d);
+    const Real span = far > near ? far - near : Real(1);
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+        if (depth[i] < 0 || image.pixels[i] == kStubColor) continue;
+        const float grey = float(1 - Real(0.8) * (depth[i] - near) / span);
+        image.pixels[i] = display_value(Color(grey));
+    }
+}
+
+}  // namespace
+
+int resolve_thread_count(int threads) {
+    if (threads > 0) return threads;
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
+    if (mode == RenderMode::Shaded)
+        throw std::runtime_error(
+            "render mode \"shaded\" needs stage 03 (Blinn-Phong), which this tree does not have "
+            "yet; use --mode normals, depth, directions or primitive");
+    const int width = scene.image.width, height = scene.image.height;
+    Image image(width, height);
+    std::vector<Real> depth(std::size_t(width) * height, -1);
+    const int tile = std::max(1, options.tile_size);
+    const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+    const int tile_count = tiles_x * tiles_y;
+    std::atomic<int> next_tile{0};
+    ProgressBar progress(tile_count, options.show_progress);
+
+    // Threads take tiles in order from a shared counter; which thread renders a tile does not
+    // change any pixel's arithmetic.
+    auto worker = [&] {
+        for (int t = next_tile.fetch_add(1); t < tile_count; t = next_tile.fetch_add(1)) {
+            const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+            for (int y = y0; y < std::min(y0 + tile, height); ++y)
+                for (int x = x0; x < std::min(x0 + tile, width); ++x) {
+                    const std::uint64_t stubs = stub_calls_this_thread();
+                    PixelResult p = render_pixel(scene, mode, x, y);
+                    const std::size_t i = std::size_t(y) * width + x;
+                    if (stub_calls_this_thread() != stubs) p = {kStubColor, -1};
+                    image.pixels[i] = p.colour;
+                    depth[i] = p.depth;
+                }
+            progress.advance();
+        }
+    };
+    const int threads = std::min(resolve_thread_count(options.threads), std::max(1, tile_count));
+    std::vector<std::jthread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    pool.clear();  // joins
+
+    if (mode == RenderMode::Depth) map_depth(depth, image);
+    return image;
+}
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+// The parallel render loop (docs/conventions.md#pixels-and-determinism).
+//
+// Pixels are independent: each is computed from the scene alone, by exactly the same arithmetic
+// whatever thread computes it, so the image is bit-identical for any thread count and any run.
+#pragma once
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct RenderOptions {
+    int threads = 0;             // 0: all cores
+    bool show_progress = false;  // a progress bar with ETA on stdout
+    int tile_size = 16;
+};
+
+// Renders the scene in `mode` (scene.mode unless the caller overrides it).
+// Debug modes (directions, normals, depth, primitive) store the visualised value so that the PNG
+// holds it directly: 8-bit value = round(255 * value).
+// A pixel whose computation reached a stub (RT_NOT_IMPLEMENTED) is painted magenta.
+Image render(const Scene& scene, RenderMode mode, const RenderOptions& options = {});
+
+// The number of threads `threads` means (0 → hardware concurrency, at least 1).
+int resolve_thread_count(int threads);
+
+}  // namespace rt

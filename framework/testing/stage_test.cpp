@@ -1,0 +1,51 @@
+#include "testing/stage_test.h"
+
+#include "core/not_implemented.h"
+#include "image/compare.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace rt::testing {
+
+void StageTest::SetUp() { stubs_before_ = stub_calls_total(); }
+
+void StageTest::TearDown() {
+    if (stub_calls_total() != stubs_before_)
+        ADD_FAILURE() << "this test reached code that is not implemented yet (see the "
+                         "\"not implemented\" line above for the function and the handout "
+                         "section to read)";
+}
+
+std::filesystem::path source_dir() { return RT_SOURCE_DIR; }
+
+void expect_matches_reference(const std::string& stage, const std::string& scene_name) {
+    const auto scene_file = source_dir() / "stages" / stage / "scenes" / (scene_name + ".json");
+    const auto reference_file = source_dir() / "reference_images" / stage / (scene_name + ".png");
+    Scene scene;
+    try {
+        scene = load_scene(scene_file);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << e.what();
+        return;
+    }
+    const Image8 actual = to_image8(render(scene, scene.mode));
+    Image8 reference;
+    try {
+        reference = read_image8(reference_file);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << e.what();
+        return;
+    }
+    const CompareResult result = compare_images(actual, reference);
+    if (result.passed) return;
+    const auto out_dir = std::filesystem::path(RT_TEST_OUTPUT_DIR) / stage;
+    std::filesystem::create_directories(out_dir);
+    write_image8(actual, out_dir / (scene_name + ".png"));
+    if (result.size_matches) write_image8(result.heat_map, out_dir / (scene_name + ".diff.png"));
+    ADD_FAILURE() << scene_file.string() << ": " << result.summary() << "\n  your image: "
+                  << (out_dir / (scene_name + ".png")).string()
+                  << "\n  reference:  " << reference_file.string()
+                  << "\n  difference: " << (out_dir / (scene_name + ".diff.png")).string();
+}
+
+}  // namespace rt::testing

@@ -1,0 +1,130 @@
+// Images: sRGB encoding, PNG/EXR round trips, and the comparison the image tests and the grader use.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "image/compare.h"
+#include "image/image.h"
+
+namespace rt {
+namespace {
+
+std::filesystem::path temp_file(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / "rt-framework-tests";
+    std::filesystem::create_directories(dir);
+    return dir / name;
+}
+
+Image8 gradient(int w, int h) {
+    Image8 img{w, h, std::vector<std::uint8_t>(std::size_t(w) * h * 3)};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            img.at(x, y)[0] = std::uint8_t(x * 7);
+            img.at(x, y)[1] = std::uint8_t(y * 5);
+            img.at(x, y)[2] = 128;
+        }
+    return img;
+}
+
+// Fixed points of IEC 61966-2-1: 0, 1, the linear segment, and mid grey 0.5 -> 0.7354.
+TEST(Srgb, KnownValues) {
+    EXPECT_EQ(linear_to_srgb(0), 0);
+    EXPECT_EQ(linear_to_srgb(1), 1);
+    EXPECT_NEAR(linear_to_srgb(0.002f), 0.002f * 12.92f, 1e-7);
+    EXPECT_NEAR(linear_to_srgb(0.5f), 0.735357f, 1e-5);
+    EXPECT_NEAR(srgb_to_linear(linear_to_srgb(0.3f)), 0.3f, 1e-6);
+}
+
+// Out-of-range and NaN values clamp rather than wrap around in 8 bits.
+TEST(Srgb, ClampsAndNaN) {
+    Image img(3, 1);
+    img.pixels = {Color(-1, 2, 0.5f), Color(std::nanf(""), 1e30f, 0), Color(0)};
+    const Image8 out = to_image8(img);
+    EXPECT_EQ(out.at(0, 0)[0], 0);
+    EXPECT_EQ(out.at(0, 0)[1], 255);
+    EXPECT_EQ(out.at(0, 0)[2], 188);  // round(255 * 0.735357)
+    EXPECT_EQ(out.at(1, 0)[0], 0);
+    EXPECT_EQ(out.at(1, 0)[1], 255);
+}
+
+TEST(ImageFiles, PngRoundTripIsExact) {
+    const Image8 img = gradient(19, 7);
+    const auto file = temp_file("roundtrip.png");
+    write_image8(img, file);
+    const Image8 back = read_image8(file);
+    ASSERT_EQ(back.width, 19);
+    ASSERT_EQ(back.height, 7);
+    EXPECT_EQ(back.data, img.data);
+}
+
+TEST(ImageFiles, ExrIsWritten) {
+    Image img(4, 2, Color(0.25f, 2.0f, 0.0f));
+    const auto file = temp_file("linear.exr");
+    write_image(img, file);
+    EXPECT_GT(std::filesystem::file_size(file), 0u);
+}
+
+TEST(ImageFiles, ClearErrors) {
+    EXPECT_THROW(read_image8(temp_file("does-not-exist.png")), ImageError);
+    const auto junk = temp_file("junk.png");
+    std::ofstream(junk) << "this is not a png";
+    EXPECT_THROW(read_image8(junk), ImageError);
+    EXPECT_THROW(write_image(Image(2, 2), temp_file("x.bmpx")), ImageError);
+    try {
+        write_image(Image(2, 2), temp_file("x.txt"));
+        FAIL();
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("x.txt"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Compare, IdenticalImagesMatch) {
+    const Image8 a = gradient(10, 10);
+    const CompareResult r = compare_images(a, a);
+    EXPECT_TRUE(r.passed);
+    EXPECT_EQ(r.max_difference, 0);
+    EXPECT_EQ(r.failing_pixels, 0);
+}
+
+// Differences within the tolerance pass; one pixel over it out of 10,000 is 0.01% and passes
+// the 0.1% budget; 11 such pixels (0.11%) fail.
+TEST(Compare, ToleranceAndFailingPercentage) {
+    const Image8 ref = gradient(100, 100);
+    Image8 img = ref;
+    for (auto& v : img.data) v = std::uint8_t(std::min(255, v + 2));
+    EXPECT_TRUE(compare_images(img, ref).passed);
+    img.at(50, 50)[1] = std::uint8_t(ref.at(50, 50)[1] + 40);
+    CompareResult r = compare_images(img, ref);
+    EXPECT_TRUE(r.passed) << r.summary();
+    EXPECT_EQ(r.failing_pixels, 1);
+    for (int i = 0; i < 10; ++i) img.at(i, 0)[2] = 0;
+    r = compare_images(img, ref);
+    EXPECT_FALSE(r.passed) << r.summary();
+    EXPECT_EQ(r.failing_pixels, 11);
+    EXPECT_EQ(r.heat_map.at(50, 50)[0], 255);
+}
+
+TEST(Compare, SizeMismatchFails) {
+    const CompareResult r = compare_images(gradient(10, 10), gradient(10, 11));
+    EXPECT_FALSE(r.passed);
+    EXPECT_FALSE(r.size_matches);
+}
+
+// A one-pixel shift of a hard edge fails pixel-wise but passes with the 3x3 neighbourhood.
+TEST(Compare, NeighbourhoodForgivesShiftedEdges) {
+    Image8 ref{20, 20, std::vector<std::uint8_t>(20 * 20 * 3, 0)};
+    Image8 img = ref;
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 20; ++x) {
+            if (x >= 10) std::fill_n(ref.at(x, y), 3, 255);
+            if (x >= 11) std::fill_n(img.at(x, y), 3, 255);
+        }
+    EXPECT_FALSE(compare_images(img, ref).passed);
+    CompareOptions forgiving;
+    forgiving.neighbourhood = true;
+    EXPECT_TRUE(compare_images(img, ref, forgiving).passed);
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,556 @@
+#include "release.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace rt::grader {
+
+namespace {
+
+constexpr std::string_view kBegin = "// BEGIN SOLUTION";
+constexpr std::string_view kStub = "// STUB";
+constexpr std::string_view kEnd = "// END SOLUTION";
+
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+// One line of a file: its content and its terminator ("\n", "\r\n" or "" on a last line
+// without newline), kept apart so rewriting a line never changes the file's line endings.
+struct Line {
+    std::string_view content;
+    std::string_view ending;
+};
+
+std::vector<Line> split_lines(std::string_view text) {
+    std::vector<Line> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t newline = text.find('\n', start);
+        std::size_t end = newline == std::string_view::npos ? text.size() : newline;
+        std::size_t content_end = end;
+        if (newline != std::string_view::npos && content_end > start &&
+            text[content_end - 1] == '\r')
+            --content_end;
+        std::size_t next = newline == std::string_view::npos ? text.size() : newline + 1;
+        lines.push_back({text.substr(start, content_end - start),
+                         text.substr(content_end, next - content_end)});
+        start = next;
+    }
+    return lines;
+}
+
+// "<indent>// code" -> "<indent>code": the stub was written as a comment so the solved tree
+// compiles; releasing it turns it back into code at the same indentation.
+std::string uncomment(std::string_view content) {
+    std::size_t indent = 0;
+    while (indent < content.size() && (content[indent] == ' ' || content[indent] == '\t')) ++indent;
+    std::string_view rest = content.substr(indent);
+    rest.remove_prefix(rest.starts_with("// ") ? 3 : 2);  // caller checked it starts with "//"
+    if (trim(rest).empty()) return {};                    // an empty comment line
+    std::string out(content.substr(0, indent));
+    out += rest;
+    return out;
+}
+
+// Appends rather than `"'" + string`, which trips a GCC 12 -Wrestrict false positive.
+std::string quote(std::string_view s) {
+    std::string out;
+    out += '\'';
+    out += s;
+    out += '\'';
+    return out;
+}
+
+}  // namespace
+
+Marker classify_marker(std::string_view line) {
+    const std::string_view t = trim(line);
+    if (t == kBegin) return Marker::Begin;
+    if (t == kStub) return Marker::Stub;
+    if (t == kEnd) return Marker::End;
+    return Marker::None;
+}
+
+MarkerResult process_markers(std::string_view text, RegionMode mode) {
+    MarkerResult result;
+    result.text.reserve(text.size());
+    enum class State { Outside, Solution, Stub } state = State::Outside;
+    int begin_line = 0;
+    int stub_line = 0;
+    auto error = [&](int line, std::string message) {
+        result.errors.push_back({line, "error: " + std::move(message)});
+    };
+    auto emit = [&](std::string_view content, std::string_view ending) {
+        result.text += content;
+        result.text += ending;
+    };
+
+    const std::vector<Line> lines = split_lines(text);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const int number = static_cast<int>(i) + 1;
+        const Line& line = lines[i];
+        const Marker marker = classify_marker(line.content);
+        if (marker != Marker::None) {
+            result.has_markers = true;
+            if (result.first_marker_line == 0) result.first_marker_line = number;
+        }
+        switch (marker) {
+            case Marker::Begin:
+                if (state != State::Outside) {
+                    // Stay in the outer region: its END will close it, so one mistake gives one
+                    // error.
+                    error(number, quote(kBegin) + " inside the region opened at line " +
+                                      std::to_string(begin_line) +
+                                      " (regions cannot nest); close that region with " +
+                                      quote(kEnd) + " before opening another");
+                } else {
+                    state = State::Solution;
+                    begin_line = number;
+                    stub_line = 0;
+                }
+                break;
+            case Marker::Stub:
+                if (state == State::Outside) {
+                    error(number, quote(kStub) + " without " + quote(kBegin) + "; add " +
+                                      quote(kBegin) +
+                                      " above the solution lines, or delete this line");
+                } else if (state == State::Stub) {
+                    error(number, "second " + quote(kStub) + " in the region opened at line " +
+                                      std::to_string(begin_line) + " (first at line " +
+                                      std::to_string(stub_line) + "); keep only one");
+                } else {
+                    state = State::Stub;
+                    stub_line = number;
+                }
+                break;
+            case Marker::End:
+                if (state == State::Outside) {
+                    error(number, quote(kEnd) + " without " + quote(kBegin) + "; add " +
+                                      quote(kBegin) +
+                                      " where the solution starts, or delete this line");
+                } else if (state == State::Solution) {
+                    error(number, "the region opened at line " + std::to_string(begin_line) +
+                                      " has no " + quote(kStub) + " section; add " + quote(kStub) +
+                                      " followed by the commented stub (RT_NOT_IMPLEMENTED and a "
+                                      "return) before " +
+                                      quote(kEnd));
+                    state = State::Outside;
+                } else {
+                    ++result.regions;
+                    state = State::Outside;
+                }
+                break;
+            case Marker::None:
+                if (state == State::Outside) {
+                    emit(line.content, line.ending);
+                } else if (state == State::Solution) {
+                    if (mode == RegionMode::Keep) emit(line.content, line.ending);
+                } else if (trim(line.content).empty()) {
+                    if (mode == RegionMode::Strip)
+                        emit({}, line.ending);  // spacing inside the stub
+                } else if (!trim(line.content).starts_with("//")) {
+                    error(number, "stub line is not a comment (in the region opened at line " +
+                                      std::to_string(begin_line) + "); write it as '// " +
+                                      std::string(trim(line.content)) +
+                                      "' so the solved tree compiles -- release un-comments it");
+                } else if (mode == RegionMode::Strip) {
+                    emit(uncomment(line.content), line.ending);
+                }
+                break;
+        }
+    }
+    if (state != State::Outside) {
+        error(begin_line, "the region opened here is still open at the end of the file (line " +
+                              std::to_string(lines.size()) + "); add " + quote(kEnd) +
+                              " after its stub");
+    }
+    std::stable_sort(result.errors.begin(), result.errors.end(),
+                     [](const MarkerError& a, const MarkerError& b) { return a.line < b.line; });
+    return result;
+}
+
+std::string format_error(const std::string& path, const MarkerError& error) {
+    return path + ":" + std::to_string(error.line) + ": " + error.message;
+}
+
+std::optional<StageRef> stage_of(std::string_view relative_path) {
+    constexpr std::string_view prefix = "stages/";
+    if (!relative_path.starts_with(prefix)) return std::nullopt;
+    std::string_view rest = relative_path.substr(prefix.size());
+    const std::size_t slash = rest.find('/');
+    if (slash == std::string_view::npos) return std::nullopt;  // a file directly in stages/
+    const std::string_view folder = rest.substr(0, slash);
+    // Stage folders are "NN-name": two digits, a dash.
+    if (folder.size() < 4 || !std::isdigit(static_cast<unsigned char>(folder[0])) ||
+        !std::isdigit(static_cast<unsigned char>(folder[1])) || folder[2] != '-')
+        return std::nullopt;
+    StageRef ref;
+    ref.number = (folder[0] - '0') * 10 + (folder[1] - '0');
+    ref.folder = std::string(prefix) + std::string(folder);
+    ref.relative = std::string(rest.substr(slash + 1));
+    return ref;
+}
+
+namespace {
+
+// Single-quoted for /bin/sh, so any path survives popen.
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) {
+        if (c == '\'')
+            out += "'\\''";
+        else
+            out += c;
+    }
+    return out + "'";
+}
+
+// Runs a shell command, returns its stdout, or nullopt if it failed.
+std::optional<std::string> run_command(const std::string& command) {
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr) return std::nullopt;
+    std::string output;
+    char buffer[65536];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+    const int status = ::pclose(pipe);
+    if (status != 0) return std::nullopt;
+    return output;
+}
+
+bool read_file(const fs::path& path, std::string& content) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    content = std::move(buffer).str();
+    return !in.bad();
+}
+
+// Re-releasing with --force leaves identical files untouched, so their timestamps stay and an
+// existing build of the starter tree rebuilds only what changed.
+bool same_content(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (!fs::is_regular_file(b, ec) || fs::file_size(a, ec) != fs::file_size(b, ec) || ec)
+        return false;
+    std::string content_a, content_b;
+    return read_file(a, content_a) && read_file(b, content_b) && content_a == content_b;
+}
+
+// True if `inner` is `outer` or lies below it (both canonical).
+bool is_within(const fs::path& inner, const fs::path& outer) {
+    const fs::path relative = inner.lexically_relative(outer);
+    if (relative.empty()) return false;
+    const auto first = *relative.begin();
+    return first != ".." && relative.is_relative();
+}
+
+struct FileList {
+    std::vector<std::string> files;  // relative, '/'-separated, sorted
+    std::string how;                 // for the log
+};
+
+// The files to release: git's view when the source is a checkout (so build products, editor
+// files and anything ignored never ship), otherwise a directory walk.
+std::optional<FileList> list_source_files(const ReleaseOptions& options, std::ostream& errors) {
+    const std::string src = shell_quote(options.source.string());
+    const auto inside =
+        run_command("git -C " + src + " rev-parse --is-inside-work-tree 2>/dev/null");
+    FileList list;
+    if (inside && trim(*inside) == "true") {
+        std::string command = "git -C " + src + " ls-files -z --cached";
+        if (options.include_untracked) command += " --others --exclude-standard";
+        const auto output = run_command(command);
+        if (!output) {
+            errors << "rt-grade release: error: 'git ls-files' failed in "
+                   << options.source.string() << "; check that git works there\n";
+            return std::nullopt;
+        }
+        std::set<std::string> unique;  // --cached and --others never overlap, but be safe
+        std::size_t start = 0;
+        while (start < output->size()) {
+            std::size_t end = output->find('\0', start);
+            if (end == std::string::npos) end = output->size();
+            if (end > start) unique.insert(output->substr(start, end - start));
+            start = end + 1;
+        }
+        list.files.assign(unique.begin(), unique.end());
+        list.how = options.include_untracked ? "git: tracked and untracked, non-ignored files"
+                                             : "git: tracked files";
+        if (list.files.empty()) {
+            errors << "rt-grade release: error: git tracks no files in " << options.source.string()
+                   << "; commit (or 'git add') the tree, or pass --include-untracked\n";
+            return std::nullopt;
+        }
+        return list;
+    }
+    if (fs::exists(options.source / ".git")) {
+        errors << "rt-grade release: error: " << options.source.string()
+               << " has a .git but git cannot read it; install git or fix the checkout\n";
+        return std::nullopt;
+    }
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(options.source, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        const fs::path relative = it->path().lexically_relative(options.source);
+        const std::string name = it->path().filename().string();
+        if (it->is_directory() && !it->is_symlink()) {
+            // Build trees live in build*/ at the top (see .gitignore); .git is never copied.
+            if (name == ".git" || (it.depth() == 0 && name.starts_with("build")))
+                it.disable_recursion_pending();
+            continue;
+        }
+        if (it->is_regular_file() || it->is_symlink())
+            list.files.push_back(relative.generic_string());
+    }
+    if (ec) {
+        errors << "rt-grade release: error: cannot walk " << options.source.string() << ": "
+               << ec.message() << "; check the --source directory\n";
+        return std::nullopt;
+    }
+    std::sort(list.files.begin(), list.files.end());
+    list.how = "directory walk (not a git checkout; build*/ and .git/ skipped)";
+    return list;
+}
+
+struct StageInfo {
+    std::string title;
+    std::set<std::string> student_files;
+    std::string problem;  // why stage.json is unusable, empty if fine
+};
+
+StageInfo load_stage_json(const fs::path& path) {
+    StageInfo info;
+    std::string text;
+    if (!read_file(path, text)) {
+        info.problem = "missing or unreadable";
+        return info;
+    }
+    try {
+        const nlohmann::json json = nlohmann::json::parse(text);
+        if (json.contains("title") && json["title"].is_string()) info.title = json["title"];
+        if (!json.contains("student_files") || !json["student_files"].is_array()) {
+            info.problem = "has no \"student_files\" array";
+            return info;
+        }
+        for (const auto& file : json["student_files"]) {
+            if (!file.is_string()) {
+                info.problem = "lists a \"student_files\" entry that is not a string";
+                return info;
+            }
+            info.student_files.insert(file.get<std::string>());
+        }
+    } catch (const nlohmann::json::exception& e) {
+        info.problem = std::string("is not valid JSON (") + e.what() + ")";
+    }
+    return info;
+}
+
+// A stage file whose regions were rewritten, held until every file has been validated.
+struct Rewritten {
+    std::string relative;
+    std::string text;
+};
+
+}  // namespace
+
+int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostream& errors) {
+    ReleaseOptions options = options_in;
+    std::error_code ec;
+    options.source = fs::weakly_canonical(fs::absolute(options.source), ec);
+    if (ec || !fs::is_directory(options.source)) {
+        errors << "rt-grade release: error: source " << options_in.source.string()
+               << " is not a directory; pass --source with the course tree\n";
+        return 2;
+    }
+    options.out = fs::weakly_canonical(fs::absolute(options.out), ec);
+    if (ec) {
+        errors << "rt-grade release: error: cannot resolve --out " << options_in.out.string()
+               << ": " << ec.message() << "\n";
+        return 2;
+    }
+    if (options.out == options.source || is_within(options.out, options.source)) {
+        errors << "rt-grade release: error: --out " << options.out.string()
+               << " is inside the source tree " << options.source.string()
+               << "; choose a directory outside it (it would be copied into itself)\n";
+        return 2;
+    }
+    if (is_within(options.source, options.out)) {
+        errors << "rt-grade release: error: --out " << options.out.string()
+               << " contains the source tree; choose a directory outside it\n";
+        return 2;
+    }
+    if (fs::exists(options.out)) {
+        if (!fs::is_directory(options.out)) {
+            errors << "rt-grade release: error: --out " << options.out.string()
+                   << " exists and is not a directory; choose another path\n";
+            return 2;
+        }
+        if (!fs::is_empty(options.out) && !options.force) {
+            errors
+                << "rt-grade release: error: --out " << options.out.string()
+                << " is not empty; pass --force to write over it, or choose an empty directory\n";
+            return 2;
+        }
+    }
+
+    const auto list = list_source_files(options, errors);
+    if (!list) return 2;
+
+    // Pass 1: read and check everything; nothing is written unless it all checks out.
+    std::vector<std::string> problems;
+    std::vector<Rewritten> rewritten;
+    std::set<std::string> copied;  // files to copy unchanged
+    std::map<std::string, StageInfo> stages;
+    int stripped = 0;
+    int kept = 0;
+    auto stage_info = [&](const std::string& folder) -> StageInfo& {
+        auto it = stages.find(folder);
+        if (it == stages.end())
+            it = stages.emplace(folder, load_stage_json(options.source / folder / "stage.json"))
+                     .first;
+        return it->second;
+    };
+
+    for (const std::string& relative : list->files) {
+        const fs::path path = options.source / relative;
+        const auto status = fs::symlink_status(path, ec);
+        if (ec || !fs::exists(status)) continue;  // tracked but deleted in the working tree
+        const auto stage = stage_of(relative);
+        if (stage) stage_info(stage->folder);  // every stage folder is listed in RELEASE.txt
+        if (fs::is_symlink(status) || !fs::is_regular_file(status)) {
+            if (fs::is_symlink(status)) copied.insert(relative);
+            continue;  // directories here are git submodules: not part of a starter tree
+        }
+        std::string content;
+        if (!read_file(path, content)) {
+            problems.push_back(relative + ":1: error: cannot read the file; check its permissions");
+            continue;
+        }
+        const bool solved = stage && stage->number <= options.solved_through;
+        MarkerResult result =
+            process_markers(content, solved ? RegionMode::Keep : RegionMode::Strip);
+        if (!result.has_markers) {
+            copied.insert(relative);
+            continue;
+        }
+        const std::size_t problems_before = problems.size();
+        for (const MarkerError& error : result.errors)
+            problems.push_back(format_error(relative, error));
+        const MarkerError where{result.first_marker_line, ""};
+        if (!stage) {
+            problems.push_back(format_error(
+                relative, {where.line,
+                           "error: solution markers outside a stage folder (only "
+                           "stages/NN-name/ student files may hold solutions); move "
+                           "the solution into a stage's student file or remove the markers"}));
+        } else {
+            const StageInfo& info = stage_info(stage->folder);
+            if (!info.problem.empty()) {
+                problems.push_back(format_error(
+                    relative,
+                    {where.line, "error: " + stage->folder + "/stage.json " + info.problem +
+                                     "; give the stage a stage.json listing its "
+                                     "\"student_files\""}));
+            } else if (!info.student_files.contains(stage->relative)) {
+                problems.push_back(format_error(
+                    relative,
+                    {where.line, "error: file has solution markers but is not listed in " +
+                                     stage->folder + "/stage.json \"student_files\"; add \"" +
+                                     stage->relative + "\" there or remove the markers"}));
+            }
+        }
+        if (problems.size() != problems_before) continue;
+        (solved ? kept : stripped) += result.regions;
+        rewritten.push_back({relative, std::move(result.text)});
+    }
+    // stage.json files describe the stages to students and tools: always ship them.
+    for (const auto& [folder, info] : stages) {
+        const std::string relative = folder + "/stage.json";
+        if (fs::is_regular_file(options.source / relative)) copied.insert(relative);
+    }
+    if (!problems.empty()) {
+        for (const std::string& problem : problems) errors << problem << "\n";
+        errors << "rt-grade release: " << problems.size() << " error(s); nothing written to "
+               << options.out.string() << "\n";
+        return 2;
+    }
+
+    // Pass 2: write.
+    try {
+        fs::create_directories(options.out);
+        for (const std::string& relative : copied) {
+            const fs::path from = options.source / relative;
+            const fs::path to = options.out / relative;
+            fs::create_directories(to.parent_path());
+            if (fs::is_symlink(fs::symlink_status(from))) {
+                if (fs::exists(fs::symlink_status(to))) fs::remove(to);
+                fs::copy_symlink(from, to);
+            } else if (!same_content(from, to)) {
+                fs::copy_file(from, to, fs::copy_options::overwrite_existing);
+            }
+        }
+        for (const Rewritten& file : rewritten) {
+            const fs::path to = options.out / file.relative;
+            fs::create_directories(to.parent_path());
+            std::string existing;
+            if (fs::is_regular_file(to) && read_file(to, existing) && existing == file.text)
+                continue;
+            std::ofstream out(to, std::ios::binary | std::ios::trunc);
+            out << file.text;
+            out.close();
+            if (!out)
+                throw fs::filesystem_error("cannot write", to,
+                                           std::make_error_code(std::errc::io_error));
+            fs::permissions(to, fs::status(options.source / file.relative).permissions());
+        }
+
+        std::ofstream release(options.out / "RELEASE.txt", std::ios::trunc);
+        release << "Starter tree written by `rt-grade release`.\n"
+                << "Source: " << options.source.string() << " (" << list->how << ")\n"
+                << "Solved through stage: " << options.solved_through << "\n\n"
+                << "Stages:\n";
+        for (const auto& [folder, info] : stages) {
+            const auto stage = stage_of(folder + "/");
+            const bool solved = stage && stage->number <= options.solved_through;
+            release << "  " << folder.substr(std::string_view("stages/").size())
+                    << (info.title.empty() ? "" : " (" + info.title + ")") << ": "
+                    << (solved ? "solved -- the solution is included"
+                               : "not solved -- stubs to implement")
+                    << "\n";
+        }
+        release.close();
+        if (!release)
+            throw fs::filesystem_error("cannot write", options.out / "RELEASE.txt",
+                                       std::make_error_code(std::errc::io_error));
+    } catch (const fs::filesystem_error& e) {
+        errors << "rt-grade release: error: " << e.what() << "; the starter tree in "
+               << options.out.string() << " is incomplete\n";
+        return 1;
+    }
+
+    log << "rt-grade release: " << copied.size() + rewritten.size() << " files copied to "
+        << options.out.string() << " (" << rewritten.size() << " rewritten), " << stripped
+        << " regions stripped, " << kept << " regions kept (solved through stage "
+        << options.solved_through << ")\n";
+    return 0;
+}
+
+}  // namespace rt::grader

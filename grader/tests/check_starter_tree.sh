@@ -1,0 +1,161 @@
+#!/usr/bin/env bash
+# End-to-end check of `rt-grade release` (CTest: Release.StarterTreeFailsStubs).
+#
+#   check_starter_tree.sh BIN_DIR SRC_DIR
+#
+# 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
+#    no solution markers left, stubs un-commented, student function signatures intact.
+# 2. Configures and builds the starter tree's stage tests and requires every stage's tests to
+#    FAIL, pointing at the stub ("not implemented") and the handout ("README.md#").
+# 3. If step 2 was quick enough, re-releases into the same directory with --solved-through
+#    <last stage> --force (only the student files change, so the build is incremental) and
+#    requires every stage's tests to PASS.
+#
+# Environment: RT_RELEASE_CHECK_CGAL=1 also builds stage02_cgal_tests (slow to compile);
+# RT_RELEASE_SOLVED_BUDGET=<seconds> is the limit for step 2 under which step 3 runs (240);
+# RT_RELEASE_CONFIGURE_ARGS adds arguments to the starter tree's cmake configure line.
+set -u -o pipefail
+
+if [[ $# -ne 2 ]]; then
+    echo "usage: $0 BIN_DIR SRC_DIR" >&2
+    exit 2
+fi
+RT_GRADE="$1/rt-grade"
+SRC="$(cd "$2" && pwd)"
+BUDGET="${RT_RELEASE_SOLVED_BUDGET:-240}"
+JOBS="$(nproc 2>/dev/null || echo 2)"
+
+[[ -x "$RT_GRADE" ]] || { echo "FAIL: $RT_GRADE not built (cmake --build <dir> --target rt-grade)"; exit 1; }
+
+TMP="$(mktemp -d "${TMPDIR:-/tmp}/rt-starter-check.XXXXXX")"
+trap 'rm -rf "$TMP"' EXIT
+STARTER="$TMP/starter"
+BUILD="$STARTER/build"
+
+fail() { echo "FAIL: $*"; exit 1; }
+ok() { echo "ok:   $*"; }
+
+# The working tree as it is now, new files included: a release from a clean checkout gets the
+# tracked files only, which is the same set once everything is committed.
+RELEASE_ARGS=()
+if git -C "$SRC" rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+    RELEASE_ARGS+=(--include-untracked)
+fi
+
+# Stages: stages/NN-name/ folders with a stage.json. Their test targets are stageNN_tests.
+STAGES=()
+for json in "$SRC"/stages/[0-9][0-9]-*/stage.json; do
+    [[ -f "$json" ]] || continue
+    folder="$(basename "$(dirname "$json")")"
+    STAGES+=("${folder:0:2}")
+done
+[[ ${#STAGES[@]} -gt 0 ]] || fail "no stages/NN-*/stage.json in $SRC"
+LAST_STAGE="${STAGES[${#STAGES[@]}-1]}"
+TARGETS=()
+for n in "${STAGES[@]}"; do TARGETS+=("stage${n}_tests"); done
+if [[ "${RT_RELEASE_CHECK_CGAL:-0}" == 1 ]]; then TARGETS+=(stage02_cgal_tests); fi
+echo "stages: ${STAGES[*]}; targets: ${TARGETS[*]}"
+
+# Files of SRC holding solution regions (the student files), relative to SRC.
+MARKER_LINE='^[[:space:]]*// (BEGIN SOLUTION|STUB|END SOLUTION)[[:space:]]*$'
+mapfile -t STUDENT_FILES < <(cd "$SRC" && grep -rlE "$MARKER_LINE" stages | sort)
+[[ ${#STUDENT_FILES[@]} -gt 0 ]] || fail "no solution markers under $SRC/stages: nothing to check"
+
+start=$SECONDS
+
+# --- 1. Release and check the text -------------------------------------------------------
+"$RT_GRADE" release --source "$SRC" --out "$STARTER" "${RELEASE_ARGS[@]}" \
+    || fail "rt-grade release exited with $?"
+ok "released $SRC into $STARTER ${RELEASE_ARGS[*]}"
+
+# Marker lines nowhere. The marker words nowhere either, except in the grader (which strips
+# them) and in Markdown documentation that names them (listed, for a human to glance at).
+if grep -rnE --exclude-dir=build "$MARKER_LINE" "$STARTER"; then
+    fail "marker lines left in the starter tree (above)"
+fi
+if grep -rn --exclude-dir=build --exclude='*.md' "BEGIN SOLUTION" "$STARTER" | grep -v "^$STARTER/grader/"; then
+    fail "'BEGIN SOLUTION' left in the starter tree (above)"
+fi
+mentions="$(grep -rl --exclude-dir=build --include='*.md' "BEGIN SOLUTION" "$STARTER" | sed "s|^$STARTER/||" | tr '\n' ' ')"
+ok "no marker lines anywhere; no 'BEGIN SOLUTION' outside grader/ and Markdown docs (named in: ${mentions:-none})"
+
+signatures=0
+for file in "${STUDENT_FILES[@]}"; do
+    released="$STARTER/$file"
+    [[ -f "$released" ]] || fail "$file missing from the starter tree"
+    # Function definitions start at column 0: "<type> name(" (continuation lines included).
+    while IFS= read -r line; do
+        grep -Fxq -- "$line" "$released" || fail "$file: signature line lost: $line"
+        signatures=$((signatures + 1))
+    done < <(grep -E '^[A-Za-z_][A-Za-z0-9_:<>,&* ]*[ &*][A-Za-z_][A-Za-z0-9_]*\(' "$SRC/$file" \
+                 | grep -vE '^(namespace|using|return|if|for|while|struct|class|enum)\b')
+    regions="$(grep -cE '^[[:space:]]*// BEGIN SOLUTION[[:space:]]*$' "$SRC/$file")"
+    stubs="$(grep -cE '^[[:space:]]*RT_NOT_IMPLEMENTED\(".*README\.md#' "$released")"
+    [[ "$stubs" -ge "$regions" ]] \
+        || fail "$file: $regions solution regions but only $stubs un-commented RT_NOT_IMPLEMENTED stubs"
+done
+[[ $signatures -gt 0 ]] || fail "found no function signatures in the student files"
+ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every region has an RT_NOT_IMPLEMENTED stub"
+
+# --- 2. Build the starter tree; its stage tests must fail on the stubs --------------------
+build_stage_tests() {
+    # shellcheck disable=SC2086 # extra arguments are meant to be word-split
+    cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release ${RT_RELEASE_CONFIGURE_ARGS:-} \
+        > "$TMP/configure.log" 2>&1 \
+        || { tail -n 40 "$TMP/configure.log"; fail "configuring the starter tree failed"; }
+    cmake --build "$BUILD" --target "${TARGETS[@]}" > "$TMP/build.log" 2>&1 \
+        || { grep -E "error|FAILED" "$TMP/build.log" | head -n 40; fail "building ${TARGETS[*]} failed"; }
+}
+
+# A stage with no tests would "pass" or "fail" for the wrong reason: say so plainly.
+no_tests() {
+    if grep -q "No tests were found" "$2"; then
+        grep -q "BUILD_TESTING:BOOL=OFF" "$BUILD/CMakeCache.txt" 2>/dev/null \
+            && echo "note: BUILD_TESTING is OFF in the starter build (a package config may set it before include(CTest))"
+        fail "ctest -L stage$1 found no tests in the starter build"
+    fi
+}
+
+build_stage_tests
+ok "starter tree configured and built ${TARGETS[*]} ($((SECONDS - start)) s so far)"
+
+for n in "${STAGES[@]}"; do
+    log="$TMP/stage$n.stubbed.log"
+    ctest --test-dir "$BUILD" -L "stage$n" --output-on-failure --no-tests=error -j "$JOBS" > "$log" 2>&1
+    rc=$?
+    no_tests "$n" "$log"
+    summary="$(grep -E "tests passed|No tests were found" "$log" | tail -n 1)"
+    [[ $rc -ne 0 ]] || { tail -n 30 "$log"; fail "stage$n tests PASS in the starter tree: the stubs do not fail them"; }
+    grep -qi "not implemented" "$log" || { tail -n 30 "$log"; fail "stage$n: output never says 'not implemented'"; }
+    grep -q "README.md#" "$log" || { tail -n 30 "$log"; fail "stage$n: output never points at a handout section (README.md#)"; }
+    ok "stage$n tests fail on the stubs ($summary), saying 'not implemented' and pointing at README.md#"
+done
+stubbed_seconds=$((SECONDS - start))
+echo "stubbed pass: ${stubbed_seconds} s"
+
+# --- 3. Solved release: the same tests must pass ---------------------------------------------
+if [[ $stubbed_seconds -gt $BUDGET ]]; then
+    echo "SKIPPED the solved pass (--solved-through $((10#$LAST_STAGE))): the stubbed pass took" \
+         "${stubbed_seconds} s, over the ${BUDGET} s budget (RT_RELEASE_SOLVED_BUDGET)"
+    exit 0
+fi
+solved_start=$SECONDS
+# Same directory, --force: unchanged files keep their timestamps, so only the student files
+# recompile against the existing build.
+"$RT_GRADE" release --source "$SRC" --out "$STARTER" --solved-through "$((10#$LAST_STAGE))" --force \
+    "${RELEASE_ARGS[@]}" || fail "rt-grade release --solved-through $((10#$LAST_STAGE)) exited with $?"
+for file in "${STUDENT_FILES[@]}"; do
+    if grep -qE '^[[:space:]]*RT_NOT_IMPLEMENTED\(' "$STARTER/$file"; then
+        fail "$file still has stubs with --solved-through $((10#$LAST_STAGE))"
+    fi
+done
+build_stage_tests
+for n in "${STAGES[@]}"; do
+    log="$TMP/stage$n.solved.log"
+    ctest --test-dir "$BUILD" -L "stage$n" --output-on-failure --no-tests=error -j "$JOBS" > "$log" 2>&1
+    rc=$?
+    no_tests "$n" "$log"
+    [[ $rc -eq 0 ]] || { tail -n 60 "$log"; fail "stage$n tests fail with the solutions released (--solved-through $((10#$LAST_STAGE)))"; }
+    ok "solved: stage$n tests pass ($(grep -E "tests passed" "$log" | tail -n 1))"
+done
+echo "solved pass: $((SECONDS - solved_start)) s; total $((SECONDS - start)) s"

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency from Debian 12 packages. Safe to re-run.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libglm-dev                # vector math
+  libopenimageio-dev        # PNG / EXR in and out
+  nlohmann-json3-dev        # scene files
+  libcli11-dev              # command lines
+  libtinyobjloader-dev      # OBJ meshes
+  libgtest-dev libgmock-dev # unit tests
+  libcgal-dev libgmp-dev libmpfr-dev  # exact predicates in the tests
+  libglfw3-dev libosmesa6-dev         # GL contexts (windowed, headless)
+)
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+echo "install-deps: all packages present"
