@@ -88,7 +88,12 @@ bool is_directive(std::string_view line, std::string_view keyword) {
            (line[keyword.size()] == ' ' || line[keyword.size()] == '\t');
 }
 
-std::string quoted(std::string_view s) { return "\"" + std::string(s.substr(0, 40)) + "\""; }
+std::string quoted(std::string_view s) {
+    std::string out = "\"";  // built step by step: GCC 12 -O3 warns falsely on "\"" + s + "\""
+    out.append(s.substr(0, 40));
+    out += '"';
+    return out;
+}
 
 // What the checking pass learns about the file before tinyobjloader reads it.
 struct ObjSummary {
@@ -173,7 +178,7 @@ public:
         for (const std::string& name : names_) {
             if (ids->count(name)) continue;
             (*ids)[name] = static_cast<int>(materials->size());
-            tinyobj::material_t material;
+            tinyobj::material_t material{};  // zeroed: tinyobjloader copies every field
             material.name = name;
             materials->push_back(material);
         }

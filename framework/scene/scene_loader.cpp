@@ -407,14 +407,12 @@ private:
     }
 
     Vec3 unit_direction(const json& value, const std::string& pointer, const std::string& fix) const {
-        Vec3 v = vec3(value, pointer);
+        vec3(value, pointer);  // checks the shape and that every number is finite
         double x = value[0].get<double>(), y = value[1].get<double>(), z = value[2].get<double>();
         double length = std::sqrt(x * x + y * y + z * z);
         if (!(length > 0) || !std::isfinite(length))
             fail_value(pointer, label(pointer) + " must have a non-zero, finite length", fix);
-        Vec3 unit(Real(x / length), Real(y / length), Real(z / length));
-        (void)v;
-        return unit;
+        return Vec3(Real(x / length), Real(y / length), Real(z / length));
     }
 
     // ---- sections -------------------------------------------------------------------------

@@ -5,8 +5,9 @@
 #
 # 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
 #    no solution markers left, stubs un-commented, student function signatures intact.
-# 2. Configures and builds the starter tree's stage tests and requires every stage's tests to
-#    FAIL, pointing at the stub ("not implemented") and the handout ("README.md#").
+# 2. Configures and builds the starter tree's stage tests (stageNN_tests, and `rt`, which some
+#    stage-labelled tests run) and requires every stage's tests to FAIL, pointing at the stub
+#    ("not implemented") and the handout ("README.md#").
 # 3. If step 2 was quick enough, re-releases into the same directory with --solved-through
 #    <last stage> --force (only the student files change, so the build is incremental) and
 #    requires every stage's tests to PASS.
@@ -103,6 +104,11 @@ build_stage_tests() {
     cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release ${RT_RELEASE_CONFIGURE_ARGS:-} \
         > "$TMP/configure.log" 2>&1 \
         || { tail -n 40 "$TMP/configure.log"; fail "configuring the starter tree failed"; }
+    # Tests labelled stageNN may also run the renderer (e.g. Render.ThreadCountIsBitIdentical):
+    # build `rt` too when the tree has it, or they fail for want of it.
+    if [[ ! " ${TARGETS[*]} " =~ " rt " ]] && cmake --build "$BUILD" --target help 2>/dev/null | grep -q '^rt:'; then
+        TARGETS+=(rt)
+    fi
     cmake --build "$BUILD" --target "${TARGETS[@]}" > "$TMP/build.log" 2>&1 \
         || { grep -E "error|FAILED" "$TMP/build.log" | head -n 40; fail "building ${TARGETS[*]} failed"; }
 }

@@ -3,7 +3,8 @@
 // Every input is a Real (float, or double with RT_DOUBLE). Both convert to double without
 // rounding, so the CGAL objects built here are exactly the rays and surfaces the Real code sees,
 // and every answer below is exact for those inputs:
-//   - hit/miss of ray and triangle / box: CGAL::do_intersect with Epick (exact predicates);
+//   - hit/miss of ray and triangle: CGAL::do_intersect with Epick (exact predicates); ray and
+//     box: do_intersect with Epeck (Epick's ray/iso-cuboid test is not exact, see exact_box);
 //   - exact points and t: Epeck (exact constructions, lazy rationals); t is measured exactly
 //     along the ray, t = (p - o).d / d.d;
 //   - edge and vertex classification: CGAL::orientation of the ray line against each edge;
@@ -194,7 +195,8 @@ inline PlaneTruth exact_plane(const Ray& ray, const Plane& plane) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Boxes: exact slabs in rationals, cross-checked against CGAL::do_intersect(Ray_3, Iso_cuboid_3).
+// Boxes: exact slabs in rationals, cross-checked against CGAL::do_intersect(Ray_3, Iso_cuboid_3)
+// evaluated with Epeck.
 
 struct BoxTruth {
     bool hit = false;           // some t > 0 inside the closed box
@@ -216,9 +218,13 @@ struct BoxTruth {
 
 inline BoxTruth exact_box(const Ray& ray, const Box& box) {
     BoxTruth truth;
+    // Epeck, not Epick: in CGAL 5.5 do_intersect(Ray_3, Iso_cuboid_3) with Epick is NOT exact
+    // (it is not a filtered predicate; it evaluates the slab parameters in double). Found by this
+    // cross-check: a double-precision ray missing a box corner by a relative 1e-16 was reported
+    // as touching by Epick, as missing by Epeck and by the exact slabs below.
     const bool touches = CGAL::do_intersect(
-        Epick::Ray_3(epick_point(ray.origin), epick_vector(ray.direction)),
-        Epick::Iso_cuboid_3(epick_point(box.min), epick_point(box.max)));
+        Epeck::Ray_3(epeck_point(ray.origin), epeck_vector(ray.direction)),
+        Epeck::Iso_cuboid_3(epeck_point(box.min), epeck_point(box.max)));
     bool parallel_outside = false;
     std::vector<std::pair<Q, int>> entries, exits;
     truth.origin_inside = true;

@@ -1,0 +1,32 @@
+# Helpers for the project's GoogleTest executables.
+
+# rt_add_gtest(<target> PREFIX <ctest name prefix> LABELS <labels...>)
+# Registers the tests of an existing GoogleTest executable with CTest as <prefix><Suite>.<Test>,
+# discovered when ctest runs (so a starter tree whose stubs crash still builds and lists them).
+function(rt_add_gtest target)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PREFIX" "LABELS")
+  target_compile_definitions(${target} PRIVATE RT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${target}
+    TEST_PREFIX "${arg_PREFIX}"
+    PROPERTIES TIMEOUT 300
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    DISCOVERY_MODE PRE_TEST)
+  # CMake 3.25's gtest_discover_tests splits list-valued PROPERTIES (LABELS "a;b" keeps only
+  # "a"), so labels are set by a script ctest runs after discovery, from the <target>_TESTS list.
+  set(script ${CMAKE_CURRENT_BINARY_DIR}/${target}_labels.cmake)
+  file(WRITE ${script}
+    "if(${target}_TESTS)\n"
+    "  set_tests_properties(\${${target}_TESTS} PROPERTIES LABELS \"${arg_LABELS}\")\n"
+    "endif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
+endfunction()
+
+# rt_stage_tests(<NN> <target> SOURCES <files...> [LABELS <extra labels...>] [LIBRARIES <libs...>])
+# A GoogleTest executable for stage NN: CTest names StageNN.<Suite>.<Test>, label stageNN plus
+# any extra labels.
+function(rt_stage_tests number target)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "SOURCES;LABELS;LIBRARIES")
+  add_executable(${target} ${arg_SOURCES})
+  target_link_libraries(${target} PRIVATE rt_testing GTest::gtest_main ${arg_LIBRARIES})
+  rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
+endfunction()
