@@ -5,16 +5,17 @@
 #
 # 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
 #    no solution markers left, stubs un-commented, student function signatures intact.
-# 2. Configures and builds the starter tree's stage tests (stageNN_tests, and `rt`, which some
-#    stage-labelled tests run) and requires every stage's tests to FAIL, pointing at the stub
-#    ("not implemented") and the handout ("README.md#").
+# 2. Configures and builds the starter tree's stage tests (every stageNN*_tests target, the
+#    CGAL checks included, and `rt`, which some stage-labelled tests run). Requires every
+#    stage's tests to FAIL, pointing at the stub ("not implemented") and at the handout
+#    ("README.md#").
 # 3. If step 2 was quick enough, re-releases into the same directory with --solved-through
 #    <last stage> --force (only the student files change, so the build is incremental) and
 #    requires every stage's tests to PASS.
 #
-# Environment: RT_RELEASE_CHECK_CGAL=1 also builds stage02_cgal_tests (slow to compile);
-# RT_RELEASE_SOLVED_BUDGET=<seconds> is the limit for step 2 under which step 3 runs (240);
-# RT_RELEASE_CONFIGURE_ARGS adds arguments to the starter tree's cmake configure line.
+# Environment: RT_RELEASE_SOLVED_BUDGET=<seconds>: step 3 runs only if steps 1-2 took at most
+# this long (default 240). RT_RELEASE_CONFIGURE_ARGS: extra arguments for the starter tree's
+# cmake configure line.
 set -u -o pipefail
 
 if [[ $# -ne 2 ]]; then
@@ -52,10 +53,8 @@ for json in "$SRC"/stages/[0-9][0-9]-*/stage.json; do
 done
 [[ ${#STAGES[@]} -gt 0 ]] || fail "no stages/NN-*/stage.json in $SRC"
 LAST_STAGE="${STAGES[${#STAGES[@]}-1]}"
-TARGETS=()
-for n in "${STAGES[@]}"; do TARGETS+=("stage${n}_tests"); done
-if [[ "${RT_RELEASE_CHECK_CGAL:-0}" == 1 ]]; then TARGETS+=(stage02_cgal_tests); fi
-echo "stages: ${STAGES[*]}; targets: ${TARGETS[*]}"
+echo "stages: ${STAGES[*]}"
+TARGETS=()  # chosen once the starter tree is configured
 
 # Files of SRC holding solution regions (the student files), relative to SRC.
 MARKER_LINE='^[[:space:]]*// (BEGIN SOLUTION|STUB|END SOLUTION)[[:space:]]*$'
@@ -104,10 +103,16 @@ build_stage_tests() {
     cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release ${RT_RELEASE_CONFIGURE_ARGS:-} \
         > "$TMP/configure.log" 2>&1 \
         || { tail -n 40 "$TMP/configure.log"; fail "configuring the starter tree failed"; }
-    # Tests labelled stageNN may also run the renderer (e.g. Render.ThreadCountIsBitIdentical):
-    # build `rt` too when the tree has it, or they fail for want of it.
-    if [[ ! " ${TARGETS[*]} " =~ " rt " ]] && cmake --build "$BUILD" --target help 2>/dev/null | grep -q '^rt:'; then
-        TARGETS+=(rt)
+    # Every stage test executable (stageNN_tests, stageNN_<what>_tests such as the CGAL checks),
+    # and `rt`: some tests labelled stageNN run the renderer (Render.ThreadCountIsBitIdentical).
+    if [[ ${#TARGETS[@]} -eq 0 ]]; then
+        local all
+        all="$(cmake --build "$BUILD" --target help 2>/dev/null | sed -n 's/^\([A-Za-z0-9_]*\): .*/\1/p')"
+        for n in "${STAGES[@]}"; do
+            grep -qx "stage${n}_tests" <<< "$all" || fail "the starter tree has no target stage${n}_tests"
+        done
+        mapfile -t TARGETS < <(grep -E '^stage[0-9][0-9](_[A-Za-z0-9]+)*_tests$' <<< "$all" | sort)
+        grep -qx rt <<< "$all" && TARGETS+=(rt)
     fi
     cmake --build "$BUILD" --target "${TARGETS[@]}" > "$TMP/build.log" 2>&1 \
         || { grep -E "error|FAILED" "$TMP/build.log" | head -n 40; fail "building ${TARGETS[*]} failed"; }
@@ -132,6 +137,11 @@ for n in "${STAGES[@]}"; do
     no_tests "$n" "$log"
     summary="$(grep -E "tests passed|No tests were found" "$log" | tail -n 1)"
     [[ $rc -ne 0 ]] || { tail -n 30 "$log"; fail "stage$n tests PASS in the starter tree: the stubs do not fail them"; }
+    # Not one stage test may pass on stubs: a test that passes without the student's code tests
+    # nothing the student wrote.
+    if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed" "$log"; then
+        fail "stage$n: the tests above pass in the starter tree although every function is a stub"
+    fi
     grep -qi "not implemented" "$log" || { tail -n 30 "$log"; fail "stage$n: output never says 'not implemented'"; }
     grep -q "README.md#" "$log" || { tail -n 30 "$log"; fail "stage$n: output never points at a handout section (README.md#)"; }
     ok "stage$n tests fail on the stubs ($summary), saying 'not implemented' and pointing at README.md#"
