@@ -80,7 +80,7 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
             options.threads = threads;
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
             write_image(render(scene, scene.mode, options), image_file);
-            std::printf("  %s\n", fs::relative(image_file, out.parent_path()).c_str());
+            std::printf("  %s\n", image_file.c_str());
             ++count;
         }
     }

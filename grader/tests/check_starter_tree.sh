@@ -5,7 +5,7 @@
 #
 # 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
 #    no solution markers left, stubs un-commented, student function signatures intact.
-# 2. Configures and builds the starter tree's stage tests (every stageNN*_tests target, the
+# 2. Configures (as the release preset does: Release, RT_WERROR=ON) and builds the starter tree's stage tests (every stageNN*_tests target, the
 #    CGAL checks included, and `rt`, which some stage-labelled tests run). Requires every
 #    stage's tests to FAIL, pointing at the stub ("not implemented") and at the handout
 #    ("README.md#").
@@ -100,7 +100,7 @@ ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every 
 # --- 2. Build the starter tree; its stage tests must fail on the stubs --------------------
 build_stage_tests() {
     # shellcheck disable=SC2086 # extra arguments are meant to be word-split
-    cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release ${RT_RELEASE_CONFIGURE_ARGS:-} \
+    cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=ON ${RT_RELEASE_CONFIGURE_ARGS:-} \
         > "$TMP/configure.log" 2>&1 \
         || { tail -n 40 "$TMP/configure.log"; fail "configuring the starter tree failed"; }
     # Every stage test executable (stageNN_tests, stageNN_<what>_tests such as the CGAL checks),
