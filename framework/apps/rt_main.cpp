@@ -1,5 +1,7 @@
 // rt: the renderer students and lecturers run. It links the stage code (the student files).
 //   rt render SCENE.json -o OUT.png [--mode M] [--width W --height H] [--threads N]
+//   rt render SCENE.json --debug-pixel X,Y [--debug-format text|json]   the ray tree of a pixel
+//   rt render SCENE.json -o OUT.png --overlay-pixel X,Y                 ... drawn onto the image
 //   rt gallery [--out DIR]       every scene of every stage, in its own mode
 //   rt info SCENE.json           what the scene contains and which features the renderer uses
 //   rt gl-info [--window]        the OpenGL context the GPU stage will use
@@ -11,10 +13,12 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <stdexcept>
 
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "render/progress.h"
+#include "render/ray_tree.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -34,7 +38,21 @@ struct RenderArgs {
     std::optional<RenderMode> mode;
     int width = 0, height = 0, threads = 0;
     bool quiet = false;
+    std::string debug_pixel, overlay_pixel;  // "X,Y"
+    std::string debug_format = "text";
 };
+
+// "X,Y" inside the image, or a usage error.
+std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
+    int x = -1, y = -1;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &rest) != 2 || x < 0 || y < 0 ||
+        x >= scene.image.width || y >= scene.image.height)
+        throw std::runtime_error(std::string("rt: error: ") + option + " \"" + text +
+                                 "\" must be X,Y with 0 <= X < " + std::to_string(scene.image.width) +
+                                 " and 0 <= Y < " + std::to_string(scene.image.height));
+    return {x, y};
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -45,11 +63,24 @@ int run_render(const RenderArgs& args) {
     if (args.width > 0) scene.image.width = args.width;
     if (args.height > 0) scene.image.height = args.height;
     const RenderMode mode = args.mode.value_or(scene.mode);
+    if (!args.debug_pixel.empty()) {
+        const auto [x, y] = parse_pixel(args.debug_pixel, "--debug-pixel", scene);
+        const PixelTree tree = debug_pixel(scene, x, y);
+        const std::string text = args.debug_format == "json" ? ray_tree_json(scene, tree) + "\n"
+                                                             : ray_tree_text(scene, tree);
+        std::fputs(text.c_str(), stdout);
+        if (args.output.empty()) return 0;
+    }
+    if (args.output.empty())
+        throw std::runtime_error("rt: error: --output is required (unless --debug-pixel is given)");
+    std::optional<std::pair<int, int>> overlay;
+    if (!args.overlay_pixel.empty()) overlay = parse_pixel(args.overlay_pixel, "--overlay-pixel", scene);
     const auto start = std::chrono::steady_clock::now();
     RenderOptions options;
     options.threads = args.threads;
     options.show_progress = !args.quiet && stdout_is_terminal();
-    const Image image = render(scene, mode, options);
+    Image image = render(scene, mode, options);
+    if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
     if (!args.quiet)
         std::printf("%s: %dx%d, %s, %d threads, %.2f s -> %s\n", args.scene.c_str(),
@@ -123,8 +154,14 @@ int main(int argc, char** argv) {
     std::string mode_name;
     auto* render_cmd = app.add_subcommand("render", "render one scene file to an image");
     render_cmd->add_option("scene", render_args.scene, "scene file (.json)")->required();
-    render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)")
-        ->required();
+    render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)");
+    render_cmd->add_option("--debug-pixel", render_args.debug_pixel,
+                           "print the ray tree of pixel X,Y (shaded mode; -o optional)");
+    render_cmd->add_option("--debug-format", render_args.debug_format, "text (default) or json")
+        ->check(CLI::IsMember({"text", "json"}));
+    render_cmd->add_option("--overlay-pixel", render_args.overlay_pixel,
+                           "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
+                           "magenta, reflection blue, refraction yellow");
     render_cmd->add_option("--mode", mode_name, "override the scene's mode")
         ->check(CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded"}));
     render_cmd->add_option("--width", render_args.width, "override the image width")

@@ -4,11 +4,11 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <thread>
 
 #include "core/not_implemented.h"
 #include "render/progress.h"
+#include "render/shade.h"
 #include "student/stage02.h"
 
 namespace rt {
@@ -43,16 +43,17 @@ struct PixelResult {
 
 PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     PixelResult out;
+    if (mode == RenderMode::Shaded) {
+        out.colour = shade_pixel(scene, x, y);
+        return out;
+    }
     const Ray ray = camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
     if (mode == RenderMode::Directions) {
         if (all_finite(ray.direction)) out.colour = display_value(unit_vector_colour(ray.direction));
         return out;
     }
     Hit hit;
-    if (!intersect_nearest(ray, scene, Interval{0, kInfinity}, hit)) {
-        out.colour = mode == RenderMode::Shaded ? scene.background : Color(0);
-        return out;
-    }
+    if (!intersect_nearest(ray, scene, Interval{0, kInfinity}, hit)) return out;
     switch (mode) {
         case RenderMode::Normals: out.colour = display_value(unit_vector_colour(hit.normal)); break;
         case RenderMode::Depth: out.depth = hit.t; break;
@@ -84,10 +85,6 @@ int resolve_thread_count(int threads) {
 }
 
 Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
-    if (mode == RenderMode::Shaded)
-        throw std::runtime_error(
-            "render mode \"shaded\" needs stage 03 (Blinn-Phong), which this tree does not have "
-            "yet; use --mode normals, depth, directions or primitive");
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     std::vector<Real> depth(std::size_t(width) * height, -1);

@@ -17,6 +17,17 @@ std::size_t Scene::primitive_count() const {
     return spheres.size() + planes.size() + triangles.size() + boxes.size();
 }
 
+Scene::Kind Scene::primitive_kind(int id, std::size_t& index) const {
+    std::size_t i = std::size_t(id);
+    if (i < spheres.size()) return index = i, Kind::Sphere;
+    i -= spheres.size();
+    if (i < planes.size()) return index = i, Kind::Plane;
+    i -= planes.size();
+    if (i < triangles.size()) return index = i, Kind::Triangle;
+    i -= triangles.size();
+    return index = i, Kind::Box;
+}
+
 void Scene::update_features() {
     Features f;
     f.spheres = !spheres.empty();
@@ -36,6 +47,7 @@ void Scene::update_features() {
         f.point_lights |= l.kind == LightKind::Point;
         f.directional_lights |= l.kind == LightKind::Directional;
     }
+    f.shadows = shadows && !lights.empty();
     features = f;
 }
 
@@ -52,6 +64,7 @@ std::string Features::describe() const {
     add(emissive, "emissive"), add(reflection, "reflection"), add(refraction, "refraction");
     s += " |";
     add(point_lights, "point"), add(directional_lights, "directional");
+    add(shadows, "shadows");
     return s;
 }
 

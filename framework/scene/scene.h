@@ -66,6 +66,7 @@ struct Features {
     bool ambient = false, diffuse = false, specular = false, emissive = false;
     bool reflection = false, refraction = false;
     bool point_lights = false, directional_lights = false;
+    bool shadows = false;  // the scene asks for shadows and has lights
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
 };
@@ -79,7 +80,9 @@ struct Scene {
     RenderMode mode = RenderMode::Normals;
     Color background{0};
     Color ambient_light{0};  // I_a
-    int max_depth = 5;
+    int max_depth = 5;       // bounces of reflected/refracted rays; 0: direct light only
+    bool shadows = false;    // trace shadow rays (stage 04)
+    bool fresnel = false;    // Schlick-weighted reflection on transmissive materials (stage 05)
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
@@ -95,6 +98,8 @@ struct Scene {
     enum class Kind { Sphere, Plane, Triangle, Box };
     int primitive_id(Kind kind, std::size_t index) const;
     std::size_t primitive_count() const;
+    // The inverse of primitive_id: the kind of primitive `id` and its index in that array.
+    Kind primitive_kind(int id, std::size_t& index) const;
 
     void triangle_vertices(std::size_t i, Vec3& a, Vec3& b, Vec3& c) const {
         a = vertices[triangles[i].v[0]];

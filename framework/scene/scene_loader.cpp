@@ -386,6 +386,13 @@ private:
         return Color(float(v.x), float(v.y), float(v.z));
     }
 
+    bool boolean(const json& value, const std::string& pointer) const {
+        if (!value.is_boolean())
+            fail_value(pointer, label(pointer) + " must be true or false, got " + describe(value),
+                       "write true or false (without quotes)");
+        return value.get<bool>();
+    }
+
     std::string string(const json& value, const std::string& pointer, const std::string& example) const {
         if (!value.is_string())
             fail_value(pointer, label(pointer) + " must be a string, got " + describe(value),
@@ -445,7 +452,7 @@ private:
         const json* render = member(root, "render");
         if (!render) return;
         require_object(*render, "/render", "{\"mode\": \"shaded\", \"max_depth\": 5}");
-        check_keys(*render, "/render", "\"render\"", {"mode", "max_depth"});
+        check_keys(*render, "/render", "\"render\"", {"mode", "max_depth", "shadows", "fresnel"});
         if (const json* v = member(*render, "mode")) {
             static const std::vector<std::string> modes{"directions", "normals", "depth", "primitive", "shaded"};
             static const RenderMode values[] = {RenderMode::Directions, RenderMode::Normals, RenderMode::Depth,
@@ -460,6 +467,8 @@ private:
                            "a few bounces are enough");
             scene_.max_depth = int(d);
         }
+        if (const json* v = member(*render, "shadows")) scene_.shadows = boolean(*v, "/render/shadows");
+        if (const json* v = member(*render, "fresnel")) scene_.fresnel = boolean(*v, "/render/fresnel");
     }
 
     void read_camera(const json& root) {

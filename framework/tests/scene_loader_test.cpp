@@ -87,6 +87,20 @@ TEST(SceneLoader, EmptyObjectGivesTheDefaults) {
     EXPECT_TRUE(scene.vertices.empty() && scene.triangles.empty() && scene.lights.empty());
 }
 
+// "shadows" and "fresnel" default to false; "shadows" becomes a feature only with lights.
+TEST(SceneLoader, ShadowsAndFresnelFlags) {
+    rt::Scene plain = parse(R"({"lights": [{"type": "point", "position": [0, 1, 0]}]})");
+    EXPECT_FALSE(plain.shadows);
+    EXPECT_FALSE(plain.fresnel);
+    EXPECT_FALSE(plain.features.shadows);
+    rt::Scene lit = parse(R"({"render": {"shadows": true, "fresnel": true},
+                              "lights": [{"type": "point", "position": [0, 1, 0]}]})");
+    EXPECT_TRUE(lit.shadows && lit.fresnel && lit.features.shadows);
+    rt::Scene dark = parse(R"({"render": {"shadows": true}})");
+    EXPECT_TRUE(dark.shadows);
+    EXPECT_FALSE(dark.features.shadows);
+}
+
 TEST(SceneLoader, FullSceneFillsTheFlatArrays) {
     rt::Scene scene = parse(R"({
       "camera": {"projection": "orthographic", "eye": [0, 2, 0], "look_at": [0, 0, 0],
@@ -258,6 +272,7 @@ const BadScene kBadScenesTable[] = {
     {"38-key-of-other-light-type", 3, 46, R"(unknown key "direction" in a point light)"},
     {"39-nesting-too-deep", 1, 113, R"(nested more than 100 deep)"},
     {"40-negative-shininess", 2, 48, R"("shininess" must be >= 0, got -5)"},
+    {"41-shadows-not-a-boolean", 2, 43, R"("shadows" must be true or false, got the string "yes")"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};

@@ -1,0 +1,34 @@
+// Stage 04 (shadows): the functions students write in stages/04-shadows/shadows.cpp.
+// Handout: stages/04-shadows/README.md.
+// Where rays start: framework/geometry/offset.h (docs/conventions.md#secondary-ray-origins).
+#pragma once
+
+#include "geometry/offset.h"
+#include "student/stage03.h"
+
+namespace rt {
+
+// At most this many transparent surfaces are crossed by one shadow ray; beyond, it is blocked.
+inline constexpr int kMaxShadowSurfaces = 64;
+
+// A ray with the range of t in which a hit blocks it.
+struct ShadowRay {
+    Ray ray;
+    Interval t_range;
+};
+
+// The shadow ray from the surface point `at` towards the light of `sample`:
+//   origin    = offset_ray_origin(at.point, at.error, at.normal, sample.direction)
+//   direction = sample.direction (unit)
+//   t_range   = (0, distance from the origin to the light): the open interval already excludes
+//               the light itself; (0, kInfinity) for a directional light.
+ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
+
+// How much light of `sample` reaches `at`: (1, 1, 1) when nothing is in the way. Each surface the
+// shadow ray crosses multiplies it by that surface's transmissive colour k_t ("thin shell": a
+// glass sphere is crossed twice); an opaque surface (k_t = 0) gives (0, 0, 0). After a
+// transparent surface continue from it with offset_ray_origin (surface_point gives its error
+// bound), at most kMaxShadowSurfaces surfaces.
+Color light_transmittance(const Scene& scene, const SurfacePoint& at, const LightSample& sample);
+
+}  // namespace rt

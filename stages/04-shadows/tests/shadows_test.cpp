@@ -1,0 +1,220 @@
+// Stage 04 tests: the shadow ray, self-intersection (acne) far from the origin and at grazing
+// light, thin occluders, and light filtered through transparent surfaces.
+#include <cmath>
+
+#include "render/render.h"
+#include "student/stage02.h"
+#include "student/stage04.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+RT_TEST_SUITE(ShadowRayContract);
+RT_TEST_SUITE(Acne);
+RT_TEST_SUITE(Transmittance);
+
+Light point_light(Vec3 position) {
+    Light l;
+    l.kind = LightKind::Point, l.position = position, l.intensity = Color(10);
+    return l;
+}
+
+Light directional_light(Vec3 direction, Color intensity = Color(1)) {
+    Light l;
+    l.kind = LightKind::Directional, l.direction = glm::normalize(direction),
+    l.intensity = intensity;
+    return l;
+}
+
+Material glass(Color k_t) {
+    Material m;
+    m.transmissive = k_t;
+    return m;
+}
+
+// A floor y = 0 (plane 0, material 0: opaque) and whatever a test adds after it.
+Scene floor_scene() {
+    Scene scene;
+    scene.materials = {Material{}};
+    scene.planes = {Plane{Vec3(0), Vec3(0, 1, 0), 0}};
+    return scene;
+}
+
+// The surface point of the floor at (x, 0, z), seen from above.
+SurfacePoint floor_point(const Scene& scene, Real x, Real z) {
+    Hit hit;
+    hit.t = 1;
+    hit.point = Vec3(x, 0, z);
+    hit.normal = Vec3(0, 1, 0);
+    hit.front_face = true;
+    hit.primitive = scene.primitive_id(Scene::Kind::Plane, 0);
+    hit.material = 0;
+    return surface_point(scene, Ray{Vec3(x, 1, z), Vec3(0, -1, 0)}, hit);
+}
+
+void expect_colour_near(const Color& actual, const Color& expected, float tol = 1e-5f) {
+    EXPECT_NEAR(actual.r, expected.r, tol);
+    EXPECT_NEAR(actual.g, expected.g, tol);
+    EXPECT_NEAR(actual.b, expected.b, tol);
+}
+
+// The origin is the framework's robust offset origin, the direction the light's, and the range
+// ends at the light (point) or never (directional).
+TEST_F(ShadowRayContract, RobustOriginAndRange) {
+    const Scene scene = floor_scene();
+    const SurfacePoint at = floor_point(scene, 0.3f, -0.2f);
+    const LightSample sample = illuminate(point_light(Vec3(0.3f, 4, -0.2f)), at.point);
+    const ShadowRay s = shadow_ray(at, sample);
+    EXPECT_EQ(s.ray.origin, offset_ray_origin(at.point, at.error, at.normal, sample.direction));
+    EXPECT_GE(s.ray.origin.y, 0);  // never below the surface
+    Hit self;
+    EXPECT_FALSE(intersect_nearest(s.ray, scene, s.t_range, self))
+        << "the shadow ray hits its own surface";
+    EXPECT_EQ(s.ray.direction, sample.direction);
+    EXPECT_EQ(s.t_range.min, 0);
+    EXPECT_NEAR(s.t_range.max, 4, 1e-5);
+    const ShadowRay d = shadow_ray(at, illuminate(directional_light(Vec3(0, -1, 0)), at.point));
+    EXPECT_TRUE(std::isinf(d.t_range.max));
+}
+
+// Renders `scene` with and without shadows: with nothing that can cast a shadow on the lit
+// surface, the two images must be identical. Any difference is shadow acne.
+void expect_no_acne(Scene scene) {
+    scene.mode = RenderMode::Shaded;
+    scene.shadows = false;
+    scene.update_features();
+    const Image unshadowed = render(scene, RenderMode::Shaded);
+    scene.shadows = true;
+    scene.update_features();
+    const Image shadowed = render(scene, RenderMode::Shaded);
+    int acne = 0, lit = 0;
+    for (std::size_t i = 0; i < shadowed.pixels.size(); ++i) {
+        acne += shadowed.pixels[i] != unshadowed.pixels[i];
+        lit += unshadowed.pixels[i].g > 0.01f;
+    }
+    EXPECT_GT(lit, int(shadowed.pixels.size()) / 2) << "the test scene should be mostly lit";
+    EXPECT_EQ(acne, 0) << acne << " of " << shadowed.pixels.size()
+                       << " pixels are darker with shadows on: the surface shadows itself";
+}
+
+// A slightly tilted plane through `point` (tilted so that no coordinate of its points is exact:
+// an axis-aligned plane would hide the rounding error), the camera at `point + eye_offset`, and a
+// directional light `elevation_degrees` above the plane.
+Scene plane_scene(Vec3 point, Vec3 eye_offset, float elevation_degrees) {
+    Scene scene;
+    const Vec3 n = glm::normalize(Vec3(0.05f, 1, 0.03f));
+    const Vec3 tangent = glm::normalize(glm::cross(Vec3(0, 0, 1), n));
+    const Real e = glm::radians(Real(elevation_degrees));
+    const Vec3 to_light = std::cos(e) * tangent + std::sin(e) * n;
+    scene.camera = make_look_at_camera(Projection::Perspective, point + eye_offset, point,
+                                       Vec3(0, 1, 0), 60, 2);
+    scene.image = {96, 64};
+    scene.max_depth = 0;
+    scene.materials = {Material{}};
+    scene.planes = {Plane{point, n, 0}};
+    scene.lights = {directional_light(-to_light, Color(50))};
+    return scene;
+}
+
+// A plane 1e4 from the origin: float spacing there is about 1e-3, so a fixed epsilon of 1e-4
+// does not get the shadow ray clear of the rounding error of the hit point.
+TEST_F(Acne, PlaneFarFromOrigin) {
+    expect_no_acne(plane_scene(Vec3(1e4f, 1e4f, -1e4f), Vec3(0, 3, 6), 40));
+}
+
+// Light 0.3 degrees above a plane near the origin: a hit point off by d along the normal re-hits
+// the plane at t = d / sin(0.3 degrees), about 200 d.
+TEST_F(Acne, GrazingLight) {
+    expect_no_acne(plane_scene(Vec3(0, -1, 0), Vec3(0, 2, 8), 0.3f));
+}
+
+// A sphere far from the origin lit from the side: acne shows up near the terminator.
+TEST_F(Acne, SphereFarFromOriginNearTerminator) {
+    Scene scene;
+    const Vec3 c(-1e4f, 2e3f, 1e4f);
+    scene.camera =
+        make_look_at_camera(Projection::Perspective, c + Vec3(0, 0, 6), c, Vec3(0, 1, 0), 30, 2);
+    scene.image = {64, 64};
+    scene.max_depth = 0;
+    scene.materials = {Material{}};
+    scene.spheres = {Sphere{c, 1, 0}};
+    scene.lights = {directional_light(Vec3(-1, 0, -0.3f), Color(50))};
+    scene.mode = RenderMode::Shaded;
+    scene.shadows = false;
+    scene.update_features();
+    const Image unshadowed = render(scene, RenderMode::Shaded);
+    scene.shadows = true;
+    scene.update_features();
+    const Image shadowed = render(scene, RenderMode::Shaded);
+    int acne = 0;
+    for (std::size_t i = 0; i < shadowed.pixels.size(); ++i)
+        acne += shadowed.pixels[i] != unshadowed.pixels[i];
+    EXPECT_EQ(acne, 0) << acne << " pixels of a convex sphere shadow themselves";
+}
+
+// An opaque slab 1e-5 thick, 1e-5 above the floor, still shades the floor under it: the offset
+// is as small as the rounding error allows, not a fixed distance.
+TEST_F(Transmittance, ThinOccluderCloseToSurface) {
+    Scene scene = floor_scene();
+    scene.boxes = {Box{Vec3(-0.5f, 1e-5f, -0.5f), Vec3(0.5f, 2e-5f, 0.5f), 0}};
+    const SurfacePoint at = floor_point(scene, 0.2f, 0.1f);
+    expect_colour_near(
+        light_transmittance(scene, at, illuminate(point_light(Vec3(0.2f, 3, 0.1f)), at.point)),
+        Color(0));
+    // Beside the slab the floor is lit.
+    const SurfacePoint beside = floor_point(scene, 0.7f, 0.1f);
+    expect_colour_near(
+        light_transmittance(scene, beside,
+                            illuminate(point_light(Vec3(0.7f, 3, 0.1f)), beside.point)),
+        Color(1));
+}
+
+// Nothing between the point and the light: occluders beyond the light, or below the surface,
+// do not count.
+TEST_F(Transmittance, OnlyBetweenPointAndLight) {
+    Scene scene = floor_scene();
+    scene.spheres = {Sphere{Vec3(0, 6, 0), 1, 0}, Sphere{Vec3(0, -3, 0), 1, 0}};
+    const SurfacePoint at = floor_point(scene, 0, 0);
+    expect_colour_near(
+        light_transmittance(scene, at, illuminate(point_light(Vec3(0, 4, 0)), at.point)), Color(1));
+    // A directional light has no end: the sphere 6 units up blocks it.
+    expect_colour_near(
+        light_transmittance(scene, at, illuminate(directional_light(Vec3(0, -1, 0)), at.point)),
+        Color(0));
+}
+
+// Thin-shell shadows: a glass triangle filters once, a glass sphere twice (in and out), and
+// several filters multiply.
+TEST_F(Transmittance, ColouredShadowsThroughGlass) {
+    Scene scene = floor_scene();
+    scene.materials.push_back(glass(Color(0.9f, 0.5f, 0.2f)));
+    scene.materials.push_back(glass(Color(0.5f, 1, 0.8f)));
+    scene.vertices = {Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(0, 1, 2)};
+    scene.triangles = {Triangle{{0, 1, 2}, 1}};
+    const Light light = point_light(Vec3(0, 4, 0));
+    SurfacePoint at = floor_point(scene, 0, 0);
+    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                       Color(0.9f, 0.5f, 0.2f));
+
+    scene.triangles.clear();
+    scene.vertices.clear();
+    scene.spheres = {Sphere{Vec3(0, 2, 0), 0.5f, 2}};
+    at = floor_point(scene, 0, 0);
+    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                       Color(0.25f, 1, 0.64f));
+
+    scene.vertices = {Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(0, 1, 2)};
+    scene.triangles = {Triangle{{0, 1, 2}, 1}};
+    at = floor_point(scene, 0, 0);
+    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                       Color(0.9f * 0.25f, 0.5f, 0.2f * 0.64f));
+
+    // An opaque box behind the glass (seen from the floor) blocks everything.
+    scene.boxes = {Box{Vec3(-0.2f, 3, -0.2f), Vec3(0.2f, 3.2f, 0.2f), 0}};
+    at = floor_point(scene, 0, 0);
+    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)), Color(0));
+}
+
+}  // namespace
+}  // namespace rt
