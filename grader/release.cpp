@@ -435,6 +435,8 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
         if (ec || !fs::exists(status)) continue;  // tracked but deleted in the working tree
         const auto stage = stage_of(relative);
         if (stage) stage_info(stage->folder);  // every stage folder is listed in RELEASE.txt
+        // Hidden tests (stages/NN-name/hidden/, named in grading.json) stay with the grader.
+        if (stage && stage->relative.starts_with("hidden/")) continue;
         if (fs::is_symlink(status) || !fs::is_regular_file(status)) {
             if (fs::is_symlink(status)) copied.insert(relative);
             continue;  // directories here are git submodules: not part of a starter tree

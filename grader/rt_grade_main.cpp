@@ -1,17 +1,53 @@
-// rt-grade: the instructor's tool. Trusted code only -- it never links or loads student code.
+// rt-grade: the instructor's tool. Trusted code only -- it never links or loads student code;
+// submissions are built and run in sandboxed child processes (grade.h, sandbox.h).
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <iostream>
+#include <sstream>
 
+#include "grade.h"
 #include "release.h"
 
 #ifndef RT_SOURCE_DIR
 #error "RT_SOURCE_DIR must name the course source tree (set by grader/CMakeLists.txt)"
 #endif
 
+namespace {
+
+void on_signal(int) { rt::grader::g_interrupted = true; }
+
+std::vector<int> parse_stages(const std::string& list) {
+    std::vector<int> stages;
+    std::stringstream s(list);
+    std::string item;
+    while (std::getline(s, item, ','))
+        if (!item.empty()) stages.push_back(std::stoi(item));
+    return stages;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-    CLI::App app{"rt-grade: instructor tools for the ray-tracing course"};
-    app.require_subcommand(1);
+    CLI::App app{"rt-grade: grade submissions and release starter trees"};
+    app.footer("Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
+               "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
+
+    rt::grader::GradeOptions grade;
+    grade.source = RT_SOURCE_DIR;
+    std::string submission, stages, cache;
+    app.add_option("submission", submission, "folder or .zip to grade ('.' : the working tree)");
+    app.add_option("--stages", stages, "comma-separated stage numbers (default: every graded stage)");
+    app.add_option("--results", grade.results, "write Gradescope's results.json here");
+    app.add_option("--html", grade.html, "write the HTML report here");
+    app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--cache", cache, "grading workspaces (default: SOURCE/build/grader-cache)");
+    app.add_option("--jobs", grade.jobs, "test processes at a time (default: all cores)");
+    app.add_flag("--quiet", grade.quiet, "no terminal summary");
+    app.add_option("--time-limit", grade.time_limit,
+                   "seconds for every test and render, overriding grading.json (tests of the grader)");
+    app.add_flag("--reveal-hidden", grade.reveal_hidden, "summary also lists non-visible tests");
 
     rt::grader::ReleaseOptions release;
     std::string out;
@@ -35,12 +71,55 @@ int main(int argc, char** argv) {
         "--include-untracked", release.include_untracked,
         "Git checkout: also copy untracked files that .gitignore does not exclude");
 
-    CLI11_PARSE(app, argc, argv);
+    CLI::App* prepare_cmd = app.add_subcommand(
+        "prepare", "Build the grading workspace now (otherwise the first grading does it)");
+    int slots = 1;
+    prepare_cmd->add_option("--slots", slots, "workspaces to prepare (one per batch job)");
 
-    if (*release_cmd) {
-        release.out = out;
-        release.source = source;
-        return rt::grader::run_release(release, std::cout, std::cerr);
+    std::string batch_dir, batch_out = "grades";
+    int batch_jobs = 1;
+    CLI::App* batch_cmd = app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
+    batch_cmd->add_option("dir", batch_dir, "folder of submissions")->required()->check(CLI::ExistingDirectory);
+    batch_cmd->add_option("--out", batch_out, "where scores.csv and the reports go");
+    batch_cmd->add_option("--jobs", batch_jobs, "submissions graded at a time")->check(CLI::Range(1, 64));
+
+    std::string package_out = "autograder.zip";
+    CLI::App* package_cmd = app.add_subcommand("package", "Build the Gradescope autograder zip");
+    package_cmd->add_option("--out", package_out, "the zip to write");
+
+    // Grading options (--stages, --source, ...) also work after a subcommand's name.
+    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd}) sub->fallthrough();
+    CLI11_PARSE(app, argc, argv);
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    grade.cache = cache;
+    grade.stages = parse_stages(stages);
+
+    try {
+        if (*release_cmd) {
+            release.out = out;
+            release.source = source;
+            return rt::grader::run_release(release, std::cout, std::cerr);
+        }
+        if (*prepare_cmd) {
+            for (int slot = 0; slot < slots; ++slot) {
+                grade.slot = slot;
+                if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
+            }
+            return 0;
+        }
+        if (*batch_cmd) return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
+        if (*package_cmd) return rt::grader::run_package(grade.source, package_out, std::cout);
+        if (submission.empty()) {
+            std::cerr << app.help();
+            return 2;
+        }
+        grade.submission = submission;
+        if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
+        rt::grader::grade_submission(grade, std::cout);
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "rt-grade: error: " << e.what() << "\n";
+        return 1;
     }
-    return 2;
 }

@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev # unit tests
   libcgal-dev libgmp-dev libmpfr-dev  # exact predicates in the tests
   libglfw3-dev libosmesa6-dev         # GL contexts (windowed, headless)
+  zip unzip                           # rt-grade: .zip submissions, the Gradescope package
+  util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

@@ -1,0 +1,87 @@
+// `rt-grade SUBMISSION`: grades a student submission against the instructor's tree.
+// Trusted code: student code only ever runs in sandboxed child processes (sandbox.h).
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt::grader {
+
+// stages/NN-name/grading.json
+struct ImageThresholds {
+    int tolerance = 2;            // 8-bit steps a channel may differ
+    double pass_percent = 0.1;    // failing pixels at or below this: full points
+    double fail_percent = 2.0;    // at or above this: no points; linear in between
+    bool neighbourhood = true;    // forgive anti-aliased edges (3x3 reference neighbourhood)
+};
+struct SceneSpec {
+    std::string name;  // scenes/<name>.json, reference_images/<stage>/<name>.png
+    double points = 1;
+    std::string visibility = "visible";
+    ImageThresholds thresholds;
+};
+struct UnitGroup {
+    std::string binary;                        // a GoogleTest target of the instructor's build
+    std::vector<std::string> include{"*"};     // gtest-style patterns over Suite.Test
+    std::vector<std::string> exclude;
+    std::vector<std::string> hidden_sources;   // relative to the stage folder; never released
+    double points = 1;                         // each test
+    std::string visibility = "visible";
+};
+struct StageSpec {
+    int number = 0;
+    std::string folder;  // stages/NN-name
+    std::string title;
+    std::vector<std::string> student_files;  // relative to the folder
+    std::vector<UnitGroup> groups;
+    std::vector<SceneSpec> scenes;
+    double test_seconds = 10;
+    double render_seconds = 30;
+};
+
+// Every stage that has a grading.json, in order. Throws std::runtime_error naming the file.
+std::vector<StageSpec> load_stage_specs(const std::filesystem::path& source);
+
+struct GradeOptions {
+    std::filesystem::path source;       // the instructor's tree
+    std::filesystem::path cache;        // grading workspaces (default: <source>/build/grader-cache)
+    std::filesystem::path submission;   // folder, .zip, or "." for the working tree
+    std::vector<int> stages;            // empty: every stage with a grading.json
+    std::filesystem::path results;      // Gradescope results.json (optional)
+    std::filesystem::path html;         // HTML report (optional)
+    int slot = 0;                       // workspace slot (batch: one per job)
+    int jobs = 0;                       // parallel test processes (0: hardware threads)
+    bool quiet = false;                 // no terminal summary
+    bool reveal_hidden = false;         // terminal summary shows hidden tests (instructor)
+    double time_limit = 0;              // > 0: overrides every test's and render's wall/CPU limit
+};
+
+struct GradeSummary {
+    double score = 0;
+    double max_score = 0;
+    std::vector<double> stage_scores;  // in the order of the graded stages
+    std::vector<int> stage_numbers;
+    bool build_failed = false;
+    double seconds = 0;
+};
+
+// Builds (or reuses) the workspace of `slot`; prints progress to log. Returns false on failure.
+bool prepare_workspace(const GradeOptions& options, std::ostream& log);
+
+// Grades one submission. Never throws for problems of the submission itself; results.json is
+// written whatever happens (placeholder first, final at the end).
+GradeSummary grade_submission(const GradeOptions& options, std::ostream& log);
+
+// Set by SIGINT/SIGTERM: grading stops starting new children and writes what it has.
+extern std::atomic<bool> g_interrupted;
+
+int run_batch(const GradeOptions& base, const std::filesystem::path& dir,
+              const std::filesystem::path& out, int jobs, std::ostream& log);
+
+int run_package(const std::filesystem::path& source, const std::filesystem::path& out,
+                std::ostream& log);
+
+}  // namespace rt::grader

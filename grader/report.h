@@ -1,0 +1,40 @@
+// What a grading produced, and its three renderings: Gradescope's results.json, a
+// self-contained HTML report, and the terminal summary for students grading themselves.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt::grader {
+
+struct ReportTest {
+    int stage = 0;  // 0: not a stage test (the build)
+    std::string name, number, status, output, visibility;
+    std::vector<std::string> tags;
+    double score = 0, max_score = 0;
+    bool is_scene = false;
+    std::string student_png, reference_png, diff_png;  // PNG bytes (scenes)
+    std::string metrics;
+};
+
+struct ReportStage {
+    int number = 0;
+    std::string title, folder;
+};
+
+struct Report {
+    std::string isolation;
+    std::string general;  // top-level notes: ignored files, interruptions, sandbox degradation
+    double seconds = 0;
+    std::vector<ReportStage> stages;
+    std::vector<ReportTest> tests;
+};
+
+// https://gradescope-autograders.readthedocs.io/en/latest/specs/ (written atomically).
+void write_results_json(const Report& report, const std::filesystem::path& file);
+void write_html_report(const Report& report, const std::filesystem::path& file);
+void write_terminal_summary(const Report& report, std::ostream& out, bool reveal_hidden);
+
+}  // namespace rt::grader

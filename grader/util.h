@@ -1,0 +1,33 @@
+// Small helpers of the trusted grader: files, hashing, shell commands it runs itself.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rt::grader {
+
+std::string read_text(const std::filesystem::path& file);
+void write_text(const std::filesystem::path& file, std::string_view text);
+// Writes next to `file` and renames, so readers never see half a file and a symlink planted
+// at `file` is replaced rather than followed.
+void write_atomically(const std::filesystem::path& file, std::string_view text);
+
+std::string shell_quote(const std::string& word);
+// Runs a trusted command line through /bin/sh; returns its exit code, output in `output`.
+int run_trusted(const std::string& command, std::string* output = nullptr);
+
+std::uint64_t fnv1a(std::string_view data, std::uint64_t hash = 1469598103934665603ull);
+std::string hex(std::uint64_t value);
+
+// gtest-style pattern: '*' any run, '?' one character.
+bool glob_match(std::string_view pattern, std::string_view text);
+
+std::string base64(std::string_view data);
+std::string html_escape(std::string_view text);
+// Drops ANSI escapes and bytes that are not printable UTF-8-ish text.
+std::string clean_output(std::string_view text);
+
+}  // namespace rt::grader
