@@ -78,9 +78,13 @@ TEST_F(ShadowRayContract, RobustOriginAndRange) {
     EXPECT_TRUE(std::isinf(d.t_range.max));
 }
 
-// Renders `scene` with and without shadows: with nothing that can cast a shadow on the lit
-// surface, the two images must be identical. Any difference is shadow acne.
-void expect_no_acne(Scene scene) {
+// Renders `scene` with and without shadows and counts the pixels that differ (`acne`) and the
+// pixels lit without shadows (`lit`). With nothing that can cast a shadow on the lit surface the
+// two images must be identical: any difference is shadow acne.
+struct AcneCount {
+    int acne = 0, lit = 0, pixels = 0;
+};
+AcneCount count_acne(Scene scene) {
     scene.mode = RenderMode::Shaded;
     scene.shadows = false;
     scene.update_features();
@@ -88,14 +92,20 @@ void expect_no_acne(Scene scene) {
     scene.shadows = true;
     scene.update_features();
     const Image shadowed = render(scene, RenderMode::Shaded);
-    int acne = 0, lit = 0;
+    AcneCount count;
+    count.pixels = int(shadowed.pixels.size());
     for (std::size_t i = 0; i < shadowed.pixels.size(); ++i) {
-        acne += shadowed.pixels[i] != unshadowed.pixels[i];
-        lit += unshadowed.pixels[i].g > 0.01f;
+        count.acne += shadowed.pixels[i] != unshadowed.pixels[i];
+        count.lit += unshadowed.pixels[i].g > 0.01f;
     }
-    EXPECT_GT(lit, int(shadowed.pixels.size()) / 2) << "the test scene should be mostly lit";
-    EXPECT_EQ(acne, 0) << acne << " of " << shadowed.pixels.size()
-                       << " pixels are darker with shadows on: the surface shadows itself";
+    return count;
+}
+
+void expect_no_acne(const Scene& scene) {
+    const AcneCount c = count_acne(scene);
+    EXPECT_GT(c.lit, c.pixels / 2) << "the test scene should be mostly lit";
+    EXPECT_EQ(c.acne, 0) << c.acne << " of " << c.pixels
+                         << " pixels are darker with shadows on: the surface shadows itself";
 }
 
 // A slightly tilted plane through `point` (tilted so that no coordinate of its points is exact:
@@ -140,16 +150,7 @@ TEST_F(Acne, SphereFarFromOriginNearTerminator) {
     scene.materials = {Material{}};
     scene.spheres = {Sphere{c, 1, 0}};
     scene.lights = {directional_light(Vec3(-1, 0, -0.3f), Color(50))};
-    scene.mode = RenderMode::Shaded;
-    scene.shadows = false;
-    scene.update_features();
-    const Image unshadowed = render(scene, RenderMode::Shaded);
-    scene.shadows = true;
-    scene.update_features();
-    const Image shadowed = render(scene, RenderMode::Shaded);
-    int acne = 0;
-    for (std::size_t i = 0; i < shadowed.pixels.size(); ++i)
-        acne += shadowed.pixels[i] != unshadowed.pixels[i];
+    const int acne = count_acne(scene).acne;
     EXPECT_EQ(acne, 0) << acne << " pixels of a convex sphere shadow themselves";
 }
 
