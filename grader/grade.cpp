@@ -1,6 +1,8 @@
 #include "grade.h"
 
+#include <fcntl.h>
 #include <sys/file.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -160,7 +163,7 @@ std::vector<fs::path> source_files(const fs::path& source, std::uint64_t& hash) 
         if (it->is_regular_file()) files.push_back(it->path().lexically_relative(source));
     }
     std::sort(files.begin(), files.end());
-    hash = fnv1a("rt-grade workspace v1");
+    hash = fnv1a("rt-grade workspace v2");
     for (const auto& f : files) {
         hash = fnv1a(f.string(), hash);
         hash = fnv1a(read_text(source / f), hash);
@@ -285,6 +288,17 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             for (const auto& h : g.hidden_sources) hidden_cmake += " " + s.folder + "/" + h;
             hidden_cmake += ")\n";
         }
+    // Every graded test binary gets the trusted main (grader/test_main.cpp) instead of
+    // gtest_main, and is stripped: its verdicts come through the nonce channel.
+    hidden_cmake += "# The trusted test main: verdicts through the nonce channel.\n";
+    for (const auto& t : build_targets(specs)) {
+        if (t == "rt") continue;
+        hidden_cmake += "get_target_property(rt_grade_libs " + t + " LINK_LIBRARIES)\n"
+                        "list(TRANSFORM rt_grade_libs REPLACE \"^GTest::gtest_main$\" \"GTest::gtest\")\n"
+                        "set_property(TARGET " + t +
+                        " PROPERTY LINK_LIBRARIES ${rt_grade_libs} rt_grade_test_main)\n"
+                        "target_link_options(" + t + " PRIVATE -s)\n";
+    }
     sync("grader_hidden.cmake", hidden_cmake);
     sync("CMakeLists.txt", read_text(o.source / "CMakeLists.txt") + "\ninclude(grader_hidden.cmake)\n");
     {
@@ -582,38 +596,173 @@ std::string trim_gtest_output(const std::string& raw) {
     return out;
 }
 
-// The gtest verdict: the JSON report must name exactly this test, with no failure, and the
-// process must have exited with code 0 (a crash after a forged report still fails).
-bool gtest_passed(const fs::path& report, const std::string& test, std::string& why) {
-    std::error_code ec;
-    const auto st = fs::symlink_status(report, ec);
-    if (ec || !fs::is_regular_file(st) || fs::file_size(report, ec) > (1 << 20)) {
+// The unit-test channel (grader/test_main.cpp): a random nonce goes to the child through a
+// pipe, its trusted main writes one record per test to an unlinked file, each carrying the nonce.
+struct TestChannel {
+    std::string nonce;      // 32 hex digits
+    int nonce_read = -1;    // the child's RT_GRADE_NONCE_FD
+    int results = -1;       // the child's RT_GRADE_RESULT_FD; read back by the grader
+    bool ok = false;
+    ~TestChannel() {
+        if (nonce_read >= 0) close(nonce_read);
+        if (results >= 0) close(results);
+    }
+};
+constexpr int kNonceFd = 3, kResultFd = 4;
+
+void open_channel(TestChannel& c, const fs::path& dir) {
+    unsigned char bytes[16];
+    if (getrandom(bytes, sizeof bytes, 0) != ssize_t(sizeof bytes)) return;
+    static const char digits[] = "0123456789abcdef";
+    for (unsigned char b : bytes) {
+        c.nonce.push_back(digits[b >> 4]);
+        c.nonce.push_back(digits[b & 15]);
+    }
+    int p[2];
+    if (pipe2(p, O_CLOEXEC) != 0) return;
+    const bool written = write(p[1], c.nonce.data(), c.nonce.size()) == ssize_t(c.nonce.size());
+    close(p[1]);
+    c.nonce_read = p[0];
+    // No name: nothing in the child can open it by path (it can only write to the descriptor).
+    c.results = open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+    c.ok = written && c.results >= 0;
+}
+
+std::string read_channel(const TestChannel& c) {
+    std::string text(1 << 16, '\0');
+    const ssize_t n = pread(c.results, text.data(), text.size(), 0);
+    text.resize(n > 0 ? std::size_t(n) : 0);
+    return text;
+}
+
+// The verdict: every record carries the nonce (else the channel was tampered with), exactly one
+// record names this test and says PASS, the program's end record counts 1 passed and 0 failed,
+// and the process exited with code 0 (checked by the caller).
+bool channel_passed(const std::string& records, const std::string& nonce, const std::string& test,
+                    std::string& why) {
+    const std::string prefix = "RTG1 " + nonce + " ";
+    std::istringstream lines(records);
+    std::string line;
+    int mine = 0, passes = 0, ends = 0;
+    bool end_ok = false;
+    while (std::getline(lines, line)) {
+        if (!line.starts_with(prefix)) {
+            why = "the test's result channel holds a record that did not come from the test "
+                  "runner (tampering?)";
+            return false;
+        }
+        const std::string rest = line.substr(prefix.size());
+        if (rest.starts_with("END ")) {
+            ++ends;
+            end_ok = rest == "END 1 0";
+        } else if (rest.starts_with("PASS ") || rest.starts_with("FAIL ")) {
+            if (rest.substr(5) != test) {
+                why = "the result channel names a test that was not run (tampering?)";
+                return false;
+            }
+            ++mine;
+            passes += rest.starts_with("PASS ");
+        } else {
+            why = "the test's result channel holds a malformed record (tampering?)";
+            return false;
+        }
+    }
+    if (mine == 0) {
         why = "the test produced no result (it exited early?)";
         return false;
     }
-    try {
-        const json j = json::parse(read_text(report));
-        int found = 0;
-        bool failed = false;
-        for (const auto& suite : j.at("testsuites"))
-            for (const auto& t : suite.at("testsuite")) {
-                if (suite.at("name").get<std::string>() + "." + t.at("name").get<std::string>() != test)
-                    continue;
-                ++found;
-                if (t.contains("failures") || t.value("result", "") != "COMPLETED" ||
-                    t.value("status", "") != "RUN")
-                    failed = true;
-            }
-        if (found != 1) {
-            why = "the test is missing from the output";
-            return false;
-        }
-        return !failed;
-    } catch (const std::exception&) {
-        why = "the test's result file is malformed";
+    if (mine != 1 || ends != 1) {
+        why = "the result channel holds duplicate records (tampering?)";
         return false;
     }
+    return passes == 1 && end_ok;
 }
+
+std::string png_bytes(const Image8& image, const fs::path& scratch, const std::string& name) {
+    const fs::path file = scratch / (name + ".png");
+    write_image8(image, file);
+    return read_text(file);
+}
+
+// What a student object must not contain. Its definitions would replace the instructor's at link
+// time (main, GoogleTest, framework functions, C library functions such as write or getenv,
+// operator new), or run before the trusted test main has taken the nonce (prioritized
+// constructors, .preinit_array, .init code, IFUNC resolvers). One line per problem.
+std::string object_problems(const fs::path& obj, const std::set<std::string>& instructor) {
+    std::string problems;
+    auto demangle = [](const std::string& name) {
+        std::string d;
+        run_trusted("c++filt " + shell_quote(name), &d);
+        while (!d.empty() && d.back() == '\n') d.pop_back();
+        return d;
+    };
+    std::string out;
+    run_trusted("nm -g --defined-only -P " + shell_quote(obj.string()), &out);
+    std::istringstream lines(out);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string name, type;
+        if (!(words >> name >> type)) continue;
+        const bool weak = type == "W" || type == "V";
+        if (name == "main" || name.find("7testing") != std::string::npos ||
+            name.find("gtest") != std::string::npos || (!weak && instructor.count(name))) {
+            problems += "  " + demangle(name) + "\n";
+            continue;
+        }
+        if (type == "i") {
+            problems += "  " + demangle(name) + " (an IFUNC resolver)\n";
+            continue;
+        }
+        if (!name.starts_with("_Z")) {
+            problems += "  " + name + " (extern \"C\" or assembler name: could replace a C library function)\n";
+            continue;
+        }
+        if (weak) continue;  // template instantiations and inline functions
+        const std::string d = demangle(name);
+        std::string bare = d;
+        for (const char* p : {"vtable for ", "typeinfo for ", "typeinfo name for ", "VTT for ",
+                              "guard variable for ", "non-virtual thunk to ", "virtual thunk to "})
+            if (bare.starts_with(p)) bare = bare.substr(std::strlen(p));
+        for (const char* p : {"std::", "__gnu_cxx::", "__cxxabiv1::", "abi::", "operator new",
+                              "operator delete", "__"})
+            if (bare.starts_with(p)) {
+                problems += "  " + d + " (a definition of a standard library symbol)\n";
+                break;
+            }
+    }
+    // Sections: code that runs before main must be ordinary constructors (.init_array).
+    out.clear();
+    run_trusted("readelf -S -W " + shell_quote(obj.string()), &out);
+    std::istringstream sections(out);
+    while (std::getline(sections, line)) {
+        const auto open = line.find('[');
+        const auto close = line.find("] ", open == std::string::npos ? 0 : open);
+        if (open == std::string::npos || close == std::string::npos) continue;
+        std::istringstream words(line.substr(close + 2));
+        std::string section;
+        if (!(words >> section) || section == "Name" || section == "NULL") continue;
+        std::string base = section;
+        for (const char* rel : {".rela", ".rel"})
+            if (base.starts_with(std::string(rel) + ".")) {
+                base = base.substr(std::strlen(rel));
+                break;
+            }
+        const bool ok =
+            base == ".init_array" || base == ".fini_array" || base == ".group" ||
+            base == ".symtab" || base == ".strtab" || base == ".shstrtab" ||
+            base == ".comment" || base == ".eh_frame" || base == ".llvm_addrsig" ||
+            base == ".sframe" || base == ".tbss" || base == ".tdata" ||
+            base.starts_with(".text") || base.starts_with(".data") || base.starts_with(".bss") ||
+            base.starts_with(".rodata") || base.starts_with(".gcc_except_table") ||
+            base.starts_with(".note.GNU-stack") || base.starts_with(".note.gnu.property") ||
+            base.starts_with(".debug") || base.starts_with(".tbss.") || base.starts_with(".tdata.");
+        if (!ok) problems += "  section " + section + " (runs code or data before main?)\n";
+    }
+    return problems;
+}
+
+}  // namespace
 
 // Reads the child's EXR after it has exited. NaN or Inf pixels fail the image.
 bool read_render(const fs::path& file, Image& image, std::string& why) {
@@ -653,13 +802,34 @@ bool read_render(const fs::path& file, Image& image, std::string& why) {
     return true;
 }
 
-std::string png_bytes(const Image8& image, const fs::path& scratch, const std::string& name) {
-    const fs::path file = scratch / (name + ".png");
-    write_image8(image, file);
-    return read_text(file);
-}
 
-}  // namespace
+ImageScore score_image(const Image8& actual, const Image8& reference, const ImageThresholds& th) {
+    ImageScore score;
+    CompareOptions co;
+    co.tolerance = th.tolerance;
+    co.max_failing_percent = th.pass_percent;
+    co.neighbourhood = th.neighbourhood;
+    score.compare = compare_images(actual, reference, co);
+    if (!score.compare.size_matches) {
+        score.metrics = "the image is " + std::to_string(actual.width) + "x" +
+                        std::to_string(actual.height) + ", the reference " +
+                        std::to_string(reference.width) + "x" + std::to_string(reference.height);
+        return score;
+    }
+    const double failing = score.compare.failing_percent;
+    if (failing <= th.pass_percent) score.fraction = 1;
+    else if (failing < th.fail_percent)
+        score.fraction = (th.fail_percent - failing) / (th.fail_percent - th.pass_percent);
+    score.ssim = ssim_luminance(actual, reference);
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "%.3f%% of the pixels differ by more than %d (full points up to %.2f%%, none "
+                  "from %.2f%%); max difference %d; SSIM %.4f (reported, not graded)",
+                  failing, th.tolerance, th.pass_percent, th.fail_percent,
+                  score.compare.max_difference, score.ssim);
+    score.metrics = line;
+    return score;
+}
 
 GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
@@ -841,35 +1011,16 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
             std::string line;
             while (std::getline(s, line)) instructor.insert(line);
         }
-        for (const auto& obj : student_objects) {
-            std::string out;
-            run_trusted("nm -g --defined-only -P " + shell_quote(obj.string()), &out);
-            std::istringstream lines(out);
-            std::string line;
-            while (std::getline(lines, line)) {
-                std::istringstream words(line);
-                std::string name, type;
-                if (!(words >> name >> type)) continue;
-                const bool strong = type == "T" || type == "D" || type == "B" || type == "R";
-                if (name == "main" || name.find("7testing") != std::string::npos ||
-                    name.find("gtest") != std::string::npos ||
-                    (strong && instructor.count(name))) {
-                    std::string demangled;
-                    run_trusted("c++filt " + shell_quote(name), &demangled);
-                    while (!demangled.empty() && demangled.back() == '\n') demangled.pop_back();
-                    symbol_problems += "  " + demangled + "\n";
-                }
-            }
-        }
+        for (const auto& obj : student_objects) symbol_problems += object_problems(obj, instructor);
         if (!symbol_problems.empty()) build_ok = false;
     }
     if (!build_ok) {
         summary.build_failed = true;
         std::string first_errors;
         if (!symbol_problems.empty()) {
-            first_errors = "Your files define symbols that belong to the framework or the tests "
-                           "(main, test code, framework functions). Remove them:\n" +
-                           symbol_problems;
+            first_errors = "Your files define symbols or sections the grader does not allow "
+                           "(main, test code, framework or library functions, code that runs "
+                           "before main). Remove them:\n" + symbol_problems;
         } else {
             std::istringstream lines(build_log);
             std::string line;
@@ -930,14 +1081,18 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
                 r.cancel = &g_interrupted;
                 if (!task.scene) {
                     r.argv = {(w.build / "bin" / task.binary).string(),
-                              "--gtest_filter=" + task.test,
-                              "--gtest_output=json:" + (dir / "gtest.json").string(),
-                              "--gtest_color=no"};
+                              "--gtest_filter=" + task.test, "--gtest_color=no"};
                     r.limits.wall_seconds = o.time_limit > 0 ? o.time_limit : task.stage->test_seconds;
                     r.limits.cpu_seconds = int(std::ceil(r.limits.wall_seconds));
-                    const RunResult res = run_sandboxed(r);
-                    std::string why;
-                    const bool passed = res.ok() && gtest_passed(dir / "gtest.json", task.test, why);
+                    TestChannel channel;
+                    open_channel(channel, dir);
+                    r.env = {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
+                             "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
+                    r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.results, kResultFd}};
+                    const RunResult res = channel.ok ? run_sandboxed(r) : RunResult{};
+                    std::string why = channel.ok ? "" : "the grader could not open the test channel";
+                    const bool passed =
+                        res.ok() && channel_passed(read_channel(channel), channel.nonce, task.test, why);
                     out.output = trim_gtest_output(res.output);
                     if (!passed) {
                         std::string head = res.ok() ? why : res.describe(r.limits);
@@ -969,37 +1124,15 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
                         const Image8 reference = read_image8(
                             w.priv / "reference_images" / fs::path(task.stage->folder).filename() /
                             (task.scene->name + ".png"));
-                        const ImageThresholds& th = task.scene->thresholds;
-                        CompareOptions co;
-                        co.tolerance = th.tolerance;
-                        co.max_failing_percent = th.pass_percent;
-                        co.neighbourhood = th.neighbourhood;
-                        const CompareResult c = compare_images(actual, reference, co);
+                        const ImageScore sc = score_image(actual, reference, task.scene->thresholds);
                         out.student_png = png_bytes(actual, dir, "student");
                         out.reference_png = png_bytes(reference, dir, "reference");
-                        if (!c.size_matches) {
-                            out.output = "the image is " + std::to_string(actual.width) + "x" +
-                                         std::to_string(actual.height) + ", the reference " +
-                                         std::to_string(reference.width) + "x" +
-                                         std::to_string(reference.height) + "\n" + out.output;
-                        } else {
-                            out.diff_png = png_bytes(c.heat_map, dir, "diff");
-                            double fraction = 0;
-                            if (c.failing_percent <= th.pass_percent) fraction = 1;
-                            else if (c.failing_percent < th.fail_percent)
-                                fraction = (th.fail_percent - c.failing_percent) /
-                                           (th.fail_percent - th.pass_percent);
-                            out.score = std::round(out.max_score * fraction * 100) / 100;
-                            const double ssim = ssim_luminance(actual, reference);
-                            char line[400];
-                            std::snprintf(line, sizeof line,
-                                          "%.3f%% of the pixels differ by more than %d (full points "
-                                          "up to %.2f%%, none from %.2f%%); max difference %d; "
-                                          "SSIM %.4f (reported, not graded)",
-                                          c.failing_percent, th.tolerance, th.pass_percent,
-                                          th.fail_percent, c.max_difference, ssim);
-                            out.metrics = line;
-                            out.output = std::string(line) + "\n" + out.output;
+                        out.output = sc.metrics + "\n" + out.output;
+                        if (sc.compare.size_matches) {
+                            out.diff_png = png_bytes(sc.compare.heat_map, dir, "diff");
+                            out.score = std::round(out.max_score * sc.fraction * 100) / 100;
+                            out.metrics = sc.metrics;
+                            const double fraction = sc.fraction;
                             if (fraction >= 1) out.status = "passed";
                         }
                     }

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "image/compare.h"
+#include "image/image.h"
+
 namespace rt::grader {
 
 // stages/NN-name/grading.json
@@ -74,6 +77,34 @@ bool prepare_workspace(const GradeOptions& options, std::ostream& log);
 // Grades one submission. Never throws for problems of the submission itself; results.json is
 // written whatever happens (placeholder first, final at the end).
 GradeSummary grade_submission(const GradeOptions& options, std::ostream& log);
+
+// The grader's image scoring (docs/grading.md, "Image scoring"), shared by grading and
+// `rt-grade compare` (calibration).
+struct ImageScore {
+    double fraction = 0;  // of the scene's points
+    double ssim = 0;      // reported, never graded
+    CompareResult compare;
+    std::string metrics;  // one line for the report
+};
+ImageScore score_image(const Image8& actual, const Image8& reference, const ImageThresholds& th);
+
+// Reads a rendered EXR (linear) as the grader does; NaN or infinite pixels fail with `why`.
+bool read_render(const std::filesystem::path& file, Image& image, std::string& why);
+
+// `rt-grade compare`: scores images with the grader's comparison against reference_images and
+// the thresholds of grading.json. Either renders every graded scene with `renderer` (a trusted
+// build, e.g. the reference compiled with other flags) or scores `image` as scene `scene`
+// ("NN-name/scene"; a PNG is taken as display values, an EXR as linear). Prints one line per
+// scene; returns 0 when every scene gets full points, 1 otherwise, 2 on a usage error.
+struct CompareRequest {
+    std::filesystem::path source;
+    std::filesystem::path renderer;
+    std::vector<int> stages;
+    int threads = 0;
+    std::filesystem::path image;
+    std::string scene;
+};
+int run_compare(const CompareRequest& request, std::ostream& log);
 
 // Set by SIGINT/SIGTERM: grading stops starting new children and writes what it has.
 extern std::atomic<bool> g_interrupted;

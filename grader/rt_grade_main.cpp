@@ -2,7 +2,10 @@
 // submissions are built and run in sandboxed child processes (grade.h, sandbox.h).
 #include <CLI/CLI.hpp>
 
+#include <sys/prctl.h>
+
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -29,6 +32,9 @@ std::vector<int> parse_stages(const std::string& list) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Not dumpable: a child running as the same user (no user namespace, no uid drop) cannot
+    // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
+    prctl(PR_SET_DUMPABLE, 0);
     CLI::App app{"rt-grade: grade submissions and release starter trees"};
     app.footer("Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
                "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
@@ -42,7 +48,9 @@ int main(int argc, char** argv) {
     app.add_option("--html", grade.html, "write the HTML report here");
     app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
         ->check(CLI::ExistingDirectory);
-    app.add_option("--cache", cache, "grading workspaces (default: SOURCE/build/grader-cache)");
+    if (const char* c = std::getenv("RT_GRADE_CACHE")) cache = c;
+    app.add_option("--cache", cache,
+                   "grading workspaces (default: $RT_GRADE_CACHE, else SOURCE/build/grader-cache)");
     app.add_option("--jobs", grade.jobs, "test processes at a time (default: all cores)");
     app.add_flag("--quiet", grade.quiet, "no terminal summary");
     app.add_option("--time-limit", grade.time_limit,
@@ -87,8 +95,17 @@ int main(int argc, char** argv) {
     CLI::App* package_cmd = app.add_subcommand("package", "Build the Gradescope autograder zip");
     package_cmd->add_option("--out", package_out, "the zip to write");
 
+    rt::grader::CompareRequest compare;
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare", "Score images with the grader's comparison (calibration): every graded scene "
+                   "rendered by --renderer, or one --image as --scene NN-name/scene");
+    compare_cmd->add_option("--renderer", compare.renderer, "an rt binary (trusted build)");
+    compare_cmd->add_option("--threads", compare.threads, "render threads (default: all cores)");
+    compare_cmd->add_option("--image", compare.image, "an image: .exr linear, .png display values");
+    compare_cmd->add_option("--scene", compare.scene, "the graded scene the image is, NN-name/scene");
+
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
-    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd}) sub->fallthrough();
+    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -109,6 +126,11 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (*batch_cmd) return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
+        if (*compare_cmd) {
+            compare.source = grade.source;
+            compare.stages = grade.stages;
+            return rt::grader::run_compare(compare, std::cout);
+        }
         if (*package_cmd) return rt::grader::run_package(grade.source, package_out, std::cout);
         if (submission.empty()) {
             std::cerr << app.help();

@@ -100,7 +100,8 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     setrlimit(resource, &limit);
 }
 
-[[noreturn]] void exec_program(const RunSpec& spec, int out_fd, int err_fd, bool drop_uid) {
+[[noreturn]] void exec_program(const RunSpec& spec, int out_fd, int err_fd,
+                               const std::vector<std::pair<int, int>>& passed, bool drop_uid) {
     const Limits& l = spec.limits;
     set_limit(RLIMIT_CPU, rlim_t(l.cpu_seconds), rlim_t(l.cpu_seconds + 1));
     // RLIMIT_DATA counts the heap and anonymous mappings (what a memory hog grows) but not the
@@ -120,6 +121,11 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     dup2(err_fd, 2);
     const int devnull = open("/dev/null", O_RDONLY);
     if (devnull >= 0) dup2(devnull, 0);
+    // Moved above 20 beforehand, so no target can overwrite a source still to be placed.
+    for (const auto& [from, to] : passed) {
+        if (to < 3 || dup2(from, to) != to) _exit(126);
+        close(from);
+    }
     std::vector<char*> argv;
     for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -250,7 +256,10 @@ RunResult run_sandboxed(const RunSpec& spec) {
             if (program == 0) {
                 // File descriptors are dup2'ed without CLOEXEC inside exec_program.
                 const int o = fcntl(out_fd, F_DUPFD, 10), e = fcntl(err_fd, F_DUPFD, 10);
-                exec_program(spec, o, e, drop);
+                std::vector<std::pair<int, int>> passed;
+                for (const auto& [from, to] : spec.pass_fds)
+                    passed.push_back({fcntl(from, F_DUPFD_CLOEXEC, 20), to});
+                exec_program(spec, o, e, passed, drop);
             }
             int status = 0;
             while (waitpid(program, &status, 0) < 0 && errno == EINTR) {

@@ -14,6 +14,7 @@
 #include <atomic>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rt::grader {
@@ -52,6 +53,9 @@ struct RunSpec {
     std::vector<std::string> env;  // KEY=VALUE; the child gets only these (plus PATH, HOME)
     Limits limits;
     bool drop_uid = true;  // as root, run as nobody (false for the compiler: it writes the build)
+    // Descriptors of the grader passed to the program: {grader fd, fd number in the program}.
+    // Every other descriptor of the grader is close-on-exec. Targets must be 3 or more.
+    std::vector<std::pair<int, int>> pass_fds;
 };
 
 enum class Isolation { Namespaces, UidDrop, None };

@@ -17,6 +17,7 @@
 
 #include "gl/headless_context.h"
 #include "image/image.h"
+#include "render/accelerate.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
@@ -30,7 +31,7 @@ namespace {
 const std::map<std::string, RenderMode> kModes = {
     {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
     {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
-    {"shaded", RenderMode::Shaded}};
+    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
 
 struct RenderArgs {
     std::string scene;
@@ -40,6 +41,7 @@ struct RenderArgs {
     bool quiet = false;
     std::string debug_pixel, overlay_pixel;  // "X,Y"
     std::string debug_format = "text";
+    std::string accelerator;  // "", "none" or "bvh": overrides the scene's
 };
 
 // "X,Y" inside the image, or a usage error.
@@ -62,7 +64,13 @@ int run_render(const RenderArgs& args) {
     Scene scene = load_scene(args.scene);
     if (args.width > 0) scene.image.width = args.width;
     if (args.height > 0) scene.image.height = args.height;
+    if (!args.accelerator.empty())
+        scene.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
     const RenderMode mode = args.mode.value_or(scene.mode);
+    const AccelerationReport accel = build_acceleration(scene);
+    if (accel.built && !args.quiet)
+        std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n", accel.primitives,
+                    accel.nodes, accel.depth, accel.build_ms);
     if (!args.debug_pixel.empty()) {
         const auto [x, y] = parse_pixel(args.debug_pixel, "--debug-pixel", scene);
         const PixelTree tree = debug_pixel(scene, x, y);
@@ -106,7 +114,8 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
         const fs::path stage_out = out / stage.filename();
         fs::create_directories(stage_out);
         for (const fs::path& scene_file : scenes) {
-            const Scene scene = load_scene(scene_file);
+            Scene scene = load_scene(scene_file);
+            build_acceleration(scene);
             RenderOptions options;
             options.threads = threads;
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
@@ -163,7 +172,10 @@ int main(int argc, char** argv) {
                            "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
                            "magenta, reflection blue, refraction yellow");
     render_cmd->add_option("--mode", mode_name, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded"}));
+        ->check(CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
+    render_cmd->add_option("--accelerator", render_args.accelerator,
+                           "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
+        ->check(CLI::IsMember({"none", "bvh"}));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--height", render_args.height, "override the image height")

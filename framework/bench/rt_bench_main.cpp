@@ -1,5 +1,5 @@
-// rt-bench: measurements for the course. Subcommands: `accuracy` (issue 6); BVH benchmarks
-// will join as further subcommands.
+// rt-bench: measurements for the course. Without a subcommand, or as `rt-bench bvh`: the BVH
+// benchmark (issue 5, bvh_bench.h). `rt-bench accuracy`: the accuracy lab (issue 6).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include "bench/accuracy.h"
+#include "bench/bvh_bench.h"
 
 namespace {
 
@@ -51,8 +53,50 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"rt-bench: measurements for the ray-tracing course"};
-    app.require_subcommand(1);
+    CLI::App app{"rt-bench: measurements for the ray-tracing course. Without a subcommand: the "
+                 "BVH benchmark (as `rt-bench bvh`)"};
+    app.require_subcommand(0, 1);
+
+    // The BVH benchmark's options belong to the top level, so that they work both without a
+    // subcommand and after `bvh` (which lets unknown options fall through to here).
+    rt::bench::BvhBenchConfig bench;
+    app.add_option("--mesh", bench.mesh_file, "an OBJ mesh (default: a procedural mesh)")
+        ->check(CLI::ExistingFile);
+    app.add_option("--procedural", bench.procedural,
+                   "procedural mesh when no --mesh: icosphere, torus, terrain, soup")
+        ->capture_default_str();
+    app.add_option("--triangles", bench.triangles, "procedural mesh: at least this many triangles")
+        ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 26));
+    app.add_option("--seed", bench.seed, "seed of the procedural mesh and the diffuse rays")
+        ->capture_default_str();
+    app.add_option("--threads", bench.threads,
+                   "threads of the parallel run (default: every core, " +
+                       std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
+                       "); 1 thread is always run too")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--width", bench.width, "primary rays: image width")->capture_default_str()
+        ->check(CLI::Range(1, 16384));
+    app.add_option("--height", bench.height, "primary rays: image height")->capture_default_str()
+        ->check(CLI::Range(1, 16384));
+    app.add_option("--repeat", bench.repeat, "timed runs of each measurement; the fastest counts")
+        ->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--brute-force-max-triangles", bench.brute_force_max_triangles,
+                   "time brute force only up to this many triangles (above: correctness only)")
+        ->capture_default_str();
+    app.add_option("--brute-force-rays", bench.brute_force_rays,
+                   "brute force traces at most this many rays of each kind (an even subset)")
+        ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
+    app.add_option("--max-disagreement", bench.max_disagreement,
+                   "fraction of a kind's rays on which two back-ends may disagree before the "
+                   "run fails (edge and vertex hits legitimately differ)")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    app.add_option("--csv", bench.csv, "write the timings as CSV to this file (\"-\": print them)");
+    // Hidden (empty group): makes the BVH answer wrongly on every N-th hit, for the test that
+    // the correctness check fails the run.
+    app.add_option("--inject-error", bench.inject_error_period)->group("");
+    CLI::App* bvh = app.add_subcommand("bvh", "the BVH benchmark (the default): brute force, "
+                                              "stage 06 BVH and Embree on the same rays");
+    bvh->fallthrough();
 
     rt::bench::AccuracyConfig cfg;
     std::string markdown, svg_dir, csv;
@@ -68,7 +112,17 @@ int main(int argc, char** argv) {
 
     CLI11_PARSE(app, argc, argv);
     try {
-        if (acc->parsed()) return run_accuracy(cfg, markdown, svg_dir, csv);
+        if (acc->parsed()) {
+            for (const CLI::Option* option : app.get_options())
+                if (option->count() > 0 && option->get_name() != "--help") {
+                    std::fprintf(stderr, "rt-bench: error: %s is an option of the BVH benchmark, "
+                                         "not of `accuracy`; give it after `accuracy`, if there\n",
+                                 option->get_name().c_str());
+                    return 2;
+                }
+            return run_accuracy(cfg, markdown, svg_dir, csv);
+        }
+        return rt::bench::run_bvh_bench(bench, std::cout);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "rt-bench: error: %s\n", e.what());
         return 1;

@@ -4,9 +4,11 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <thread>
 
 #include "core/not_implemented.h"
+#include "render/accelerate.h"
 #include "render/progress.h"
 #include "render/shade.h"
 #include "student/stage02.h"
@@ -53,7 +55,13 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
         return out;
     }
     Hit hit;
-    if (!intersect_nearest(ray, scene, Interval{0, kInfinity}, hit)) return out;
+    if (mode == RenderMode::BvhVisits) {  // the count goes through `depth`, mapped at the end
+        BvhStats stats;
+        bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &stats);
+        out.depth = Real(stats.nodes_visited);
+        return out;
+    }
+    if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) return out;
     switch (mode) {
         case RenderMode::Normals: out.colour = display_value(unit_vector_colour(hit.normal)); break;
         case RenderMode::Depth: out.depth = hit.t; break;
@@ -77,6 +85,27 @@ void map_depth(const std::vector<Real>& depth, Image& image) {
     }
 }
 
+// A heat ramp from black through purple, red and orange to pale yellow (the shape of the
+// "inferno" colour map, in five hand-picked stops: dark is cheap, bright is expensive).
+Color heat_colour(float v) {
+    static const Color stops[] = {{0.0f, 0.0f, 0.02f}, {0.34f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f},
+                                  {0.97f, 0.56f, 0.04f}, {0.99f, 1.0f, 0.64f}};
+    v = std::clamp(v, 0.0f, 1.0f) * 4.0f;
+    const int i = std::min(3, int(v));
+    return glm::mix(stops[i], stops[i + 1], v - float(i));
+}
+
+// BVH node visits: 0 .. the image's largest count mapped onto the heat ramp (a deterministic
+// reduction over all pixels, like the depth mode).
+void map_visits(const std::vector<Real>& visits, Image& image) {
+    Real most = 1;
+    for (Real v : visits) most = std::max(most, v);
+    for (std::size_t i = 0; i < visits.size(); ++i) {
+        if (visits[i] < 0 || image.pixels[i] == kStubColor) continue;
+        image.pixels[i] = display_value(heat_colour(float(visits[i] / most)));
+    }
+}
+
 }  // namespace
 
 int resolve_thread_count(int threads) {
@@ -85,6 +114,11 @@ int resolve_thread_count(int threads) {
 }
 
 Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
+    if (mode == RenderMode::BvhVisits && !uses_bvh(scene))
+        throw std::runtime_error(scene.source + ": mode \"bvh_visits\" needs the scene's BVH, which " +
+                                 (scene.accelerator == Accelerator::Bvh
+                                      ? std::string("build_bvh did not produce (see the message above)")
+                                      : std::string("it does not ask for; add \"accelerator\": \"bvh\" to \"render\"")));
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     std::vector<Real> depth(std::size_t(width) * height, -1);
@@ -118,6 +152,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
     pool.clear();  // joins
 
     if (mode == RenderMode::Depth) map_depth(depth, image);
+    if (mode == RenderMode::BvhVisits) map_visits(depth, image);
     return image;
 }
 

@@ -1,5 +1,6 @@
 #include "render/shade.h"
 
+#include "render/accelerate.h"
 #include "student/stage02.h"
 #include "student/stage03.h"
 #include "student/stage04.h"
@@ -29,7 +30,7 @@ const char* to_string(RayNode::Kind kind) {
 Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight) {
     if (node) node->depth = depth, node->ray = ray, node->weight = weight;
     Hit hit;
-    if (!intersect_nearest(ray, scene, Interval{0, kInfinity}, hit)) {
+    if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) {
         if (node) node->local = scene.background, node->contribution = weight * scene.background;
         return scene.background;
     }
@@ -43,8 +44,17 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
 
     Color local;
     if (scene.features.shadows) {
+        // With a BVH and nothing transparent, a shadow ray only asks whether anything is in the
+        // way: stage 06's any-hit query, which gives what light_transmittance would, faster.
+        const bool any_hit_shadows = uses_bvh(scene) && !scene.features.refraction;
         auto visibility = [&](std::size_t light, const LightSample& sample) {
-            const Color transmittance = light_transmittance(scene, at, sample);
+            Color transmittance;
+            if (any_hit_shadows) {
+                const ShadowRay shadow = shadow_ray(at, sample);
+                transmittance = Color(bvh_intersect_any(scene, shadow.ray, shadow.t_range) ? 0.0f : 1.0f);
+            } else {
+                transmittance = light_transmittance(scene, at, sample);
+            }
             if (node) {
                 // The debugger also names the first surface in the way (framework's own query).
                 ShadowRecord record;
@@ -53,7 +63,7 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
                 record.ray = shadow.ray, record.t_range = shadow.t_range;
                 record.transmittance = transmittance;
                 Hit blocker;
-                if (intersect_nearest(shadow.ray, scene, shadow.t_range, blocker))
+                if (nearest_hit(scene, shadow.ray, shadow.t_range, blocker))
                     record.blocked_by = blocker.primitive, record.blocked_t = blocker.t;
                 node->shadows.push_back(record);
             }

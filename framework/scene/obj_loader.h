@@ -1,40 +1,76 @@
-// Reading triangle meshes from Wavefront OBJ files for "mesh" surfaces (docs/scene-format.md).
+// Reading triangle meshes from Wavefront OBJ files (and their MTL material libraries) for "mesh"
+// surfaces (docs/scene-format.md).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/real.h"
+#include "scene/scene.h"
 
 namespace rt {
 
-// A mistake in an OBJ file. what() is one line, `<what is wrong>; <how to fix it>`, starting
-// with `mesh "<name>"` and, where known, the OBJ line. The scene loader prefixes it with the
-// scene file position of the mesh's "file" value.
+// A mistake in an OBJ or MTL file. what() is one line, `<what is wrong>; <how to fix it>`,
+// starting with `mesh "<name>"` and, where known, the OBJ line (`mesh "m.obj" line 7: ...`) or
+// the MTL file and line (`mesh "m.obj": "m.mtl" line 3: ...`). The scene loader prefixes it with
+// the scene file position of the mesh's "file" value.
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-struct ObjMesh {
-    std::vector<Vec3> vertices;  // already scaled, then translated
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    // Per triangle: index into material_names of the OBJ `usemtl` in effect, or -1 for none.
-    std::vector<int> triangle_material;
-    std::vector<std::string> material_names;
+// One `usemtl` name of an OBJ file.
+struct ObjMaterial {
+    std::string name;          // as written after usemtl
+    std::size_t line = 0;      // the OBJ line of its first usemtl
+    bool defined = false;      // found in one of the file's mtllib libraries (and then read)
+    Material material;         // its MTL definition when `defined` (`material.name` left empty)
 };
 
+struct ObjMesh {
+    // One entry per distinct (position, normal, uv) combination the faces use, in order of
+    // first use: OBJ indexes the three separately, a renderer wants one index per corner.
+    std::vector<Vec3> vertices;  // already scaled, then translated
+    std::vector<Vec3> normals;   // parallel to vertices, or empty when no face has a `vn`;
+                                 // unit length, (0, 0, 0) for a corner without one
+    std::vector<Vec2> uvs;       // parallel to vertices, or empty when no face has a `vt`;
+                                 // (0, 0) for a corner without one
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise from outside
+    // Per triangle: index into `materials` of the usemtl in effect, or -1 for none.
+    std::vector<int> triangle_material;
+    std::vector<ObjMaterial> materials;  // distinct usemtl names, first use first
+    bool has_mtllib = false;              // the file names at least one material library
+};
+
+// Decides whether the scene itself supplies the material for a usemtl name (then the .mtl
+// definition is neither needed nor read).
+using SceneMaterialLookup = std::function<bool(const std::string& usemtl_name)>;
+
 // Loads `file` with tinyobjloader (polygons triangulated), then maps every vertex p to
-// p * scale + translate. `display_name` is how messages name the file (as the scene wrote it).
+// p * scale + translate and every normal n to normalize(n / scale); a scale that mirrors (an odd
+// number of negative factors) also reverses each triangle's winding, so outward stays outward.
+// `display_name` is how messages name the file (as the scene wrote it).
+//
+// Materials: for every usemtl name that `scene_has` does not claim, the file's mtllib libraries
+// (relative to the OBJ's folder) are read and must define it; names in a file without any mtllib
+// line are left undefined (the scene then uses the surface's material).
+//
 // Throws ObjError for a missing or unreadable file, data tinyobjloader would drop or misread
-// (face indices out of range, faces with fewer than 3 vertices, coordinates that are not finite
-// numbers), no triangles at all, or more than `max_triangles` triangles.
+// (indices 0 or out of range for v, vt or vn, faces with fewer than 3 vertices, coordinates that
+// are not finite numbers, malformed face entries), a missing or malformed material library that
+// is needed, a usemtl name it does not define, no triangles at all, or more than `max_triangles`
+// triangles.
 ObjMesh load_obj(const std::filesystem::path& file, const std::string& display_name, Vec3 scale,
-                 Vec3 translate, std::size_t max_triangles);
+                 Vec3 translate, std::size_t max_triangles, const SceneMaterialLookup& scene_has = {});
+
+// The normal `n` of a surface scaled by `scale` (per axis): normalize(n / scale), computed in
+// double; the zero vector stays zero (it marks "no vertex normal", see Scene::normals).
+Vec3 scale_normal(Vec3 n, Vec3 scale);
 
 }  // namespace rt

@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <cmath>
+
 namespace rt {
 
 int Scene::primitive_id(Kind kind, std::size_t index) const {
@@ -68,6 +70,34 @@ std::string Features::describe() const {
     return s;
 }
 
+Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv) {
+    Vec3 a, b, c;
+    scene.triangle_vertices(triangle, a, b, c);
+    Vec3 geometric = glm::cross(b - a, c - a);
+    Real geometric_length = glm::length(geometric);
+    if (geometric_length > 0 && std::isfinite(geometric_length)) geometric /= geometric_length;
+    else geometric = Vec3(0);
+    if (scene.normals.empty()) return geometric;
+
+    const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;
+    const Vec3 n0 = scene.normals[v[0]], n1 = scene.normals[v[1]], n2 = scene.normals[v[2]];
+    const Vec3 zero(0);
+    if (n0 == zero || n1 == zero || n2 == zero) return geometric;
+    const Real beta = barycentric_uv.x, gamma = barycentric_uv.y, alpha = 1 - beta - gamma;
+    Vec3 n = alpha * n0 + beta * n1 + gamma * n2;
+    Real length = glm::length(n);
+    if (!(length > 0) || !std::isfinite(length)) return geometric;
+    n /= length;
+    return glm::dot(n, geometric) < 0 ? -n : n;
+}
+
+Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv) {
+    if (scene.uvs.empty()) return Vec2(0);
+    const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;
+    const Real beta = barycentric_uv.x, gamma = barycentric_uv.y, alpha = 1 - beta - gamma;
+    return alpha * scene.uvs[v[0]] + beta * scene.uvs[v[1]] + gamma * scene.uvs[v[2]];
+}
+
 const char* to_string(RenderMode mode) {
     switch (mode) {
         case RenderMode::Directions: return "directions";
@@ -75,8 +105,13 @@ const char* to_string(RenderMode mode) {
         case RenderMode::Depth: return "depth";
         case RenderMode::PrimitiveId: return "primitive";
         case RenderMode::Shaded: return "shaded";
+        case RenderMode::BvhVisits: return "bvh_visits";
     }
     return "?";
+}
+
+const char* to_string(Accelerator accelerator) {
+    return accelerator == Accelerator::Bvh ? "bvh" : "none";
 }
 
 }  // namespace rt

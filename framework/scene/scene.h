@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/bvh.h"
 #include "camera/camera.h"
 
 namespace rt {
@@ -71,7 +72,11 @@ struct Features {
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
 };
 
-enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded };
+enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded, BvhVisits };
+
+// How nearest-hit queries find the surface: stage 02's loop over every primitive, or the stage 06
+// BVH (built once after loading, by build_acceleration in render/accelerate.h).
+enum class Accelerator { None, Bvh };
 
 struct Scene {
     std::string source;  // the file it was loaded from, for messages
@@ -83,16 +88,25 @@ struct Scene {
     int max_depth = 5;       // bounces of reflected/refracted rays; 0: direct light only
     bool shadows = false;    // trace shadow rays (stage 04)
     bool fresnel = false;    // Schlick-weighted reflection on transmissive materials (stage 05)
+    Accelerator accelerator = Accelerator::None;
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
     std::vector<Box> boxes;
     std::vector<Vec3> vertices;
+    // Per-vertex shading data, each either empty (no surface in the scene has any) or parallel
+    // to `vertices`. A vertex without a normal (single triangles, meshes without normals) holds
+    // the zero vector, which shading_normal reads as "use the geometric normal"; a vertex
+    // without texture coordinates holds uv (0, 0). Read them through shading_normal and
+    // surface_uv below.
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
     std::vector<Triangle> triangles;
     std::vector<Material> materials;
     std::vector<Light> lights;
 
     Features features;  // filled by update_features()
+    Bvh bvh;            // built by build_acceleration when accelerator == Bvh
 
     // Global primitive ids number spheres first, then planes, triangles and boxes.
     enum class Kind { Sphere, Plane, Triangle, Box };
@@ -110,6 +124,19 @@ struct Scene {
     void update_features();
 };
 
+// The unit shading normal of triangle `triangle` at barycentric coordinates `barycentric_uv`
+// = (beta, gamma) (Hit::uv): its vertex normals interpolated and normalised, turned if needed
+// to the side of the geometric normal normalize(cross(b - a, c - a)), so it can stand in for
+// the outward normal. It is the geometric normal when the scene has no vertex normals, a corner
+// has none (zero) or the interpolation cancels out; the zero vector for a degenerate triangle
+// without vertex normals.
+Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv);
+
+// The texture coordinates of triangle `triangle` at barycentric coordinates `barycentric_uv`:
+// its vertex uvs interpolated, (0, 0) where the scene has none (docs/scene-format.md).
+Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv);
+
 const char* to_string(RenderMode mode);
+const char* to_string(Accelerator accelerator);
 
 }  // namespace rt

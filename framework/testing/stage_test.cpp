@@ -2,6 +2,7 @@
 
 #include "core/not_implemented.h"
 #include "image/compare.h"
+#include "render/accelerate.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -24,6 +25,7 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
     Scene scene;
     try {
         scene = load_scene(scene_file);
+        build_acceleration(scene);
     } catch (const std::exception& e) {
         ADD_FAILURE() << e.what();
         return;

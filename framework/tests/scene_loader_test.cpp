@@ -9,7 +9,10 @@
 #include <set>
 #include <string>
 
+#include "geometry/procedural_mesh.h"
+#include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
+#include "temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -17,29 +20,7 @@ namespace {
 
 const fs::path kBadScenes = fs::path(RT_SOURCE_DIR) / "framework" / "tests" / "bad_scenes";
 
-// A folder under the system temp dir, removed at the end of the test.
-class TempDir {
-public:
-    explicit TempDir(const std::string& name)
-        : path_(fs::temp_directory_path() / ("rt-scene-test-" + name + "-" +
-                                             std::to_string(std::random_device{}()))) {
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    const fs::path& path() const { return path_; }
-    fs::path write(const std::string& name, const std::string& text) const {
-        fs::path file = path_ / name;
-        fs::create_directories(file.parent_path());
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
-    }
-
-private:
-    fs::path path_;
-};
+using rt::testing::TempDir;
 
 rt::Scene parse(const std::string& text, const fs::path& base_dir = fs::path()) {
     return rt::parse_scene(text, "test.json", base_dir);
@@ -221,6 +202,86 @@ TEST(SceneLoader, MeshSurfaceLoadsAnObj) {
     EXPECT_TRUE(scene.features.triangles);
 }
 
+// A procedural mesh is the generator's mesh, scaled then translated, with its normals and uvs.
+TEST(SceneLoader, ProceduralMeshes) {
+    rt::Scene scene = parse(R"({
+      "materials": [{"name": "a"}, {"name": "b"}],
+      "surfaces": [
+        {"type": "sphere", "center": [0, 0, 0], "radius": 1},
+        {"type": "mesh", "procedural": "torus", "triangles": 2000, "seed": 3, "material": "b",
+         "scale": [2, 1, 1], "translate": [0, 5, 0]},
+        {"type": "mesh", "procedural": "soup", "triangles": 7, "seed": 9}
+      ]})");
+    rt::TriangleMesh torus = rt::make_procedural_mesh("torus", 2000, 3);
+    rt::TriangleMesh soup = rt::make_procedural_mesh("soup", 7, 9);
+    ASSERT_EQ(scene.triangles.size(), torus.triangles.size() + 7);
+    ASSERT_EQ(scene.vertices.size(), torus.vertices.size() + soup.vertices.size());
+    EXPECT_GE(torus.triangles.size(), 2000u);
+    for (std::size_t v = 0; v < torus.vertices.size(); ++v) {
+        const rt::Vec3& p = torus.vertices[v];
+        ASSERT_EQ(scene.vertices[v], rt::Vec3(p.x * 2, p.y + 5, p.z)) << v;
+        ASSERT_EQ(scene.uvs[v], torus.uvs[v]);
+        ASSERT_EQ(scene.normals[v], rt::scale_normal(torus.normals[v], rt::Vec3(2, 1, 1)));
+    }
+    for (std::size_t i = 0; i < torus.triangles.size(); ++i) {
+        ASSERT_EQ(scene.triangles[i].v, torus.triangles[i]);
+        ASSERT_EQ(scene.triangles[i].material, 1);
+    }
+    const std::size_t first_soup_vertex = torus.vertices.size();
+    EXPECT_EQ(scene.vertices[first_soup_vertex], soup.vertices[0]);
+    EXPECT_EQ(scene.normals[first_soup_vertex], rt::Vec3(0));  // no normals: the sentinel
+    EXPECT_EQ(scene.triangles.back().material, 0);
+    EXPECT_TRUE(scene.features.triangles);
+}
+
+// A mirroring scale turns the triangles around, so a closed mesh still faces outwards.
+TEST(SceneLoader, MirroredProceduralMeshStillFacesOutwards) {
+    rt::Scene scene = parse(R"({"surfaces": [
+        {"type": "mesh", "procedural": "icosphere", "triangles": 80, "scale": [-1, 2, 1]}]})");
+    double volume = 0;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+        rt::Vec3 a, b, c;
+        scene.triangle_vertices(i, a, b, c);
+        volume += glm::dot(glm::dvec3(a), glm::cross(glm::dvec3(b), glm::dvec3(c))) / 6;
+        rt::Vec3 n = rt::shading_normal(scene, i, {0.2f, 0.2f});
+        EXPECT_GT(glm::dot(n, a + b + c), 0) << i;
+    }
+    EXPECT_GT(volume, 0);
+}
+
+// The column of the first `marker` in `text` (1-based; the texts below are one line).
+std::string at(const std::string& text, const std::string& marker) {
+    return "test.json:1:" + std::to_string(text.find(marker) + 1) + ": error: ";
+}
+
+TEST(SceneLoader, ProceduralMeshMistakes) {
+    const std::string mesh = R"({"surfaces": [{"type": "mesh", )";
+    const std::pair<std::string, std::string> cases[] = {
+        {R"("file": "m.obj", "procedural": "torus", "triangles": 10}]})", "\"procedural\"|a mesh has \"file\" or \"procedural\", not both"},
+        {R"("scale": 2}]})", "{\"type\": \"mesh\"|a mesh needs \"file\" or \"procedural\""},
+        {R"("procedural": "cube", "triangles": 10}]})", "\"cube\"|unknown \"procedural\" \"cube\"; use \"icosphere\", \"torus\", \"terrain\" or \"soup\""},
+        {R"("procedural": "Torus", "triangles": 10}]})", "\"Torus\"|unknown \"procedural\" \"Torus\"; did you mean \"torus\"?"},
+        {R"("procedural": "torus"}]})", "{\"type\": \"mesh\"|a procedural mesh needs \"triangles\""},
+        {R"("procedural": "soup", "triangles": 0}]})", "0}|\"triangles\" must be between 1 and 20000000, got 0"},
+        {R"("procedural": "soup", "triangles": 2.5}]})", "2.5|\"triangles\" must be a whole number"},
+        {R"("procedural": "soup", "triangles": 20000001}]})", "20000001|\"triangles\" must be between 1 and 20000000"},
+        {R"("procedural": "icosphere", "triangles": 6000000}]})", "6000000|the scene would have more than 20000000 triangles (this icosphere has 20971520)"},
+        {R"("procedural": "soup", "triangles": 5, "seed": -1}]})", "-1|\"seed\" must be between 0 and 9007199254740992"},
+        {R"("procedural": "soup", "triangles": 5, "seed": "x"}]})", "\"x\"|\"seed\" must be a number"},
+        {R"("file": "m.obj", "triangles": 5}]})", "\"triangles\"|\"triangles\" is only for procedural meshes"},
+        {R"("file": "m.obj", "seed": 5}]})", "\"seed\"|\"seed\" is only for procedural meshes"},
+        {R"("procedural": "soup", "triangles": 5, "scale": 3e38, "translate": [3e38, 0, 0]}]})", "3e38,|the mesh is too large to represent"},
+        {R"("procedural": "soup", "triangles": 5, "count": 3}]})", "\"count\"|unknown key \"count\" in a mesh"},
+    };
+    for (const auto& [rest, expected] : cases) {
+        const std::string text = mesh + rest;
+        const std::size_t bar = expected.find('|');
+        const std::string want = at(text, expected.substr(0, bar)) + expected.substr(bar + 1);
+        std::string message = error_of(text);
+        EXPECT_EQ(message.rfind(want, 0), 0u) << "scene: " << text << "\n  got: " << message << "\n want: " << want;
+    }
+}
+
 // ---- malformed scenes ----------------------------------------------------------------------
 
 struct BadScene {
@@ -273,6 +334,8 @@ const BadScene kBadScenesTable[] = {
     {"39-nesting-too-deep", 1, 113, R"(nested more than 100 deep)"},
     {"40-negative-shininess", 2, 48, R"("shininess" must be >= 0, got -5)"},
     {"41-shadows-not-a-boolean", 2, 43, R"("shadows" must be true or false, got the string "yes")"},
+    {"42-unknown-procedural-mesh", 3, 36, R"(unknown "procedural" "donut"; use "icosphere", "torus", "terrain" or "soup")"},
+    {"43-procedural-mesh-too-large", 3, 60, R"("triangles" must be between 1 and 20000000, got 1e9)"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};

@@ -1,0 +1,35 @@
+// Which nearest-hit query the renderer uses, and building the stage 06 BVH of a scene.
+//
+// A scene file asks for a BVH with "render": {"accelerator": "bvh"}; every other scene keeps
+// stage 02's loop over all primitives, so stages 01-05 never depend on stage 06.
+#pragma once
+
+#include <string>
+
+#include "student/stage06.h"
+
+namespace rt {
+
+struct AccelerationReport {
+    bool requested = false;  // the scene asked for a BVH
+    bool built = false;      // and build_bvh gave a valid tree
+    std::string problem;     // why not, when requested but not built
+    double build_ms = 0;
+    std::size_t primitives = 0, nodes = 0;
+    int depth = 0;
+};
+
+// Builds scene.bvh when scene.accelerator == Accelerator::Bvh, and checks it (validate_bvh).
+// A stubbed or invalid build leaves scene.bvh empty, so rendering falls back to stage 02's loop
+// (same image, only slower) after one message on stderr naming the problem and the handout.
+AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options = {});
+
+// The nearest hit: the BVH (stage 06) when the scene has one, else stage 02's intersect_nearest.
+bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit);
+
+// True when the scene's queries go through a built BVH.
+inline bool uses_bvh(const Scene& scene) {
+    return scene.accelerator == Accelerator::Bvh && scene.bvh.built();
+}
+
+}  // namespace rt

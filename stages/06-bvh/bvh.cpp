@@ -1,0 +1,308 @@
+// Stage 06: a bounding volume hierarchy. Handout: stages/06-bvh/README.md
+// The node layout is framework/accel/bvh.h; the contracts are in framework/student/stage06.h.
+//
+// You edit only this file. Tests: ctest --test-dir build -L stage06
+// Check a tree any time with validate_bvh (framework/accel/bvh.h): it names the first problem.
+#include <algorithm>
+
+#include "core/not_implemented.h"
+#include "student/stage06.h"
+
+namespace rt {
+
+namespace {
+
+// BEGIN SOLUTION
+// gamma(3) of Higham / pbrt: a bound on the relative rounding error of the slab distances.
+constexpr Real kSlabGrowth = Real(1) + 2 * (3 * std::numeric_limits<Real>::epsilon() / 2) /
+                                           (1 - 3 * std::numeric_limits<Real>::epsilon() / 2);
+
+// A ray prepared for many slab tests: 1 / direction, and for each axis whether the near side of
+// a box is its min (direction >= 0) or its max. Choosing by sign, rather than swapping t0 and
+// t1 after computing them, keeps a NaN (0 * inf) in the slot where it is ignored.
+struct SlabRay {
+    Vec3 origin, inv_direction;
+    bool negative[3];
+
+    SlabRay(const Ray& ray, const Vec3& inv) : origin(ray.origin), inv_direction(inv) {
+        for (int axis = 0; axis < 3; ++axis) negative[axis] = inv[axis] < 0;
+    }
+
+    // No early exit and no swaps: the compiler turns this into straight-line min/max code. The
+    // exit distance is widened once, at the end (rounding is monotonic, so widening the
+    // smallest exit is the same as widening each).
+    bool hits(const BvhNode& node, Interval t_range, Real& t_entry) const {
+        Real t0 = t_range.min, t1 = kInfinity;
+        for (int axis = 0; axis < 3; ++axis) {
+            const Real lo = negative[axis] ? node.max[axis] : node.min[axis];
+            const Real hi = negative[axis] ? node.min[axis] : node.max[axis];
+            const Real near = (lo - origin[axis]) * inv_direction[axis];
+            const Real far = (hi - origin[axis]) * inv_direction[axis];
+            // A NaN (origin on the slab's plane, direction parallel to it) compares false and
+            // leaves the range as it was.
+            t0 = near > t0 ? near : t0;
+            t1 = far < t1 ? far : t1;
+        }
+        t1 *= kSlabGrowth;
+        t1 = t_range.max < t1 ? t_range.max : t1;
+        t_entry = t0;
+        return t0 <= t1;
+    }
+};
+
+// Filled per node for the bins in use only (no default initialisers: a node of a few
+// primitives should not pay for clearing kMaxBins bins).
+struct Bin {
+    Vec3f min, max;
+    std::uint32_t count;
+};
+// STUB
+// // Helper functions of your own, if you want them, go here.
+// END SOLUTION
+
+}  // namespace
+
+// Try every boundary between bins on every axis; keep the cheapest by the SAH cost model.
+SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin,
+                        std::size_t end, const BvhBuildOptions& options) {
+    // BEGIN SOLUTION
+    Aabb bounds, centroids;
+    for (std::size_t i = begin; i < end; ++i) {
+        bounds.grow(prims[i].bounds);
+        centroids.grow(prims[i].centroid);
+    }
+    const float area = bounds.surface_area();
+    const float inv_area = area > 0 ? 1 / area : 0;
+    const int bins = std::clamp(options.bins, 2, kMaxBins);
+
+    // All three axes binned in one pass over the primitives.
+    Bin bin[3][kMaxBins];
+    bool spread[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        spread[axis] = centroids.max[axis] > centroids.min[axis];
+        for (int k = 0; k < bins; ++k) bin[axis][k] = Bin{Aabb{}.min, Aabb{}.max, 0};
+    }
+    for (std::size_t i = begin; i < end; ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!spread[axis]) continue;
+            Bin& b = bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis],
+                                      centroids.max[axis], bins)];
+            b.min = glm::min(b.min, prims[i].bounds.min);
+            b.max = glm::max(b.max, prims[i].bounds.max);
+            ++b.count;
+        }
+
+    SahSplit best;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!spread[axis]) continue;
+        // Right-hand sides of every boundary k (bins k .. bins-1), swept from the right.
+        float right_area[kMaxBins];
+        std::uint32_t right_count[kMaxBins];
+        Aabb box;
+        std::uint32_t count = 0;
+        for (int k = bins - 1; k >= 1; --k) {
+            box.grow(Aabb{bin[axis][k].min, bin[axis][k].max});
+            count += bin[axis][k].count;
+            right_area[k] = box.surface_area();
+            right_count[k] = count;
+        }
+        box = Aabb{};
+        count = 0;
+        for (int k = 1; k < bins; ++k) {
+            box.grow(Aabb{bin[axis][k - 1].min, bin[axis][k - 1].max});
+            count += bin[axis][k - 1].count;
+            if (count == 0 || right_count[k] == 0) continue;
+            const float cost =
+                options.traversal_cost +
+                (box.surface_area() * float(count) + right_area[k] * float(right_count[k])) *
+                    inv_area;
+            if (cost < best.cost) best.axis = axis, best.bin = k, best.cost = cost;
+        }
+    }
+    if (best.axis >= 0) {  // the two sides' boxes and counts, from the chosen axis's bins
+        for (int k = 0; k < bins; ++k) {
+            const Bin& b = bin[best.axis][k];
+            if (b.count == 0) continue;
+            (k < best.bin ? best.left_bounds : best.right_bounds).grow(Aabb{b.min, b.max});
+            (k < best.bin ? best.left_count : best.right_count) += b.count;
+        }
+    }
+    return best;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#the-surface-area-heuristic");
+    // return {};
+    // END SOLUTION
+}
+
+// Top-down: split while the SAH says splitting pays, children stored next to each other.
+void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh& bvh) {
+    // BEGIN SOLUTION
+    bvh = Bvh{};
+    if (prims.empty()) return;
+    bvh.nodes.reserve(2 * prims.size());
+    bvh.primitives.resize(prims.size());
+
+    Aabb root_bounds;
+    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
+    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
+
+    // Work list instead of recursion: a degenerate mesh may be deep.
+    struct Task {
+        std::uint32_t node;
+        std::uint32_t begin, end;
+        int depth;
+    };
+    std::vector<Task> tasks{{0, 0, std::uint32_t(prims.size()), 1}};
+    while (!tasks.empty()) {
+        const Task task = tasks.back();
+        tasks.pop_back();
+        const std::uint32_t count = task.end - task.begin;
+        SahSplit split;
+        if (count > std::uint32_t(options.max_leaf_size) && task.depth < kBvhMaxDepth)
+            split = find_sah_split(prims, task.begin, task.end, options);
+        if (split.axis < 0 || split.cost >= float(count)) {  // a leaf
+            for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
+            bvh.nodes[task.node].first = task.begin;
+            bvh.nodes[task.node].count = count;
+            continue;
+        }
+        // Partition by the very same bin computation the split was chosen with.
+        Aabb centroids;
+        for (std::uint32_t i = task.begin; i < task.end; ++i) centroids.grow(prims[i].centroid);
+        const int axis = split.axis;
+        const int bins = std::clamp(options.bins, 2, kMaxBins);
+        const auto middle = std::partition(
+            prims.begin() + task.begin, prims.begin() + task.end, [&](const BvhPrimitive& p) {
+                return bin_of(p.centroid[axis], centroids.min[axis], centroids.max[axis], bins) <
+                       split.bin;
+            });
+        const std::uint32_t mid = std::uint32_t(middle - prims.begin());
+
+        const std::uint32_t left = std::uint32_t(bvh.nodes.size());
+        bvh.nodes.push_back(BvhNode{split.left_bounds.min, 0, split.left_bounds.max, 0});
+        bvh.nodes.push_back(BvhNode{split.right_bounds.min, 0, split.right_bounds.max, 0});
+        bvh.nodes[task.node].first = left;
+        bvh.nodes[task.node].count = 0;
+        tasks.push_back({left + 1, mid, task.end, task.depth + 1});
+        tasks.push_back({left, task.begin, mid, task.depth + 1});
+    }
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#building-the-tree");
+    // END SOLUTION
+}
+
+// Slab test: the ray is inside the box where it is inside all three slabs at once.
+bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_direction,
+                    Interval t_range, Real& t_entry) {
+    // BEGIN SOLUTION
+    return SlabRay(ray, inv_direction).hits(node, t_range, t_entry);
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#ray-box-slab-test");
+    // return false;
+    // END SOLUTION
+}
+
+// Depth-first, nearer child first, skipping whatever starts beyond the nearest hit so far.
+bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit,
+                           BvhStats* stats) {
+    // BEGIN SOLUTION
+    bool found = false;
+    const std::uint32_t first_plane = std::uint32_t(scene.spheres.size());
+    for (std::uint32_t i = 0; i < scene.planes.size(); ++i)
+        if (intersect_primitive(scene, first_plane + i, ray, t_range, hit)) {
+            found = true;
+            t_range.max = hit.t;
+        }
+    if (!scene.bvh.built()) return found;
+
+    const std::vector<BvhNode>& nodes = scene.bvh.nodes;
+    const SlabRay slab(ray, Real(1) / ray.direction);
+    std::uint32_t visited = 1, tested = 0;
+    struct Entry {
+        std::uint32_t node;
+        Real t;
+    };
+    Entry stack[kBvhMaxDepth];
+    int top = 0;
+    Real t_root;
+    if (slab.hits(nodes[0], t_range, t_root)) stack[top++] = {0, t_root};
+    while (top > 0) {
+        const Entry entry = stack[--top];
+        if (entry.t > t_range.max) continue;  // a nearer hit was found after it was pushed
+        const BvhNode* node = &nodes[entry.node];
+        while (!node->is_leaf()) {
+            const BvhNode* near = &nodes[node->first];
+            const BvhNode* far = near + 1;
+            Real t_near, t_far;
+            const bool hit_near = slab.hits(*near, t_range, t_near);
+            const bool hit_far = slab.hits(*far, t_range, t_far);
+            visited += 2;
+            if (hit_near && hit_far) {
+                if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
+                stack[top++] = {std::uint32_t(far - nodes.data()), t_far};
+                node = near;
+            } else if (hit_near) {
+                node = near;
+            } else if (hit_far) {
+                node = far;
+            } else {
+                node = nullptr;
+                break;
+            }
+        }
+        if (!node) continue;
+        for (std::uint32_t k = node->first; k < node->first + node->count; ++k) {
+            ++tested;
+            if (intersect_primitive(scene, scene.bvh.primitives[k], ray, t_range, hit)) {
+                found = true;
+                t_range.max = hit.t;
+            }
+        }
+    }
+    if (stats) stats->nodes_visited += visited, stats->primitives_tested += tested;
+    return found;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#nearest-hit-traversal");
+    // return false;
+    // END SOLUTION
+}
+
+// Any order will do: the first hit ends the search.
+bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, BvhStats* stats) {
+    // BEGIN SOLUTION
+    Hit scratch;
+    const std::uint32_t first_plane = std::uint32_t(scene.spheres.size());
+    for (std::uint32_t i = 0; i < scene.planes.size(); ++i)
+        if (intersect_primitive(scene, first_plane + i, ray, t_range, scratch)) return true;
+    if (!scene.bvh.built()) return false;
+
+    const std::vector<BvhNode>& nodes = scene.bvh.nodes;
+    const SlabRay slab(ray, Real(1) / ray.direction);
+    std::uint32_t visited = 1, tested = 0;
+    bool found = false;
+    std::uint32_t stack[kBvhMaxDepth + 1];  // depth-first: at most one pending sibling per level
+    int top = 0;
+    Real t;
+    if (slab.hits(nodes[0], t_range, t)) stack[top++] = 0;
+    while (top > 0 && !found) {
+        const BvhNode& node = nodes[stack[--top]];
+        if (node.is_leaf()) {
+            for (std::uint32_t k = node.first; k < node.first + node.count && !found; ++k) {
+                ++tested;
+                found = intersect_primitive(scene, scene.bvh.primitives[k], ray, t_range, scratch);
+            }
+            continue;
+        }
+        visited += 2;
+        for (std::uint32_t child = node.first; child < node.first + 2; ++child)
+            if (slab.hits(nodes[child], t_range, t)) stack[top++] = child;
+    }
+    if (stats) stats->nodes_visited += visited, stats->primitives_tested += tested;
+    return found;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#any-hit-queries");
+    // return false;
+    // END SOLUTION
+}
+
+}  // namespace rt

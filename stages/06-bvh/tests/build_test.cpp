@@ -1,0 +1,231 @@
+// Stage 06 build tests: the SAH split (checked against the cost model evaluated independently
+// here) and the invariants of whole trees (validate_bvh) over several meshes and hard inputs.
+#include <cmath>
+#include <cstring>
+
+#include "bvh_test_support.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+using bvh_test::Random;
+using bvh_test::scene_from_mesh;
+
+RT_TEST_SUITE(SahSplitTest);
+RT_TEST_SUITE(BuildTest);
+
+BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
+    BvhPrimitive p;
+    p.bounds = Aabb{lo, hi};
+    p.centroid = p.bounds.centre();
+    p.id = id;
+    return p;
+}
+
+// The SAH cost of putting bins [0, k) of `axis` left, computed from scratch, or +inf when a
+// side is empty.
+float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k, const BvhBuildOptions& o) {
+    Aabb all, centroids, left, right;
+    for (const auto& p : prims) all.grow(p.bounds), centroids.grow(p.centroid);
+    std::uint32_t n_left = 0, n_right = 0;
+    for (const auto& p : prims) {
+        if (bin_of(p.centroid[axis], centroids.min[axis], centroids.max[axis], o.bins) < k)
+            left.grow(p.bounds), ++n_left;
+        else
+            right.grow(p.bounds), ++n_right;
+    }
+    if (n_left == 0 || n_right == 0) return std::numeric_limits<float>::infinity();
+    return o.traversal_cost +
+           (left.surface_area() * float(n_left) + right.surface_area() * float(n_right)) / all.surface_area();
+}
+
+TEST_F(SahSplitTest, TwoClustersSplitBetweenThem) {
+    std::vector<BvhPrimitive> prims;
+    for (std::uint32_t i = 0; i < 8; ++i) {  // four small boxes near x = 0, four near x = 10
+        const float x = i < 4 ? float(i) * 0.1f : 10 + float(i) * 0.1f;
+        prims.push_back(box_primitive({x, 0, 0}, {x + 0.05f, 1, 1}, i));
+    }
+    const SahSplit split = find_sah_split(prims, 0, prims.size(), BvhBuildOptions{});
+    ASSERT_EQ(split.axis, 0) << "the clusters are apart along x";
+    EXPECT_EQ(split.left_count, 4u);
+    EXPECT_EQ(split.right_count, 4u);
+    EXPECT_LE(split.left_bounds.max.x, 1.0f);
+    EXPECT_GE(split.right_bounds.min.x, 10.0f);
+}
+
+TEST_F(SahSplitTest, CostIsTheMinimumOverAllBinBoundaries) {
+    Random random(6);
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<BvhPrimitive> prims;
+        const int n = 5 + trial * 7;
+        for (int i = 0; i < n; ++i) {
+            const Vec3 c = random.point(-1, 1) * Vec3(1, Real(0.5) + Real(trial % 3), Real(0.25));
+            const Vec3 h = random.point(Real(0.01), Real(0.2));
+            prims.push_back(box_primitive(Vec3f(c - h), Vec3f(c + h), std::uint32_t(i)));
+        }
+        BvhBuildOptions options;
+        options.bins = 4 + trial % 13;
+        const SahSplit split = find_sah_split(prims, 0, prims.size(), options);
+        float best = std::numeric_limits<float>::infinity();
+        int best_axis = -1, best_bin = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            for (int k = 1; k < options.bins; ++k) {
+                const float cost = reference_cost(prims, axis, k, options);
+                if (cost < best) best = cost, best_axis = axis, best_bin = k;
+            }
+        ASSERT_EQ(split.axis, best_axis) << "trial " << trial;
+        EXPECT_EQ(split.bin, best_bin) << "trial " << trial;
+        EXPECT_NEAR(split.cost, best, 1e-4f * best) << "trial " << trial;
+        EXPECT_EQ(split.left_count + split.right_count, std::uint32_t(n));
+    }
+}
+
+TEST_F(SahSplitTest, OnlyTheGivenRangeCounts) {
+    std::vector<BvhPrimitive> prims;
+    for (std::uint32_t i = 0; i < 10; ++i)
+        prims.push_back(box_primitive({float(i), 0, 0}, {float(i) + 0.5f, 1, 1}, i));
+    const SahSplit split = find_sah_split(prims, 2, 6, BvhBuildOptions{});
+    ASSERT_EQ(split.axis, 0);
+    EXPECT_EQ(split.left_count + split.right_count, 4u);
+    EXPECT_GE(split.left_bounds.min.x, 2.0f);
+    EXPECT_LE(split.right_bounds.max.x, 5.5f);
+}
+
+TEST_F(SahSplitTest, CoincidentCentroidsHaveNoSplit) {
+    std::vector<BvhPrimitive> prims;
+    for (std::uint32_t i = 0; i < 6; ++i)  // nested boxes around one centre
+        prims.push_back(box_primitive(Vec3f(-float(i + 1)), Vec3f(float(i + 1)), i));
+    EXPECT_EQ(find_sah_split(prims, 0, prims.size(), BvhBuildOptions{}).axis, -1);
+}
+
+TEST_F(SahSplitTest, SkipsAxesWithoutSpread) {
+    std::vector<BvhPrimitive> prims;  // all centroids on a line along z
+    for (std::uint32_t i = 0; i < 9; ++i)
+        prims.push_back(box_primitive({-1, -1, float(i)}, {1, 1, float(i) + 0.2f}, i));
+    const SahSplit split = find_sah_split(prims, 0, prims.size(), BvhBuildOptions{});
+    EXPECT_EQ(split.axis, 2);
+}
+
+void expect_valid_tree(const Scene& scene, const BvhBuildOptions& options, const char* what) {
+    const std::vector<BvhPrimitive> input = bvh_primitives(scene);
+    Bvh bvh;
+    build_bvh(input, options, bvh);
+    EXPECT_EQ(validate_bvh(bvh, input), "") << what;
+    // Leaves hold at most max_leaf_size primitives unless their centroids could not be split.
+    for (const BvhNode& node : bvh.nodes) {
+        if (!node.is_leaf() || node.count <= std::uint32_t(options.max_leaf_size)) continue;
+        Aabb centroids;
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+            for (const BvhPrimitive& p : input)
+                if (p.id == bvh.primitives[k]) centroids.grow(p.centroid);
+        const bool splittable = glm::any(glm::lessThan(centroids.min, centroids.max));
+        // A splittable oversize leaf is allowed only where the SAH says a leaf is cheaper.
+        if (splittable) {
+            std::vector<BvhPrimitive> leaf;
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+                for (const BvhPrimitive& p : input)
+                    if (p.id == bvh.primitives[k]) leaf.push_back(p);
+            EXPECT_GE(find_sah_split(leaf, 0, leaf.size(), options).cost, float(node.count))
+                << what << ": a leaf of " << node.count << " primitives that a split would make cheaper";
+        }
+    }
+}
+
+TEST_F(BuildTest, TreesOverProceduralMeshesAreValid) {
+    expect_valid_tree(scene_from_mesh(make_icosphere(3)), {}, "icosphere");
+    expect_valid_tree(scene_from_mesh(make_torus(40, 20)), {}, "torus");
+    expect_valid_tree(scene_from_mesh(make_terrain(30, 30, 4)), {}, "terrain");
+    expect_valid_tree(scene_from_mesh(make_triangle_soup(2000, 9)), {}, "soup");
+    BvhBuildOptions options;
+    options.max_leaf_size = 1, options.bins = 2;
+    expect_valid_tree(scene_from_mesh(make_torus(30, 12)), options, "torus, 2 bins, leaves of 1");
+    options.max_leaf_size = 16, options.bins = 64, options.traversal_cost = 4;
+    expect_valid_tree(scene_from_mesh(make_icosphere(2)), options, "icosphere, 64 bins, leaves of 16");
+}
+
+TEST_F(BuildTest, SmallAndEmptyInputs) {
+    Bvh bvh;
+    build_bvh({}, BvhBuildOptions{}, bvh);
+    EXPECT_TRUE(bvh.nodes.empty()) << "no primitives: no nodes";
+    for (std::uint32_t n : {1u, 2u, 3u, 5u}) {
+        std::vector<BvhPrimitive> prims;
+        for (std::uint32_t i = 0; i < n; ++i)
+            prims.push_back(box_primitive({10.0f * float(i), 0, 0}, {10.0f * float(i) + 1, 1, 1}, 100 + i));
+        BvhBuildOptions options;  // boxes far apart: the SAH splits down to single primitives
+        options.max_leaf_size = 1;
+        build_bvh(prims, options, bvh);
+        EXPECT_EQ(validate_bvh(bvh, prims), "") << n << " primitives";
+        EXPECT_EQ(bvh.nodes.size(), 2 * n - 1) << n << " primitives, leaves of one";
+    }
+}
+
+TEST_F(BuildTest, DegenerateInputs) {
+    // Identical triangles: nothing to split, one leaf holds them all.
+    Scene same;
+    same.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < 50; ++i) same.triangles.push_back(Triangle{{0, 1, 2}, 0});
+    expect_valid_tree(same, {}, "50 identical triangles");
+    // Sliver triangles all in one plane, and a mix of sizes over ten orders of magnitude.
+    Scene flat;
+    Random random(3);
+    for (std::uint32_t i = 0; i < 300; ++i) {
+        const Real s = std::pow(Real(10), random.uniform(-5, 5));
+        const Vec3 c = random.point(-100, 100);
+        flat.vertices.push_back({c.x, 0, c.z});
+        flat.vertices.push_back({c.x + s, 0, c.z});
+        flat.vertices.push_back({c.x, 0, c.z + s * Real(1e-3)});
+        flat.triangles.push_back(Triangle{{3 * i, 3 * i + 1, 3 * i + 2}, 0});
+    }
+    expect_valid_tree(flat, {}, "flat slivers of many scales");
+}
+
+TEST_F(BuildTest, DepthIsBoundedOnPathologicalSpacing) {
+    // Centroids at 2^i: binning peels one primitive per level, which would go 100 deep.
+    std::vector<BvhPrimitive> prims;
+    for (std::uint32_t i = 0; i < 100; ++i) {
+        const float x = std::ldexp(1.0f, int(i));
+        prims.push_back(box_primitive({x, 0, 0}, {x, 1, 1}, i));
+    }
+    BvhBuildOptions options;
+    options.max_leaf_size = 1;
+    Bvh bvh;
+    build_bvh(prims, options, bvh);
+    EXPECT_EQ(validate_bvh(bvh, prims), "");
+    EXPECT_LE(bvh_depth(bvh), kBvhMaxDepth);
+}
+
+TEST_F(BuildTest, TreeIsDeterministic) {
+    const Scene scene = scene_from_mesh(make_terrain(40, 40, 2));
+    Bvh a, b;
+    build_bvh(bvh_primitives(scene), {}, a);
+    build_bvh(bvh_primitives(scene), {}, b);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)));
+    EXPECT_EQ(a.primitives, b.primitives);
+}
+
+TEST_F(BuildTest, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
+    // The expected cost of a ray through the tree (sum over nodes of area ratio times work): far
+    // below testing every primitive, and no worse with 16 bins than with 2.
+    const Scene scene = scene_from_mesh(make_terrain(60, 60, 5));
+    const std::vector<BvhPrimitive> input = bvh_primitives(scene);
+    Bvh sah;
+    build_bvh(input, {}, sah);
+    auto expected_cost = [](const Bvh& bvh) {
+        const float root = bvh.nodes[0].bounds().surface_area();
+        double cost = 0;
+        for (const BvhNode& node : bvh.nodes)
+            cost += double(node.bounds().surface_area() / root) * (node.is_leaf() ? double(node.count) : 1.0);
+        return cost;
+    };
+    EXPECT_LT(expected_cost(sah), 0.1 * double(input.size())) << "the SAH tree is barely better than no tree";
+    BvhBuildOptions two_bins;
+    two_bins.bins = 2;
+    Bvh coarse;
+    build_bvh(input, two_bins, coarse);
+    EXPECT_LE(expected_cost(sah), expected_cost(coarse)) << "16 bins should do at least as well as 2";
+}
+
+}  // namespace
+}  // namespace rt
