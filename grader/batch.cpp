@@ -112,10 +112,13 @@ int run_package(const fs::path& source, const fs::path& out, std::ostream& log) 
         if (it->is_directory()) fs::create_directories(src / rel);
         else if (it->is_regular_file()) fs::copy_file(it->path(), src / rel);
     }
+    // RT_AUTOGRADER_ROOT (default /autograder) lets the tests run both scripts in a folder that
+    // stands in for Gradescope's layout (grader/tests/adversarial.sh, case package_run).
     write_text(stage / "setup.sh", R"SH(#!/usr/bin/env bash
 # Gradescope setup (Ubuntu base image, run once as root when the autograder is built).
 set -euo pipefail
-cd /autograder/source
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source"
 bash scripts/install-deps.sh
 # Ubuntu 22.04 ships CMake 3.22; the project needs 3.25.
 version=$(cmake --version 2>/dev/null | head -n1 | awk '{print $3}')
@@ -128,18 +131,20 @@ fi
 export CMAKE_BUILD_PARALLEL_LEVEL=1 RT_GRADE_BUILD_JOBS=1
 cmake --preset release -DRT_WERROR=OFF
 cmake --build build --target rt-grade
-build/bin/rt-grade prepare --cache /autograder/rt-grade-cache
+build/bin/rt-grade prepare --source "$root/source" --cache "$root/rt-grade-cache"
 # Student code runs as nobody: the instructor tree (solutions, hidden tests, references) and
 # the private part of the cache stay unreadable to it even without namespaces.
-chmod 700 /autograder/source
+chmod 700 "$root/source"
 )SH");
     write_text(stage / "run_autograder", R"(#!/usr/bin/env bash
 # Gradescope entry point: grades /autograder/submission; results.json is always written.
-cd /autograder/source
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source" || exit 1
+mkdir -p "$root/results"
 export RT_GRADE_BUILD_JOBS=1
-exec build/bin/rt-grade /autograder/submission --jobs 1 --quiet \
-  --cache /autograder/rt-grade-cache \
-  --results /autograder/results/results.json --html /autograder/results/report.html
+exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
+  --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
+  --results "$root/results/results.json" --html "$root/results/report.html"
 )");
     fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read |
                                             fs::perms::group_exec | fs::perms::others_read |

@@ -84,8 +84,9 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
             const fs::path exr = scratch / (stage + "-" + sc.name + ".exr");
             const auto start = std::chrono::steady_clock::now();
             std::string out;
+            // A renderer that hangs (a broken build) must not stall the calibration forever.
             const int code = run_trusted(
-                shell_quote(r.renderer.string()) + " render " +
+                "timeout 300 " + shell_quote(r.renderer.string()) + " render " +
                     shell_quote((r.source / s.folder / "scenes" / (sc.name + ".json")).string()) +
                     " -o " + shell_quote(exr.string()) + " -q --threads " + std::to_string(threads),
                 &out);

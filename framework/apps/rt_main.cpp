@@ -130,13 +130,19 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
 }
 
 int run_info(const std::string& file) {
-    const Scene scene = load_scene(file);
+    Scene scene = load_scene(file);
+    const AccelerationReport accel = build_acceleration(scene);
     std::printf("%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
                 "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
                 file.c_str(), scene.image.width, scene.image.height, to_string(scene.mode),
                 scene.spheres.size(), scene.planes.size(), scene.triangles.size(),
                 scene.vertices.size(), scene.boxes.size(), scene.materials.size(),
                 scene.lights.size(), scene.features.describe().c_str());
+    if (accel.built)
+        std::printf("  BVH: %zu primitives, %zu nodes of %zu bytes, depth %d, built in %.1f ms\n",
+                    accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
+    else if (accel.requested)
+        std::printf("  BVH: requested but not built (%s)\n", accel.problem.c_str());
     return 0;
 }
 

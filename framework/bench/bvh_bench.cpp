@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <sys/resource.h>
+
 #include "accel/bvh_input.h"
 #include "geometry/offset.h"
 #include "geometry/procedural_mesh.h"
@@ -26,9 +28,12 @@ namespace rt::bench {
 
 const char* to_string(RayKind kind) {
     switch (kind) {
-        case RayKind::Primary: return "primary";
-        case RayKind::Shadow: return "shadow";
-        case RayKind::Diffuse: return "diffuse";
+        case RayKind::Primary:
+            return "primary";
+        case RayKind::Shadow:
+            return "shadow";
+        case RayKind::Diffuse:
+            return "diffuse";
     }
     return "?";
 }
@@ -90,7 +95,7 @@ double ms_since(Clock::time_point start) {
 }
 
 class BruteForceBackend final : public Backend {
-public:
+  public:
     explicit BruteForceBackend(const Scene& scene) : scene_(scene) {}
     std::string name() const override { return "brute-force"; }
     double build() override { return -1; }
@@ -107,12 +112,12 @@ public:
         }
     }
 
-private:
+  private:
     const Scene& scene_;
 };
 
 class BvhBackend final : public Backend {
-public:
+  public:
     explicit BvhBackend(Scene& scene) : scene_(scene) {}
     std::string name() const override { return "bvh"; }
     // Timed: bvh_primitives (the boxes, from the scene's arrays) and build_bvh.
@@ -146,12 +151,12 @@ public:
         }
     }
 
-private:
+  private:
     Scene& scene_;
 };
 
 class FaultyBackend final : public Backend {
-public:
+  public:
     FaultyBackend(std::unique_ptr<Backend> inner, std::size_t period)
         : inner_(std::move(inner)), period_(period == 0 ? 1 : period) {}
     std::string name() const override { return inner_->name(); }
@@ -161,12 +166,14 @@ public:
         inner_->trace(batch, begin, end, results);
         for (std::size_t i = begin; i < end; ++i) {
             if (i % period_ != 0 || !results[i].hit()) continue;
-            if (batch.any_hit) results[i] = RayResult{};
-            else results[i].primitive += 1;
+            if (batch.any_hit)
+                results[i] = RayResult{};
+            else
+                results[i].primitive += 1;
         }
     }
 
-private:
+  private:
     std::unique_ptr<Backend> inner_;
     std::size_t period_;
 };
@@ -176,7 +183,9 @@ private:
 std::unique_ptr<Backend> make_brute_force_backend(const Scene& scene) {
     return std::make_unique<BruteForceBackend>(scene);
 }
-std::unique_ptr<Backend> make_bvh_backend(Scene& scene) { return std::make_unique<BvhBackend>(scene); }
+std::unique_ptr<Backend> make_bvh_backend(Scene& scene) {
+    return std::make_unique<BvhBackend>(scene);
+}
 std::unique_ptr<Backend> make_faulty_backend(std::unique_ptr<Backend> inner, std::size_t period) {
     return std::make_unique<FaultyBackend>(std::move(inner), period);
 }
@@ -188,12 +197,15 @@ namespace {
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 std::string format(const char* fmt, ...) {
-    char buffer[512];
-    va_list args;
+    va_list args, again;
     va_start(args, fmt);
-    std::vsnprintf(buffer, sizeof buffer, fmt, args);
+    va_copy(again, args);
+    const int length = std::vsnprintf(nullptr, 0, fmt, args);
     va_end(args);
-    return buffer;
+    std::string text(length > 0 ? std::size_t(length) : 0, '\0');
+    if (length > 0) std::vsnprintf(text.data(), text.size() + 1, fmt, again);
+    va_end(again);
+    return text;
 }
 
 // 1234567 -> "1,234,567"
@@ -212,8 +224,8 @@ BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
     BenchMesh m;
     Scene& s = m.scene;
     if (!config.mesh_file.empty()) {
-        ObjMesh obj = load_obj(config.mesh_file, config.mesh_file, Vec3(1), Vec3(0),
-                               std::size_t(1) << 26);
+        ObjMesh obj =
+            load_obj(config.mesh_file, config.mesh_file, Vec3(1), Vec3(0), std::size_t(1) << 26);
         s.vertices = std::move(obj.vertices);
         s.triangles.reserve(obj.triangles.size());
         for (const auto& t : obj.triangles) s.triangles.push_back(Triangle{t, 0});
@@ -223,8 +235,8 @@ BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
         s.vertices = std::move(mesh.vertices);
         s.triangles.reserve(mesh.triangles.size());
         for (const auto& t : mesh.triangles) s.triangles.push_back(Triangle{t, 0});
-        m.description = "procedural " + config.procedural + " (seed " +
-                        std::to_string(config.seed) + ")";
+        m.description =
+            "procedural " + config.procedural + " (seed " + std::to_string(config.seed) + ")";
     }
     s.source = m.description;
     s.materials.push_back(Material{});
@@ -256,8 +268,8 @@ Framing frame_mesh(const Scene& scene, int width, int height) {
     const Real tan_h = tan_v * Real(width) / Real(height);
     // The frame first (it does not depend on the distance), then the distance each corner needs.
     const Vec3 view = glm::normalize(Vec3(0.3, 0.25, 1));
-    const Camera frame = make_look_at_camera(Projection::Perspective, centre + view, centre,
-                                             Vec3(0, 1, 0), fov, 2);
+    const Camera frame =
+        make_look_at_camera(Projection::Perspective, centre + view, centre, Vec3(0, 1, 0), fov, 2);
     Real distance = 0;
     for (int k = 0; k < 8; ++k) {
         const Vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
@@ -274,6 +286,21 @@ Framing frame_mesh(const Scene& scene, int width, int height) {
     return f;
 }
 
+// Embree intersects in float. So that every back-end traces the very same rays, and none of
+// them starts within float rounding of its surface, a double build (RT_DOUBLE) rounds every ray
+// to float and offsets secondary origins by the error bound of float arithmetic (twice the
+// double bound scaled by the ratio of the unit roundoffs, so that the rounding to float cannot
+// undo it). In a float build both are no-ops.
+Vec3 as_float(const Vec3& v) {
+    return Vec3(glm::vec3(v));
+}
+#ifdef RT_DOUBLE
+constexpr Real kErrorScale =
+    2 * Real(std::numeric_limits<float>::epsilon()) / std::numeric_limits<double>::epsilon();
+#else
+constexpr Real kErrorScale = 1;
+#endif
+
 // The primary ray through the centre of pixel (i, j), as docs/conventions.md#camera defines it
 // (computed here so that the benchmark does not depend on stage 01).
 Ray pixel_ray(const Camera& c, int i, int j, int width, int height) {
@@ -281,7 +308,7 @@ Ray pixel_ray(const Camera& c, int i, int j, int width, int height) {
     const Real half_width = half_height * Real(width) / Real(height);
     const Real x = (2 * (Real(i) + Real(0.5)) / Real(width) - 1) * half_width;
     const Real y = (1 - 2 * (Real(j) + Real(0.5)) / Real(height)) * half_height;
-    return Ray{c.eye, glm::normalize(x * c.u + y * c.v - c.w)};
+    return Ray{as_float(c.eye), as_float(glm::normalize(x * c.u + y * c.v - c.w))};
 }
 
 // SplitMix64: a counter-based generator, so ray i's random numbers depend on (seed, i) only.
@@ -291,7 +318,9 @@ std::uint64_t mix(std::uint64_t x) {
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
     return x ^ (x >> 31);
 }
-Real uniform(std::uint64_t bits) { return Real(bits >> 40) * Real(1.0 / 16777216.0); }  // [0, 1)
+Real uniform(std::uint64_t bits) {
+    return Real(bits >> 40) * Real(1.0 / 16777216.0);
+}  // [0, 1)
 
 // A cosine-weighted direction about the unit vector n. The tangent frame is the branch-free
 // construction of Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017).
@@ -339,15 +368,16 @@ BenchRays make_rays(const Scene& scene, const Framing& framing, const BvhBenchCo
         ++out.primary_hits;
         const SurfacePoint sp = surface_point(scene, primary.rays[i], hits[i]);
 
-        const Vec3 to_light = framing.light - sp.point;
-        const Vec3 l = glm::normalize(to_light);
-        const Vec3 shadow_origin = offset_ray_origin(sp.point, sp.error, sp.normal, l);
+        const Vec3 error = sp.error * kErrorScale;
+
+        const Vec3 l = as_float(glm::normalize(framing.light - sp.point));
+        const Vec3 shadow_origin = as_float(offset_ray_origin(sp.point, error, sp.normal, l));
         shadow.rays.push_back(Ray{shadow_origin, l});
         shadow.ranges.push_back(Interval{0, glm::length(framing.light - shadow_origin)});
 
         const std::uint64_t key = mix(config.seed ^ mix(std::uint64_t(i)));
-        const Vec3 d = cosine_direction(sp.normal, uniform(key), uniform(mix(key)));
-        diffuse.rays.push_back(Ray{offset_ray_origin(sp.point, sp.error, sp.normal, d), d});
+        const Vec3 d = as_float(cosine_direction(sp.normal, uniform(key), uniform(mix(key))));
+        diffuse.rays.push_back(Ray{as_float(offset_ray_origin(sp.point, error, sp.normal, d)), d});
         diffuse.ranges.push_back(Interval{0, kInfinity});
     }
     return out;
@@ -369,7 +399,8 @@ RayBatch subset(const RayBatch& batch, std::size_t m, std::vector<std::size_t>& 
     return sub;
 }
 
-std::vector<RayResult> pick(const std::vector<RayResult>& all, const std::vector<std::size_t>& indices) {
+std::vector<RayResult> pick(const std::vector<RayResult>& all,
+                            const std::vector<std::size_t>& indices) {
     std::vector<RayResult> out;
     out.reserve(indices.size());
     for (std::size_t i : indices) out.push_back(all[i]);
@@ -386,13 +417,32 @@ std::vector<RayResult> trace_all(const Backend& backend, const RayBatch& batch, 
     return results;
 }
 
-double seconds_to_trace(const Backend& backend, const RayBatch& batch, int threads,
-                        std::vector<RayResult>& results) {
+// CPU time (user + system) used by the whole process so far, in seconds.
+double process_cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// One timed run: wall-clock seconds, and the share of `threads` cores the process got meanwhile
+// (CPU time / (wall time x threads)): well below 1 means other work on the machine took cores.
+struct Run {
+    double seconds = 0;
+    double cpu_share = 0;
+};
+
+Run time_trace(const Backend& backend, const RayBatch& batch, int threads,
+               std::vector<RayResult>& results) {
+    const double cpu_start = process_cpu_seconds();
     const auto start = Clock::now();
     parallel_for_chunks(batch.size(), kChunk, threads, [&](std::size_t begin, std::size_t end) {
         backend.trace(batch, begin, end, results.data());
     });
-    return std::chrono::duration<double>(Clock::now() - start).count();
+    Run run;
+    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    run.cpu_share = (process_cpu_seconds() - cpu_start) / (run.seconds * threads);
+    return run;
 }
 
 std::string cpu_model() {
@@ -431,8 +481,9 @@ std::string bvh_traversal_summary(const Scene& scene, const BenchRays& rays, int
             prims += stats.primitives_tested;
         });
         const double n = batch.size() > 0 ? double(batch.size()) : 1.0;
-        text += format("%s %s %.1f nodes, %.1f triangles", batch.kind == RayKind::Primary ? "" : ";",
-                       to_string(batch.kind), double(nodes) / n, double(prims) / n);
+        text +=
+            format("%s %s %.1f nodes, %.1f triangles", batch.kind == RayKind::Primary ? "" : ";",
+                   to_string(batch.kind), double(nodes) / n, double(prims) / n);
     }
     const std::size_t depth = std::size_t(bvh_depth(scene.bvh));
     return text + format("\n  (%zu nodes, depth %zu)\n", scene.bvh.nodes.size(), depth);
@@ -444,8 +495,9 @@ struct Timing {
     int threads = 1;
     std::string measure;  // "build" or a ray kind
     std::size_t rays = 0;
-    double seconds = 0;   // best of the runs
+    double seconds = 0;  // best of the runs
     std::string note;
+    double cpu_share = 0;  // of the best run (time_trace); 0 for builds
     double mrays() const { return seconds > 0 ? double(rays) / seconds / 1e6 : 0; }
 };
 
@@ -469,8 +521,8 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
     Scene& scene = mesh.scene;
     const std::size_t triangles = scene.triangles.size();
     out << "rt-bench bvh: stage 02 brute force, stage 06 BVH and Embree 3 on the same rays\n";
-    out << "machine: " << cores << " cores (" << cpu_model() << "), load average "
-        << load_average() << " at the start\n";
+    out << "machine: " << cores << " cores (" << cpu_model() << "), load average " << load_average()
+        << " at the start\n";
     out << "mesh: " << mesh.description << ", " << grouped(triangles) << " triangles, "
         << grouped(scene.vertices.size()) << " vertices\n";
 
@@ -487,8 +539,9 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
         bvh = make_faulty_backend(std::move(bvh), config.inject_error_period);
     std::unique_ptr<Backend> brute = make_brute_force_backend(scene);
     const bool brute_timed = triangles <= config.brute_force_max_triangles;
-    const std::size_t brute_rays = brute_timed ? config.brute_force_rays
-                                               : std::min<std::size_t>(config.brute_force_rays, 1024);
+    const std::size_t brute_rays = brute_timed
+                                       ? config.brute_force_rays
+                                       : std::min<std::size_t>(config.brute_force_rays, 1024);
     const bool have_embree = embree_built_in();
     std::vector<std::unique_ptr<Backend>> embree;  // one device per thread count
     if (have_embree)
@@ -544,7 +597,8 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
                    compare_results(brute_results, pick(embree_results, indices), batch.any_hit,
                                    config.t_tolerance));
     }
-    if (!embree_all) out << "  (Embree was not built in: nothing to compare the BVH with but brute force)\n";
+    if (!embree_all)
+        out << "  (Embree was not built in: nothing to compare the BVH with but brute force)\n";
     if (!failed) out << bvh_traversal_summary(scene, rays, all_threads);
     if (failed) {
         out << "\nrt-bench: error: " << first_failure
@@ -563,7 +617,8 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
         Timing embree_build{"embree", threads, "build", triangles, kInfinity, ""};
         for (int r = 0; r < repeat; ++r) {
             bvh_build.seconds = std::min(bvh_build.seconds, bvh->build() / 1000);
-            if (have_embree) embree_build.seconds = std::min(embree_build.seconds, embree[ti]->build() / 1000);
+            if (have_embree)
+                embree_build.seconds = std::min(embree_build.seconds, embree[ti]->build() / 1000);
         }
         timings.push_back(bvh_build);
         if (have_embree) timings.push_back(embree_build);
@@ -578,23 +633,36 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
             };
             std::vector<Entry> entries;
             if (brute_timed)
-                entries.push_back({brute.get(), &sub,
-                                   {"brute-force", threads, to_string(batch.kind), sub.size(), kInfinity,
-                                    sub.size() < batch.size() ? "on a subset of " + grouped(sub.size()) + " rays" : ""}});
-            entries.push_back({bvh.get(), &batch, {"bvh", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
+                entries.push_back(
+                    {brute.get(),
+                     &sub,
+                     {"brute-force", threads, to_string(batch.kind), sub.size(), kInfinity,
+                      sub.size() < batch.size() ? "on a subset of " + grouped(sub.size()) + " rays"
+                                                : ""}});
+            entries.push_back(
+                {bvh.get(),
+                 &batch,
+                 {"bvh", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
             if (have_embree)
-                entries.push_back({embree[ti].get(), &batch,
-                                   {"embree", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
+                entries.push_back(
+                    {embree[ti].get(),
+                     &batch,
+                     {"embree", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
             std::vector<RayResult> results(batch.size());
             for (int r = 0; r < repeat; ++r)
-                for (Entry& e : entries)
-                    e.timing.seconds = std::min(e.timing.seconds,
-                                                seconds_to_trace(*e.backend, *e.rays, threads, results));
+                for (Entry& e : entries) {
+                    const Run run = time_trace(*e.backend, *e.rays, threads, results);
+                    if (run.seconds < e.timing.seconds) {
+                        e.timing.seconds = run.seconds;
+                        e.timing.cpu_share = run.cpu_share;
+                    }
+                }
             for (Entry& e : entries) timings.push_back(e.timing);
         }
     }
 
-    auto find = [&](const std::string& backend, int threads, const std::string& measure) -> const Timing* {
+    auto find = [&](const std::string& backend, int threads,
+                    const std::string& measure) -> const Timing* {
         for (const Timing& t : timings)
             if (t.backend == backend && t.threads == threads && t.measure == measure) return &t;
         return nullptr;
@@ -602,9 +670,8 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
 
     out << "\nthroughput in Mrays/s (single-ray queries, best of " << repeat
         << " runs); build: from the scene's arrays to a traversable structure, in ms\n";
-    out << format("  %-12s %7s %10s %10s %10s %10s\n", "back-end", "threads", "build ms", "primary",
-                  "shadow", "diffuse");
-    std::vector<std::string> notes;
+    out << format("  %-12s %7s %10s %10s %10s %10s %9s\n", "back-end", "threads", "build ms",
+                  "primary", "shadow", "diffuse", "cpu share");
     for (int threads : thread_counts) {
         for (const char* backend : {"brute-force", "bvh", "embree"}) {
             if (std::string(backend) == "embree" && !have_embree) continue;
@@ -612,10 +679,13 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
             std::string line = format("  %-12s %7d", backend, threads);
             const Timing* b = find(backend, threads, "build");
             line += b ? format(" %10.1f", b->seconds * 1000) : format(" %10s", "-");
+            double share = kInfinity;
             for (RayKind kind : kRayKinds) {
                 const Timing* t = find(backend, threads, to_string(kind));
                 line += t ? format(" %10.3f", t->mrays()) : format(" %10s", "-");
+                if (t) share = std::min(share, t->cpu_share);
             }
+            line += share < kInfinity ? format(" %8.0f%%", 100 * share) : format(" %9s", "-");
             out << line << "\n";
         }
     }
@@ -630,7 +700,8 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
     if (have_embree)
         out << "; embree build: buffers + rtcCommitScene, default quality, on `threads` build "
                "threads";
-    out << "\n";
+    out << "\n  cpu share: CPU time the process got during the fastest run / (wall time x threads),"
+           " lowest of the row; well below 100% means other work on the machine took cores\n";
     if (!have_embree)
         out << "  embree: not built in (install libembree-dev, scripts/install-deps.sh, and "
                "configure again): no ratios\n";
@@ -643,31 +714,36 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
                 const Timing* e = find("embree", threads, measure);
                 return a && e && a->mrays() > 0 && e->mrays() > 0 ? a->mrays() / e->mrays() : 0.0;
             };
-            const double build = find("bvh", threads, "build")->seconds /
-                                 find("embree", threads, "build")->seconds;
-            out << format("ratios bvh/embree, %d thread%s: primary %.2fx, shadow %.2fx, diffuse "
-                          "%.2fx throughput; build time %.2fx Embree's\n",
-                          threads, threads == 1 ? "" : "s", ratio("primary"), ratio("shadow"),
-                          ratio("diffuse"), build);
+            const double build =
+                find("bvh", threads, "build")->seconds / find("embree", threads, "build")->seconds;
+            out << format(
+                "ratios bvh/embree, %d thread%s: primary %.2fx, shadow %.2fx, diffuse "
+                "%.2fx throughput; build time %.2fx Embree's\n",
+                threads, threads == 1 ? "" : "s", ratio("primary"), ratio("shadow"),
+                ratio("diffuse"), build);
             if (threads == all_threads) {
                 auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
-                out << format("goals of issue 5 (set for the Stanford bunny, 1024x768, 2 threads), "
-                              "at %d thread%s: primary >= 0.5x %s, diffuse >= 0.4x %s, build <= 2x %s\n",
-                              threads, threads == 1 ? "" : "s", verdict(ratio("primary") >= 0.5),
-                              verdict(ratio("diffuse") >= 0.4), verdict(build <= 2.0));
+                out << format(
+                    "goals of issue 5 (set for the Stanford bunny, 1024x768, 2 threads), "
+                    "at %d thread%s: primary >= 0.5x %s, diffuse >= 0.4x %s, build <= 2x %s\n",
+                    threads, threads == 1 ? "" : "s", verdict(ratio("primary") >= 0.5),
+                    verdict(ratio("diffuse") >= 0.4), verdict(build <= 2.0));
             }
         }
     }
     out << "load average " << load_average() << " at the end\n";
 
     if (!config.csv.empty()) {
-        std::string csv = "mesh,triangles,backend,threads,measure,rays,best_seconds,mrays_per_s,repeat,note\n";
+        std::string csv =
+            "mesh,triangles,backend,threads,measure,rays,best_seconds,mrays_per_s,cpu_share,repeat,"
+            "note\n";
         for (const Timing& t : timings) {
             const bool build = t.measure == "build";
-            csv += format("\"%s\",%zu,%s,%d,%s,%zu,%.6f,%s,%d,\"%s\"\n", mesh.description.c_str(),
-                          triangles, t.backend.c_str(), t.threads, t.measure.c_str(),
-                          build ? std::size_t(0) : t.rays, t.seconds,
-                          build ? "" : format("%.4f", t.mrays()).c_str(), repeat, t.note.c_str());
+            csv += format("\"%s\",%zu,%s,%d,%s,%zu,%.6f,%s,%s,%d,\"%s\"\n",
+                          mesh.description.c_str(), triangles, t.backend.c_str(), t.threads,
+                          t.measure.c_str(), build ? std::size_t(0) : t.rays, t.seconds,
+                          build ? "" : format("%.4f", t.mrays()).c_str(),
+                          build ? "" : format("%.3f", t.cpu_share).c_str(), repeat, t.note.c_str());
         }
         if (config.csv == "-") {
             out << "\n" << csv;

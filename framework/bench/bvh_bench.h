@@ -65,7 +65,7 @@ std::size_t allowed_disagreements(std::size_t rays, double max_fraction);
 // Back-ends.
 
 class Backend {
-public:
+  public:
     virtual ~Backend() = default;
     virtual std::string name() const = 0;
     // Builds the acceleration structure from the scene's arrays and returns the milliseconds
@@ -105,7 +105,7 @@ void parallel_for_chunks(std::size_t n, std::size_t chunk, int threads,
 // The benchmark.
 
 struct BvhBenchConfig {
-    std::string mesh_file;            // an OBJ file; empty: the procedural mesh below
+    std::string mesh_file;             // an OBJ file; empty: the procedural mesh below
     std::string procedural = "torus";  // make_procedural_mesh shape
     std::size_t triangles = 100000;    // at least this many triangles (procedural only)
     std::uint64_t seed = 1;            // procedural mesh and diffuse directions
@@ -117,9 +117,9 @@ struct BvhBenchConfig {
     // only checked for correctness, on at most 1024 rays of each kind, and not timed.
     std::size_t brute_force_max_triangles = 5000;
     std::size_t brute_force_rays = 16384;
-    double max_disagreement = 1e-4;    // fraction of rays per pair and kind before failing
-    double t_tolerance = 1e-4;         // relative tolerance on t
-    std::string csv;                   // write CSV here ("-": standard output)
+    double max_disagreement = 1e-4;       // fraction of rays per pair and kind before failing
+    double t_tolerance = 1e-4;            // relative tolerance on t
+    std::string csv;                      // write CSV here ("-": standard output)
     std::size_t inject_error_period = 0;  // > 0: the BVH answers wrongly on some rays (tests)
 };
 

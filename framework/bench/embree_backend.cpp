@@ -17,7 +17,9 @@ namespace rt::bench {
 
 #ifndef RT_HAVE_EMBREE
 
-bool embree_built_in() { return false; }
+bool embree_built_in() {
+    return false;
+}
 
 std::unique_ptr<Backend> make_embree_backend(const Scene&, int) {
     throw std::runtime_error(
@@ -27,7 +29,9 @@ std::unique_ptr<Backend> make_embree_backend(const Scene&, int) {
 
 #else
 
-bool embree_built_in() { return true; }
+bool embree_built_in() {
+    return true;
+}
 
 namespace {
 
@@ -47,7 +51,7 @@ void on_embree_error(void* user, RTCError code, const char* message) {
 }
 
 class EmbreeBackend final : public Backend {
-public:
+  public:
     EmbreeBackend(const Scene& scene, int threads) : scene_(scene) {
         const std::string config = "threads=" + std::to_string(threads < 1 ? 1 : threads);
         device_ = rtcNewDevice(config.c_str());
@@ -140,7 +144,7 @@ public:
         }
     }
 
-private:
+  private:
     void check() {
         std::lock_guard<std::mutex> lock(errors_.mutex);
         if (!errors_.first.empty()) throw std::runtime_error(errors_.first);

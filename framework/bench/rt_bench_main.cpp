@@ -110,7 +110,17 @@ int main(int argc, char** argv) {
     acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line, exit code 2 (a usage error), as `rt` does.
+        std::fprintf(stderr, "rt-bench: error: %s; run `rt-bench --help`\n", e.what());
+        return 2;
+    }
     try {
         if (acc->parsed()) {
             for (const CLI::Option* option : app.get_options())

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace rt {
 
@@ -170,14 +169,26 @@ TriangleMesh make_icosphere(int subdivisions, Real radius) {
 
     // Each subdivision splits every triangle into four at its edge midpoints, pushed out onto
     // the sphere. A midpoint is shared by the two triangles of its edge.
+    // The midpoints made so far are kept per edge in a chain starting at the edge's smaller
+    // vertex (a handful per vertex; much faster than a hash map at millions of edges).
+    constexpr std::uint32_t kNone = UINT32_MAX;
     for (int level = 0; level < subdivisions; ++level) {
-        std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
-        midpoints.reserve(faces.size() * 3 / 2);
+        std::vector<std::uint32_t> first(points.size(), kNone);
+        struct Edge {
+            std::uint32_t other, middle, next;
+        };
+        std::vector<Edge> edges;
+        edges.reserve(faces.size() * 3 / 2);
+        points.reserve(points.size() + faces.size() * 3 / 2);
         auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-            std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-            auto [it, added] = midpoints.emplace(key, std::uint32_t(points.size()));
-            if (added) points.push_back(unit(points[a] + points[b]));
-            return it->second;
+            std::uint32_t low = std::min(a, b), high = std::max(a, b);
+            for (std::uint32_t e = first[low]; e != kNone; e = edges[e].next)
+                if (edges[e].other == high) return edges[e].middle;
+            auto middle = std::uint32_t(points.size());
+            points.push_back(unit(points[a] + points[b]));
+            edges.push_back({high, middle, first[low]});
+            first[low] = std::uint32_t(edges.size() - 1);
+            return middle;
         };
         std::vector<std::array<std::uint32_t, 3>> finer;
         finer.reserve(faces.size() * 4);
@@ -373,12 +384,18 @@ TriangleMesh make_triangle_soup(std::size_t count, std::uint64_t seed, Real size
     TriangleMesh mesh;
     mesh.vertices.reserve(3 * count);
     mesh.triangles.reserve(count);
+    // One draw per statement: the order in which function arguments are evaluated is up to the
+    // compiler (GCC and Clang differ), the order of statements is not.
+    auto draw = [&random](double lo, double hi) {
+        double x = random.between(lo, hi);
+        double y = random.between(lo, hi);
+        double z = random.between(lo, hi);
+        return D3(x, y, z);
+    };
     while (mesh.triangles.size() < count) {
-        D3 centre(random.between(half - 1, 1 - half), random.between(half - 1, 1 - half),
-                  random.between(half - 1, 1 - half));
+        D3 centre = draw(half - 1, 1 - half);
         D3 corner[3];
-        for (D3& p : corner)
-            p = centre + D3(random.between(-half, half), random.between(-half, half), random.between(-half, half));
+        for (D3& p : corner) p = centre + draw(-half, half);
         // Redraw slivers: a tiny area compared with the size makes a useless test triangle.
         D3 n = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
         if (!(glm::dot(n, n) > 1e-6 * half * half * half * half)) continue;

@@ -118,7 +118,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
         throw std::runtime_error(scene.source + ": mode \"bvh_visits\" needs the scene's BVH, which " +
                                  (scene.accelerator == Accelerator::Bvh
                                       ? std::string("build_bvh did not produce (see the message above)")
-                                      : std::string("it does not ask for; add \"accelerator\": \"bvh\" to \"render\"")));
+                                      : std::string("it does not ask for; add \"accelerator\": \"bvh\" to \"render\" (or pass --accelerator bvh)")));
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     std::vector<Real> depth(std::size_t(width) * height, -1);

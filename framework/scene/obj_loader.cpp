@@ -260,12 +260,12 @@ ObjSummary check_obj_text(const std::string& text, const std::string& name) {
             if (c.vt && !resolve_index(c.vt, uvs_so_far, summary.uv_count))
                 fail(name, line,
                      "texture coordinate index " + std::to_string(c.vt) + " out of range (the file has " +
-                         std::to_string(summary.uv_count) + " \"vt\" lines)",
+                         std::to_string(summary.uv_count) + " \"vt\" line" + (summary.uv_count == 1 ? ")" : "s)"),
                      "fix the face or the \"vt\" list");
             if (c.vn && !resolve_index(c.vn, normals_so_far, summary.normal_count))
                 fail(name, line,
                      "normal index " + std::to_string(c.vn) + " out of range (the file has " +
-                         std::to_string(summary.normal_count) + " \"vn\" lines)",
+                         std::to_string(summary.normal_count) + " \"vn\" line" + (summary.normal_count == 1 ? ")" : "s)"),
                      "fix the face or the \"vn\" list");
         }
         summary.triangle_count += entries.size() - 2;

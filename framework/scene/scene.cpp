@@ -19,17 +19,6 @@ std::size_t Scene::primitive_count() const {
     return spheres.size() + planes.size() + triangles.size() + boxes.size();
 }
 
-Scene::Kind Scene::primitive_kind(int id, std::size_t& index) const {
-    std::size_t i = std::size_t(id);
-    if (i < spheres.size()) return index = i, Kind::Sphere;
-    i -= spheres.size();
-    if (i < planes.size()) return index = i, Kind::Plane;
-    i -= planes.size();
-    if (i < triangles.size()) return index = i, Kind::Triangle;
-    i -= triangles.size();
-    return index = i, Kind::Box;
-}
-
 void Scene::update_features() {
     Features f;
     f.spheres = !spheres.empty();

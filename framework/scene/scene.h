@@ -113,7 +113,17 @@ struct Scene {
     int primitive_id(Kind kind, std::size_t index) const;
     std::size_t primitive_count() const;
     // The inverse of primitive_id: the kind of primitive `id` and its index in that array.
-    Kind primitive_kind(int id, std::size_t& index) const;
+    // Inline: every BVH leaf test goes through it.
+    Kind primitive_kind(int id, std::size_t& index) const {
+        std::size_t i = std::size_t(id);
+        if (i < spheres.size()) return index = i, Kind::Sphere;
+        i -= spheres.size();
+        if (i < planes.size()) return index = i, Kind::Plane;
+        i -= planes.size();
+        if (i < triangles.size()) return index = i, Kind::Triangle;
+        i -= triangles.size();
+        return index = i, Kind::Box;
+    }
 
     void triangle_vertices(std::size_t i, Vec3& a, Vec3& b, Vec3& c) const {
         a = vertices[triangles[i].v[0]];

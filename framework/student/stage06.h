@@ -29,13 +29,15 @@ struct SahSplit {
     float cost = std::numeric_limits<float>::infinity();  // C_trav + (A_L N_L + A_R N_R) / A
     Aabb left_bounds, right_bounds;  // the boxes around the primitives of each side
     std::uint32_t left_count = 0, right_count = 0;
+    float centroid_lo = 0, scale = 0;  // of `axis`: what bin_of needs to partition by this split
 };
 
 // The bin (0 .. bins - 1) of centroid coordinate `c` when the centroids of a node span
-// [lo, hi] on that axis (hi > lo). Builder and partition must both use exactly this.
-inline int bin_of(float c, float lo, float hi, int bins) {
-    int b = int(float(bins) * ((c - lo) / (hi - lo)));
-    return b < 0 ? 0 : (b >= bins ? bins - 1 : b);
+// [lo, hi] on that axis (hi > lo) and scale = bins / (hi - lo). Builder and partition must both
+// use exactly this. (A NaN, from an overflowing scale, lands in bin 0.)
+inline int bin_of(float c, float lo, float scale, int bins) {
+    const float x = (c - lo) * scale;
+    return x >= 0 ? (x < float(bins) ? int(x) : bins - 1) : 0;
 }
 
 // The cheapest binned SAH split of prims[begin, end), over all three axes (axes on which the

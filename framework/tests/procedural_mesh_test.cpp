@@ -218,6 +218,38 @@ TEST(ProceduralMesh, KnownCoordinates) {
     }
 }
 
+// FNV-1a over the mesh rounded to float (the same bits whether Real is float or double).
+std::uint64_t fingerprint(const rt::TriangleMesh& mesh) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    auto add = [&h](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 0x100000001b3ull;
+    };
+    auto add_reals = [&](const auto& vectors, int n) {
+        for (const auto& v : vectors)
+            for (int k = 0; k < n; ++k) {
+                float f = float(v[k]);
+                add(&f, sizeof f);
+            }
+    };
+    add_reals(mesh.vertices, 3);
+    add_reals(mesh.normals, 3);
+    add_reals(mesh.uvs, 2);
+    for (const auto& t : mesh.triangles) add(t.data(), sizeof t);
+    return h;
+}
+
+// The meshes are pinned bit for bit: benchmarks and reference images built on them must not
+// change with the compiler, the C library or the machine (the generators use no libm functions
+// and no standard-library distributions). The sizes are exact in float and double, so both
+// presets give the same bits. A deliberate change of a generator updates these.
+TEST(ProceduralMesh, PinnedBitForBit) {
+    EXPECT_EQ(fingerprint(rt::make_icosphere(3)), 0x9c2cf0e04fee7c4dull);
+    EXPECT_EQ(fingerprint(rt::make_torus(24, 12, 1, rt::Real(0.25))), 0xc7ff33137d7e51fbull);
+    EXPECT_EQ(fingerprint(rt::make_terrain(16, 9, 77, rt::Real(0.25))), 0x67916284c02e0132ull);
+    EXPECT_EQ(fingerprint(rt::make_triangle_soup(100, 77, rt::Real(0.125))), 0xa76d6d482ec61b40ull);
+}
+
 TEST(ProceduralMesh, ChoosesTheSmallestResolution) {
     for (std::size_t n : {0u, 1u, 19u, 20u, 21u, 80u, 81u, 1000u, 20000u, 123457u}) {
         rt::ProceduralResolution ico = rt::procedural_resolution("icosphere", n);

@@ -8,8 +8,14 @@ bin=$1 src=$2 case=$3
 work=$(mktemp -d /tmp/rt-grade-adv-XXXXXX)
 trap 'rm -rf "$work"' EXIT
 sub=$work/submission
-s1=stages/01-camera-rays s2=stages/02-intersections
+s1=stages/01-camera-rays s2=stages/02-intersections s3=stages/03-blinn-phong
+s4=stages/04-shadows s5=stages/05-recursion
 mkdir -p "$sub/$s1" "$sub/$s2"
+# Every stage that grading covers here, its student file, and the stubs' handout sections.
+all_stages=1,2,3,4,5
+files=("$s1/camera_rays.cpp" "$s2/intersections.cpp" "$s3/blinn_phong.cpp" "$s4/shadows.cpp"
+       "$s5/recursion.cpp")
+sections() { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/' | sort -u; }
 
 # The starter (stub) version of a student file: what `rt-grade release` writes.
 stub() {
@@ -24,6 +30,7 @@ solution1() { cp "$src/$s1/camera_rays.cpp" "$sub/$s1/camera_rays.cpp"; }
 solution2() { cp "$src/$s2/intersections.cpp" "$sub/$s2/intersections.cpp"; }
 append1() { cat >> "$sub/$s1/camera_rays.cpp"; }
 append2() { cat >> "$sub/$s2/intersections.cpp"; }
+solution_all() { for f in "${files[@]}"; do mkdir -p "$sub/$(dirname "$f")"; cp "$src/$f" "$sub/$f"; done; }
 
 # Whole-command cases: batch mode, the Gradescope package, an interrupted grading.
 case $case in
@@ -47,6 +54,50 @@ case $case in
     done
     if grep -q " source/build" "$work/list"; then echo "FAIL: build tree in the zip"; exit 1; fi
     exit 0 ;;
+  package_run)  # the package's run_autograder in a simulated Gradescope layout
+    root=$work/autograder
+    "$bin/rt-grade" package --out "$work/autograder.zip" --source "$src" > /dev/null || exit 1
+    mkdir -p "$root/submission" "$root/results"
+    (cd "$root" && unzip -q "$work/autograder.zip") || { echo "FAIL: unzip"; exit 1; }
+    bash -n "$root/setup.sh" || { echo "FAIL: setup.sh does not parse"; exit 1; }
+    grep -q 'scripts/install-deps.sh' "$root/setup.sh" || { echo "FAIL: setup.sh installs nothing"; exit 1; }
+    [ -x "$root/run_autograder" ] || { echo "FAIL: run_autograder not executable"; exit 1; }
+    # setup.sh's build, replaced by this tree's rt-grade (building twice would take minutes).
+    mkdir -p "$root/source/build/bin" && ln -s "$bin/rt-grade" "$root/source/build/bin/rt-grade"
+    # Gradescope unpacks the student's upload into submission/: here the loose files of every
+    # graded stage (a complete submission; stages added later are graded too).
+    for dir in "$src"/stages/*/; do
+      [ -f "$dir/grading.json" ] || continue
+      for f in $(jq -r '.student_files[]' "$dir/stage.json"); do cp "$dir/$f" "$root/submission/"; done
+    done
+    start=$(date +%s)
+    RT_AUTOGRADER_ROOT=$root "$root/run_autograder" > "$work/run.log" 2>&1
+    code=$?
+    echo "run_autograder exited with $code after $(( $(date +%s) - start )) s"
+    [ $code -eq 0 ] || { cat "$work/run.log"; echo "FAIL: run_autograder"; exit 1; }
+    [ -s "$root/results/report.html" ] || { echo "FAIL: no report.html next to results.json"; exit 1; }
+    # Full marks in stages 01-05 (a stage in progress may not have them yet).
+    checks=()
+    for n in ${all_stages//,/ }; do checks+=(--full-marks-tag "stage0$n"); done
+    "$bin/results_check" "$root/results/results.json" "${checks[@]}" --not-contains "not run" \
+      --not-contains "is missing from the submission" || exit 1
+    exit 0 ;;
+  calib_no_gamma)  # images written without the sRGB transfer must fail every shaded scene
+    failed=0 scenes=0
+    for stage in 03-blinn-phong 04-shadows 05-recursion; do
+      for name in $(jq -r '.scenes[].name' "$src/stages/$stage/grading.json"); do
+        "$bin/rt" render "$src/stages/$stage/scenes/$name.json" -o "$work/$name.exr" -q || exit 1
+        # Control: the same render, encoded as the writer does, passes (the check can fail).
+        "$bin/rt-grade" compare --source "$src" --image "$work/$name.exr" --scene "$stage/$name" ||
+          { echo "FAIL: the correct image of $stage/$name does not pass"; exit 1; }
+        oiiotool "$work/$name.exr" -d uint8 -o "$work/$name.png" || exit 1  # linear -> 8 bit, no transfer
+        scenes=$((scenes + 1))
+        "$bin/rt-grade" compare --source "$src" --image "$work/$name.png" --scene "$stage/$name" &&
+          { echo "FAIL: $stage/$name without gamma still gets full points"; failed=1; }
+      done
+    done
+    [ $scenes -ge 3 ] || { echo "FAIL: no shaded scene"; exit 1; }
+    exit $failed ;;
   interrupted)  # SIGTERM while a test hangs: results.json is still written, tests listed
     cp "$src/$s1/camera_rays.cpp" "$sub/$s1/"
     echo 'namespace { struct Spin { Spin() { volatile bool f = true; while (f) {} } } spin; }' \
@@ -73,15 +124,17 @@ if [ $case = uid_segfault ]; then
   [ "$(id -u)" -eq 0 ] && checks+=(--contains "uid drop to nobody")
 fi
 case $case in
-  reference)  # the instructor's own files: full marks
-    solution1; solution2; stages=1,2; limit=()
-    checks=(--score-min 83 --max-score 83) ;;
-  starter)  # the released stubs: 0 points, and the report names the handout sections
-    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
-    stub "$src/$s2/intersections.cpp" > "$sub/$s2/intersections.cpp"; stages=1,2; limit=()
-    checks=(--score-max 0 --max-score 83
-            --contains "Read the handout: stages/01-camera-rays/README.md#perspective-rays"
-            --contains "Read the handout: stages/02-intersections/README.md#ray-sphere") ;;
+  reference)  # the instructor's own files: full marks in every stage
+    solution_all; stages=$all_stages; limit=()
+    checks=(--full-marks --not-contains "not run")
+    for n in ${all_stages//,/ }; do checks+=(--has-tag "stage0$n"); done ;;
+  starter)  # the released starter tree: 0 points, and the report names every stub's section
+    "$bin/rt-grade" release --source "$src" --out "$work/starter" > /dev/null || exit 1
+    sub=$work/starter; stages=$all_stages; limit=()
+    checks=(--score-max 0)
+    for n in ${all_stages//,/ }; do checks+=(--has-tag "stage0$n"); done
+    while read -r section; do checks+=(--contains "Read the handout: $section"); done < <(sections)
+    [ ${#checks[@]} -gt 12 ] || { echo "FAIL: no stub section found"; exit 1; } ;;
   compile_error)
     solution1; echo 'int broken = ;' | append1
     checks=(--score-max 0 --max-score 18 --contains "Build (compiling your files)"
@@ -216,16 +269,96 @@ CPP
     solution2; stages=2; limit=()
     echo '#include "hidden/hidden_test.cpp"' | append2
     checks=(--score-max 0 --contains "was not used" --contains "is not allowed") ;;
-  # Calibration: the reference with other code generation must pass, known bugs must fail.
-  calib_O0|calib_fast_math)
-    [ $case = calib_O0 ] && pragma='#pragma GCC optimize("O0")' || pragma='#pragma GCC optimize("Ofast")'
-    { echo "$pragma"; cat "$src/$s1/camera_rays.cpp"; } > "$sub/$s1/camera_rays.cpp"
-    { echo "$pragma"; cat "$src/$s2/intersections.cpp"; } > "$sub/$s2/intersections.cpp"
-    stages=1,2; limit=()
-    if [ $case = calib_O0 ]; then checks=(--score-min 83 --max-score 83)
-    # -Ofast assumes no NaN or Inf, so the two unit tests of NaN/Inf directions fail (the
-    # conventions require those rays to miss); every image must still pass.
-    else checks=(--test-passed "image" --score-min 81 --max-score 83); fi ;;
+  # Calibration (the flag builds are calibrate_flags.sh): known bugs must fail.
+  forge_pass)  # forges passing results: fake gtest JSON, guessed channel records, then _exit(0)
+    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
+    append1 <<'CPP'
+#include <dirent.h>
+#include <unistd.h>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+namespace { struct Forger { Forger() {
+  std::ifstream cmd("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
+  std::string test, json = "test_detail.json";
+  for (std::size_t p = 0, q; p < all.size(); p = q + 1) {
+    q = all.find('\0', p); if (q == std::string::npos) q = all.size();
+    const std::string a = all.substr(p, q - p);
+    if (a.rfind("--gtest_filter=", 0) == 0) test = a.substr(15);
+    if (a.rfind("--gtest_output=json:", 0) == 0) json = a.substr(20);
+  }
+  const auto dot = test.find('.');
+  if (dot != std::string::npos)  // GoogleTest's JSON report, as the old verdict read it
+    std::ofstream(json) << "{\"testsuites\": [{\"name\": \"" << test.substr(0, dot)
+      << "\", \"testsuite\": [{\"name\": \"" << test.substr(dot + 1)
+      << "\", \"status\": \"RUN\", \"result\": \"COMPLETED\"}]}]}";
+  // Nonce candidates: whatever the nonce pipe still holds, and hex strings in writable memory.
+  std::vector<std::string> nonces{std::string(32, '0')};
+  if (const char* fd = std::getenv("RT_GRADE_NONCE_FD")) {
+    char buf[64] = {}; const ssize_t n = read(std::atoi(fd), buf, 32);
+    if (n > 0) nonces.push_back(std::string(buf, std::size_t(n)));
+  }
+  std::ifstream maps("/proc/self/maps"); std::string line;
+  while (std::getline(maps, line) && nonces.size() < 64) {
+    unsigned long lo = 0, hi = 0; char perms[8] = {};
+    if (std::sscanf(line.c_str(), "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[1] != 'w') continue;
+    if (hi - lo > (8ul << 20)) continue;
+    const char* m = reinterpret_cast<const char*>(lo); int run = 0;
+    for (unsigned long i = 0; i < hi - lo && nonces.size() < 64; ++i) {
+      const char c = m[i];
+      run = ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')) ? run + 1 : 0;
+      if (run == 32) nonces.push_back(std::string(m + i - 31, 32));
+    }
+  }
+  for (int fd = 3; fd < 64; ++fd)
+    for (const auto& n : nonces) {
+      const std::string rec = "RTG1 " + n + " PASS " + test + "\nRTG1 " + n + " END 1 0\n";
+      if (write(fd, rec.data(), rec.size()) < 0) break;
+    }
+  std::printf("FORGER ran: %zu nonce guesses\n", nonces.size()); std::fflush(stdout);
+  _exit(0);
+} } forger; }
+CPP
+    checks=(--score-max 0 --contains "FORGER ran" --contains "tampering") ;;
+  early_constructor)  # runs before the trusted test main to take the nonce: refused at build
+    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
+    append1 <<'CPP'
+#include <cstdlib>
+#include <unistd.h>
+__attribute__((constructor(101))) static void grab_nonce() {
+  if (const char* fd = std::getenv("RT_GRADE_NONCE_FD")) { char b[32]; (void)!read(std::atoi(fd), b, 32); }
+}
+CPP
+    checks=(--score-max 0 --contains "Build (compiling your files)" --contains "section .init_array.") ;;
+  libc_override)  # a write() of its own would see the records: refused at build
+    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
+    append1 <<'CPP'
+#include <sys/syscall.h>
+#include <unistd.h>
+extern "C" ssize_t write(int fd, const void* data, size_t size) { return syscall(SYS_write, fd, data, size); }
+CPP
+    checks=(--score-max 0 --contains "Build (compiling your files)" --contains "write (extern") ;;
+  calib_missing_specular)  # Blinn-Phong without its specular term
+    mkdir -p "$sub/$s3"
+    grep -v 'reflected += material.specular' "$src/$s3/blinn_phong.cpp" > "$sub/$s3/blinn_phong.cpp"
+    cmp -s "$src/$s3/blinn_phong.cpp" "$sub/$s3/blinn_phong.cpp" && { echo "no specular term to remove"; exit 1; }
+    stages=3; limit=()
+    checks=(--test-failed "image specular_only" --test-failed "image direct_light"
+            --test-passed "image diffuse_only" --test-passed "image ambient_only") ;;
+  calib_acne)  # shadow rays start exactly at the hit point, without the offset
+    mkdir -p "$sub/$s4"
+    sed 's/offset_ray_origin(\([a-z_]*\)\.point, [^;]*);/\1.point;/' "$src/$s4/shadows.cpp" > "$sub/$s4/shadows.cpp"
+    cmp -s "$src/$s4/shadows.cpp" "$sub/$s4/shadows.cpp" && { echo "no offset to remove"; exit 1; }
+    stages=4; limit=()
+    # The Cornell box (axis-aligned walls near the origin) happens to show no acne without the
+    # offset; the other three scenes and every Acne.* unit test do.
+    checks=(--test-failed "image shadows" --test-failed "image glass_shadows"
+            --test-failed "image far_from_origin" --test-failed "Acne.") ;;
   calib_half_pixel)  # samples pixel corners instead of centres
     sed 's|Vec2 pixel, ImageSize size) {|Vec2 pixel, ImageSize size) {\n    pixel -= Vec2(0.5);|' \
       "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"

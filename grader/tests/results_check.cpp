@@ -2,7 +2,8 @@
 // (https://gradescope-autograders.readthedocs.io/en/latest/specs/#output-format) and checks
 // expectations of the grader tests:
 //   results_check FILE [--score-min X] [--score-max X] [--max-score X] [--contains TEXT]...
-//                      [--not-contains TEXT]... [--test-contains NAME TEXT]...
+//                      [--not-contains TEXT]... [--test-failed NAME]... [--test-passed NAME]...
+//                      [--full-marks] [--has-tag TAG]... [--full-marks-tag TAG]...
 // Exits 0 when everything holds; prints each violation otherwise.
 #include <nlohmann/json.hpp>
 
@@ -142,6 +143,30 @@ int main(int argc, char** argv) {
             const double v = std::stod(next());
             if (std::abs(max_total - v) > 1e-9)
                 fail("max score " + std::to_string(max_total) + " != " + std::to_string(v));
+        } else if (flag == "--full-marks") {
+            if (max_total <= 0 || std::abs(score - max_total) > 1e-9)
+                fail("score " + std::to_string(score) + " is not full marks " + std::to_string(max_total));
+        } else if (flag == "--full-marks-tag") {
+            // Every test tagged TAG has full points (and there is at least one).
+            const std::string tag = next();
+            int seen = 0;
+            for (const auto& t : r.value("tests", json::array())) {
+                bool tagged = false;
+                for (const auto& g : t.value("tags", json::array()))
+                    tagged = tagged || (g.is_string() && g.get<std::string>() == tag);
+                if (!tagged) continue;
+                ++seen;
+                if (t.value("score", -1.0) != t.value("max_score", -2.0))
+                    fail(t.value("name", "") + " (" + tag + ") has no full points");
+            }
+            if (!seen) fail("no test has the tag " + tag);
+        } else if (flag == "--has-tag") {
+            const std::string tag = next();
+            bool seen = false;
+            for (const auto& t : r.value("tests", json::array()))
+                for (const auto& g : t.value("tags", json::array()))
+                    seen = seen || (g.is_string() && g.get<std::string>() == tag);
+            if (!seen) fail("no test has the tag " + tag);
         } else if (flag == "--contains") {
             const std::string text = next();
             if (everything.find(text) == std::string::npos) fail("no output contains \"" + text + "\"");

@@ -10,58 +10,6 @@
 
 namespace rt {
 
-namespace {
-
-// BEGIN SOLUTION
-// gamma(3) of Higham / pbrt: a bound on the relative rounding error of the slab distances.
-constexpr Real kSlabGrowth = Real(1) + 2 * (3 * std::numeric_limits<Real>::epsilon() / 2) /
-                                           (1 - 3 * std::numeric_limits<Real>::epsilon() / 2);
-
-// A ray prepared for many slab tests: 1 / direction, and for each axis whether the near side of
-// a box is its min (direction >= 0) or its max. Choosing by sign, rather than swapping t0 and
-// t1 after computing them, keeps a NaN (0 * inf) in the slot where it is ignored.
-struct SlabRay {
-    Vec3 origin, inv_direction;
-    bool negative[3];
-
-    SlabRay(const Ray& ray, const Vec3& inv) : origin(ray.origin), inv_direction(inv) {
-        for (int axis = 0; axis < 3; ++axis) negative[axis] = inv[axis] < 0;
-    }
-
-    // No early exit and no swaps: the compiler turns this into straight-line min/max code. The
-    // exit distance is widened once, at the end (rounding is monotonic, so widening the
-    // smallest exit is the same as widening each).
-    bool hits(const BvhNode& node, Interval t_range, Real& t_entry) const {
-        Real t0 = t_range.min, t1 = kInfinity;
-        for (int axis = 0; axis < 3; ++axis) {
-            const Real lo = negative[axis] ? node.max[axis] : node.min[axis];
-            const Real hi = negative[axis] ? node.min[axis] : node.max[axis];
-            const Real near = (lo - origin[axis]) * inv_direction[axis];
-            const Real far = (hi - origin[axis]) * inv_direction[axis];
-            // A NaN (origin on the slab's plane, direction parallel to it) compares false and
-            // leaves the range as it was.
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
-        }
-        t1 *= kSlabGrowth;
-        t1 = t_range.max < t1 ? t_range.max : t1;
-        t_entry = t0;
-        return t0 <= t1;
-    }
-};
-
-// Filled per node for the bins in use only (no default initialisers: a node of a few
-// primitives should not pay for clearing kMaxBins bins).
-struct Bin {
-    Vec3f min, max;
-    std::uint32_t count;
-};
-// STUB
-// // Helper functions of your own, if you want them, go here.
-// END SOLUTION
-
-}  // namespace
-
 // Try every boundary between bins on every axis; keep the cheapest by the SAH cost model.
 SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin,
                         std::size_t end, const BvhBuildOptions& options) {
@@ -75,18 +23,24 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     const float inv_area = area > 0 ? 1 / area : 0;
     const int bins = std::clamp(options.bins, 2, kMaxBins);
 
-    // All three axes binned in one pass over the primitives.
+    // All three axes binned in one pass over the primitives. Only the bins in use are cleared
+    // (no default initialisers: a node of a few primitives should not pay for kMaxBins bins).
+    struct Bin {
+        Vec3f min, max;
+        std::uint32_t count;
+    };
     Bin bin[3][kMaxBins];
     bool spread[3];
+    float scale[3];
     for (int axis = 0; axis < 3; ++axis) {
         spread[axis] = centroids.max[axis] > centroids.min[axis];
+        scale[axis] = spread[axis] ? float(bins) / (centroids.max[axis] - centroids.min[axis]) : 0;
         for (int k = 0; k < bins; ++k) bin[axis][k] = Bin{Aabb{}.min, Aabb{}.max, 0};
     }
     for (std::size_t i = begin; i < end; ++i)
         for (int axis = 0; axis < 3; ++axis) {
             if (!spread[axis]) continue;
-            Bin& b = bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis],
-                                      centroids.max[axis], bins)];
+            Bin& b = bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis], scale[axis], bins)];
             b.min = glm::min(b.min, prims[i].bounds.min);
             b.max = glm::max(b.max, prims[i].bounds.max);
             ++b.count;
@@ -120,6 +74,8 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
         }
     }
     if (best.axis >= 0) {  // the two sides' boxes and counts, from the chosen axis's bins
+        best.centroid_lo = centroids.min[best.axis];
+        best.scale = scale[best.axis];
         for (int k = 0; k < bins; ++k) {
             const Bin& b = bin[best.axis][k];
             if (b.count == 0) continue;
@@ -167,14 +123,11 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
             continue;
         }
         // Partition by the very same bin computation the split was chosen with.
-        Aabb centroids;
-        for (std::uint32_t i = task.begin; i < task.end; ++i) centroids.grow(prims[i].centroid);
         const int axis = split.axis;
         const int bins = std::clamp(options.bins, 2, kMaxBins);
         const auto middle = std::partition(
             prims.begin() + task.begin, prims.begin() + task.end, [&](const BvhPrimitive& p) {
-                return bin_of(p.centroid[axis], centroids.min[axis], centroids.max[axis], bins) <
-                       split.bin;
+                return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
             });
         const std::uint32_t mid = std::uint32_t(middle - prims.begin());
 
@@ -195,7 +148,27 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
 bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_direction,
                     Interval t_range, Real& t_entry) {
     // BEGIN SOLUTION
-    return SlabRay(ray, inv_direction).hits(node, t_range, t_entry);
+    // gamma(3) of Higham and pbrt: a bound on the relative rounding error of the distances.
+    constexpr Real eps = std::numeric_limits<Real>::epsilon() / 2;
+    constexpr Real growth = 1 + 2 * (3 * eps) / (1 - 3 * eps);
+    Real t0 = t_range.min, t1 = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        // The near side of the slab is min for a positive direction, max for a negative one.
+        // Choosing by sign (instead of swapping the two distances) leaves a NaN (0 * inf: origin
+        // on the slab's plane, direction parallel to it) where the comparisons below ignore it.
+        const bool negative = inv_direction[axis] < 0;
+        const Real near_side = negative ? node.max[axis] : node.min[axis];
+        const Real far_side = negative ? node.min[axis] : node.max[axis];
+        const Real near = (near_side - ray.origin[axis]) * inv_direction[axis];
+        const Real far = (far_side - ray.origin[axis]) * inv_direction[axis];
+        t0 = near > t0 ? near : t0;  // no early exit: straight-line min/max code is faster
+        t1 = far < t1 ? far : t1;
+    }
+    // Widen the exit once (rounding is monotonic: the same as widening each far distance).
+    t1 *= growth;
+    t1 = t_range.max < t1 ? t_range.max : t1;
+    t_entry = t0;
+    return t0 <= t1;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#ray-box-slab-test");
     // return false;
@@ -216,7 +189,7 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
     if (!scene.bvh.built()) return found;
 
     const std::vector<BvhNode>& nodes = scene.bvh.nodes;
-    const SlabRay slab(ray, Real(1) / ray.direction);
+    const Vec3 inv_direction = Real(1) / ray.direction;
     std::uint32_t visited = 1, tested = 0;
     struct Entry {
         std::uint32_t node;
@@ -225,7 +198,7 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
     Entry stack[kBvhMaxDepth];
     int top = 0;
     Real t_root;
-    if (slab.hits(nodes[0], t_range, t_root)) stack[top++] = {0, t_root};
+    if (intersect_node(nodes[0], ray, inv_direction, t_range, t_root)) stack[top++] = {0, t_root};
     while (top > 0) {
         const Entry entry = stack[--top];
         if (entry.t > t_range.max) continue;  // a nearer hit was found after it was pushed
@@ -234,8 +207,8 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
             const BvhNode* near = &nodes[node->first];
             const BvhNode* far = near + 1;
             Real t_near, t_far;
-            const bool hit_near = slab.hits(*near, t_range, t_near);
-            const bool hit_far = slab.hits(*far, t_range, t_far);
+            const bool hit_near = intersect_node(*near, ray, inv_direction, t_range, t_near);
+            const bool hit_far = intersect_node(*far, ray, inv_direction, t_range, t_far);
             visited += 2;
             if (hit_near && hit_far) {
                 if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
@@ -277,13 +250,13 @@ bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, Bvh
     if (!scene.bvh.built()) return false;
 
     const std::vector<BvhNode>& nodes = scene.bvh.nodes;
-    const SlabRay slab(ray, Real(1) / ray.direction);
+    const Vec3 inv_direction = Real(1) / ray.direction;
     std::uint32_t visited = 1, tested = 0;
     bool found = false;
     std::uint32_t stack[kBvhMaxDepth + 1];  // depth-first: at most one pending sibling per level
     int top = 0;
     Real t;
-    if (slab.hits(nodes[0], t_range, t)) stack[top++] = 0;
+    if (intersect_node(nodes[0], ray, inv_direction, t_range, t)) stack[top++] = 0;
     while (top > 0 && !found) {
         const BvhNode& node = nodes[stack[--top]];
         if (node.is_leaf()) {
@@ -295,7 +268,7 @@ bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, Bvh
         }
         visited += 2;
         for (std::uint32_t child = node.first; child < node.first + 2; ++child)
-            if (slab.hits(nodes[child], t_range, t)) stack[top++] = child;
+            if (intersect_node(nodes[child], ray, inv_direction, t_range, t)) stack[top++] = child;
     }
     if (stats) stats->nodes_visited += visited, stats->primitives_tested += tested;
     return found;

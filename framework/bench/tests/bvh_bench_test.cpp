@@ -12,7 +12,9 @@
 namespace rt::bench {
 namespace {
 
-RayResult hit_at(Real t, int primitive) { return RayResult{t, primitive}; }
+RayResult hit_at(Real t, int primitive) {
+    return RayResult{t, primitive};
+}
 const RayResult kMiss{};
 
 // Equal answers, and a t difference inside the relative tolerance, are no disagreement.
@@ -160,7 +162,8 @@ TEST(BvhBench, RaysAreDeterministicAndWellFormed) {
         ASSERT_EQ(a.size(), b.size());
         for (std::size_t i = 0; i < a.size(); ++i) {
             ASSERT_EQ(a.rays[i].origin, b.rays[i].origin) << to_string(a.kind) << " ray " << i;
-            ASSERT_EQ(a.rays[i].direction, b.rays[i].direction) << to_string(a.kind) << " ray " << i;
+            ASSERT_EQ(a.rays[i].direction, b.rays[i].direction)
+                << to_string(a.kind) << " ray " << i;
             ASSERT_EQ(a.ranges[i].max, b.ranges[i].max);
             ASSERT_NEAR(double(glm::length(a.rays[i].direction)), 1.0, 1e-5);
             ASSERT_LT(a.ranges[i].min, a.ranges[i].max);

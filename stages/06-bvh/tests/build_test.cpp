@@ -29,8 +29,9 @@ float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k, co
     Aabb all, centroids, left, right;
     for (const auto& p : prims) all.grow(p.bounds), centroids.grow(p.centroid);
     std::uint32_t n_left = 0, n_right = 0;
+    const float scale = float(o.bins) / (centroids.max[axis] - centroids.min[axis]);
     for (const auto& p : prims) {
-        if (bin_of(p.centroid[axis], centroids.min[axis], centroids.max[axis], o.bins) < k)
+        if (bin_of(p.centroid[axis], centroids.min[axis], scale, o.bins) < k)
             left.grow(p.bounds), ++n_left;
         else
             right.grow(p.bounds), ++n_right;
@@ -78,6 +79,11 @@ TEST_F(SahSplitTest, CostIsTheMinimumOverAllBinBoundaries) {
         EXPECT_EQ(split.bin, best_bin) << "trial " << trial;
         EXPECT_NEAR(split.cost, best, 1e-4f * best) << "trial " << trial;
         EXPECT_EQ(split.left_count + split.right_count, std::uint32_t(n));
+        // The split carries what the partition needs: it must reproduce left_count.
+        std::uint32_t left = 0;
+        for (const BvhPrimitive& p : prims)
+            left += bin_of(p.centroid[split.axis], split.centroid_lo, split.scale, options.bins) < split.bin;
+        EXPECT_EQ(left, split.left_count) << "trial " << trial << ": centroid_lo and scale do not reproduce the split";
     }
 }
 
