@@ -15,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "apps/cli_parse.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "render/accelerate.h"
@@ -208,17 +209,8 @@ int main(int argc, char** argv) {
     auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
     gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        // One line, compiler-style, exit code 2 (usage error), instead of CLI11's two lines.
-        std::fprintf(stderr, "rt: error: %s; run `rt --help` or `rt render --help`\n", e.what());
-        return 2;
-    }
+    if (const auto stop = parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
+        return *stop;
 
     try {
         if (*render_cmd) {

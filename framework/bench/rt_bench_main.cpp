@@ -9,6 +9,7 @@
 #include <iostream>
 #include <thread>
 
+#include "apps/cli_parse.h"
 #include "bench/accuracy.h"
 #include "bench/bvh_bench.h"
 
@@ -110,17 +111,7 @@ int main(int argc, char** argv) {
     acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        // One line, exit code 2 (a usage error), as `rt` does.
-        std::fprintf(stderr, "rt-bench: error: %s; run `rt-bench --help`\n", e.what());
-        return 2;
-    }
+    if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`")) return *stop;
     try {
         if (acc->parsed()) {
             for (const CLI::Option* option : app.get_options())

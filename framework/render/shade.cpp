@@ -41,6 +41,16 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
         known ? scene.materials[std::size_t(hit.material)] : kDefaultMaterial;
     const SurfacePoint at = surface_point(scene, ray, hit);
     const Vec3 to_viewer = -glm::normalize(ray.direction);
+    // Meshes with vertex normals are lit with the interpolated normal (smooth shading); ray
+    // origins and mirror directions keep the geometric one, which the offsets are built on.
+    Vec3 lighting_normal = at.normal;
+    if (!scene.normals.empty()) {
+        std::size_t index = 0;
+        if (scene.primitive_kind(hit.primitive, index) == Scene::Kind::Triangle) {
+            const Vec3 smooth = shading_normal(scene, index, hit.uv);
+            if (smooth != Vec3(0)) lighting_normal = hit.front_face ? smooth : -smooth;
+        }
+    }
 
     Color local;
     if (scene.features.shadows) {
@@ -69,10 +79,10 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
             }
             return transmittance;
         };
-        local =
-            direct_light(scene, material, at.point, at.normal, to_viewer, LightFilter(visibility));
+        local = direct_light(scene, material, at.point, lighting_normal, to_viewer,
+                             LightFilter(visibility));
     } else {
-        local = direct_light(scene, material, at.point, at.normal, to_viewer);
+        local = direct_light(scene, material, at.point, lighting_normal, to_viewer);
     }
     if (node) {
         node->hit = true, node->hit_record = hit, node->surface = at;

@@ -413,17 +413,7 @@ TEST(ObjLoaderRobustness, RandomByteEditsOfAValidObj) {
     const std::string alphabet = std::string("0123456789-+./ \n\r\tvtnfe#lpsgo") + '\0' + "\x01\xff\xc3";
     std::mt19937 random(2718);  // fixed seed: a failure names the input and is reproducible
     for (int round = 0; round < 1000; ++round) {
-        std::string mutant = obj;
-        int edits = 1 + int(random() % 4);
-        for (int e = 0; e < edits && !mutant.empty(); ++e) {
-            std::size_t at = random() % mutant.size();
-            char c = alphabet[random() % alphabet.size()];
-            switch (random() % 3) {
-                case 0: mutant[at] = c; break;
-                case 1: mutant.insert(mutant.begin() + long(at), c); break;
-                default: mutant.erase(at, 1 + random() % 8); break;
-            }
-        }
+        const std::string mutant = rt::testing::mutate(obj, alphabet, random);
         dir.write("m.obj", mutant);
         expect_no_crash(dir, mutant);
         if (HasFatalFailure()) return;

@@ -519,17 +519,7 @@ TEST(SceneLoaderRobustness, RandomMutationsOfAValidScene) {
     const std::string alphabet = "{}[]\":,-+.eE0123456789 \n\\/tfnu\x01\xff\xc3";
     std::mt19937 random(12345);  // fixed seed: failures are reproducible
     for (int round = 0; round < 3000; ++round) {
-        std::string mutant = text;
-        int edits = 1 + int(random() % 4);
-        for (int e = 0; e < edits && !mutant.empty(); ++e) {
-            std::size_t at = random() % mutant.size();
-            char c = alphabet[random() % alphabet.size()];
-            switch (random() % 3) {
-                case 0: mutant[at] = c; break;
-                case 1: mutant.insert(mutant.begin() + long(at), c); break;
-                default: mutant.erase(at, 1 + random() % 8); break;
-            }
-        }
+        const std::string mutant = rt::testing::mutate(text, alphabet, random);
         expect_no_crash(mutant, dir.path());
     }
 }
