@@ -226,6 +226,7 @@ BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
     if (!config.mesh_file.empty()) {
         ObjMesh obj =
             load_obj(config.mesh_file, config.mesh_file, Vec3(1), Vec3(0), std::size_t(1) << 26);
+        for (const std::string& warning : obj.warnings) std::fprintf(stderr, "rt-bench: warning: %s\n", warning.c_str());
         s.vertices = std::move(obj.vertices);
         s.triangles.reserve(obj.triangles.size());
         for (const auto& t : obj.triangles) s.triangles.push_back(Triangle{t, 0});

@@ -145,6 +145,9 @@ struct ObjSummary {
     std::vector<MaterialLibrary> libraries;
     bool usemtl_before_mtllib = false;      // tinyobjloader only honours usemtl after mtllib
     std::size_t triangle_count = 0;         // after triangulation
+    // First face line naming a "vt" / "vn" index in a file that has no such line at all: some
+    // exporters write "f 1/1/1 ..." regardless. Those indices are ignored (with a warning).
+    std::size_t dangling_uv_line = 0, dangling_normal_line = 0;
 };
 
 // Checks the numbers of a "v", "vn" or "vt" line: between `min` and `max` of them, all finite.
@@ -257,12 +260,15 @@ ObjSummary check_obj_text(const std::string& text, const std::string& name) {
                      "face index " + std::to_string(c.v) + " out of range (the file has " +
                          std::to_string(vertex_count) + " vertices)",
                      "fix the face or the vertex list");
-            if (c.vt && !resolve_index(c.vt, uvs_so_far, summary.uv_count))
+            if (c.vt && summary.uv_count == 0 && summary.dangling_uv_line == 0) summary.dangling_uv_line = line;
+            if (c.vn && summary.normal_count == 0 && summary.dangling_normal_line == 0)
+                summary.dangling_normal_line = line;
+            if (c.vt && summary.uv_count > 0 && !resolve_index(c.vt, uvs_so_far, summary.uv_count))
                 fail(name, line,
                      "texture coordinate index " + std::to_string(c.vt) + " out of range (the file has " +
                          std::to_string(summary.uv_count) + " \"vt\" line" + (summary.uv_count == 1 ? ")" : "s)"),
                      "fix the face or the \"vt\" list");
-            if (c.vn && !resolve_index(c.vn, normals_so_far, summary.normal_count))
+            if (c.vn && summary.normal_count > 0 && !resolve_index(c.vn, normals_so_far, summary.normal_count))
                 fail(name, line,
                      "normal index " + std::to_string(c.vn) + " out of range (the file has " +
                          std::to_string(summary.normal_count) + " \"vn\" line" + (summary.normal_count == 1 ? ")" : "s)"),
@@ -486,6 +492,15 @@ ObjMesh load_obj(const fs::path& file, const std::string& name, Vec3 scale, Vec3
     // Material definitions are read only for usemtl names the scene does not supply, and only
     // when the file names a library at all.
     ObjMesh mesh;
+    auto warn = [&](std::size_t line, const std::string& what) {
+        mesh.warnings.push_back("mesh \"" + name + "\" line " + std::to_string(line) + ": " + what);
+    };
+    if (summary.dangling_uv_line)
+        warn(summary.dangling_uv_line, "faces name texture coordinates but the file has no \"vt\" line; "
+                                       "the mesh is loaded without uvs");
+    if (summary.dangling_normal_line)
+        warn(summary.dangling_normal_line, "faces name normals but the file has no \"vn\" line; "
+                                           "the mesh is loaded without vertex normals");
     mesh.materials = summary.materials;
     mesh.has_mtllib = !summary.libraries.empty();
     std::vector<bool> wanted(mesh.materials.size());
@@ -524,8 +539,11 @@ ObjMesh load_obj(const fs::path& file, const std::string& name, Vec3 scale, Vec3
     const std::size_t normal_count = attrib.normals.size() / 3;
     const std::size_t uv_count = attrib.texcoords.size() / 2;
     bool has_normals = false, has_uvs = false;
-    for (const tinyobj::shape_t& shape : shapes)
-        for (const tinyobj::index_t& index : shape.mesh.indices) {
+    // A file without any "vt" ("vn") line has no uvs (normals), whatever its faces say.
+    for (tinyobj::shape_t& shape : shapes)
+        for (tinyobj::index_t& index : shape.mesh.indices) {
+            if (uv_count == 0) index.texcoord_index = -1;
+            if (normal_count == 0) index.normal_index = -1;
             has_normals |= index.normal_index >= 0;
             has_uvs |= index.texcoord_index >= 0;
         }

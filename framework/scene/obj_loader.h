@@ -46,6 +46,9 @@ struct ObjMesh {
     std::vector<int> triangle_material;
     std::vector<ObjMaterial> materials;  // distinct usemtl names, first use first
     bool has_mtllib = false;              // the file names at least one material library
+    // Harmless oddities that were worked around, one line each (`mesh "<name>" line N: ...`),
+    // e.g. faces naming texture coordinates in a file with no "vt" line at all.
+    std::vector<std::string> warnings;
 };
 
 // Decides whether the scene itself supplies the material for a usemtl name (then the .mtl

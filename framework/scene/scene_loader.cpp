@@ -2,6 +2,7 @@
 // the parsed value into a Scene and checks every field, so that a mistake in a scene file is
 // reported as one compiler-style line pointing at the offending value instead of a crash or a
 // silently wrong picture.
+#include <cstdio>
 #include "scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -795,6 +796,8 @@ private:
         } catch (const ObjError& e) {
             fail_at(positions_->value_offset(file_pointer), e.what());
         }
+        for (const std::string& warning : mesh.warnings)
+            std::fprintf(stderr, "%s: warning: %s\n", scene_.source.c_str(), warning.c_str());
         check_vertex_room(mesh.vertices.size(), file_pointer);
         std::vector<int> by_obj_material;
         for (const ObjMaterial& m : mesh.materials) {

@@ -137,6 +137,25 @@ TEST(ObjLoader, NormalsAndUvsGetOneVertexPerCombination) {
     for (std::size_t v = 0; v < 6; ++v) EXPECT_EQ(mesh.vertices[v], order[v]) << v;
 }
 
+// Some exporters write "f 1/1/1 ..." into files without any "vt" or "vn" line (the dragon of
+// ../shared/data/meshes does). Nothing is there to index, so the indices are dropped with a
+// warning naming the first such line, rather than refusing the mesh.
+TEST(ObjLoader, IndicesIntoAbsentUvAndNormalListsAreDroppedWithAWarning) {
+    TempDir dir("dangling");
+    const auto file = dir.write("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n# faces\nf 1/1/1 2/1/1 3/1/1\nf 2/1/1 4/1/1 3/1/1\n");
+    const rt::ObjMesh mesh = load(file);
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.vertices.size(), 4u) << "no uvs or normals: vertices stay one per position";
+    EXPECT_TRUE(mesh.uvs.empty());
+    EXPECT_TRUE(mesh.normals.empty());
+    ASSERT_EQ(mesh.warnings.size(), 2u);
+    EXPECT_EQ(mesh.warnings[0].rfind("mesh \"d.obj\" line 6: faces name texture coordinates", 0), 0u) << mesh.warnings[0];
+    EXPECT_EQ(mesh.warnings[1].rfind("mesh \"d.obj\" line 6: faces name normals", 0), 0u) << mesh.warnings[1];
+    // With one "vt" line the same index 2 is out of range: that stays an error.
+    const auto bad = dir.write("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n");
+    EXPECT_NE(error_of(bad).find("texture coordinate index 2 out of range"), std::string::npos) << error_of(bad);
+}
+
 TEST(ObjLoader, CornersWithoutNormalsGetTheZeroSentinel) {
     TempDir dir("obj-partial-normals");
     fs::path file = dir.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
