@@ -625,6 +625,13 @@ void open_channel(TestChannel& c, const fs::path& dir) {
     c.nonce_read = p[0];
     // No name: nothing in the child can open it by path (it can only write to the descriptor).
     c.results = open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+    if (c.results < 0) {
+        // Filesystems without O_TMPFILE (overlayfs before Linux 6.6, as in many containers): a
+        // file of a random name, unlinked before the child starts.
+        std::string name = (dir / ".channel-XXXXXX").string();
+        c.results = mkostemp(name.data(), O_CLOEXEC);
+        if (c.results >= 0) unlink(name.c_str());
+    }
     c.ok = written && c.results >= 0;
 }
 

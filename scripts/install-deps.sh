@@ -16,6 +16,7 @@ packages=(
   libembree-dev                       # rt-bench: Embree 3, the BVH benchmark's yardstick (optional)
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
+  jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

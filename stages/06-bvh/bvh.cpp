@@ -109,6 +109,11 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
         int depth;
     };
     std::vector<Task> tasks{{0, 0, std::uint32_t(prims.size()), 1}};
+    auto make_leaf = [&](const Task& task) {
+        for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
+        bvh.nodes[task.node].first = task.begin;
+        bvh.nodes[task.node].count = task.end - task.begin;
+    };
     while (!tasks.empty()) {
         const Task task = tasks.back();
         tasks.pop_back();
@@ -116,10 +121,8 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
         SahSplit split;
         if (count > std::uint32_t(options.max_leaf_size) && task.depth < kBvhMaxDepth)
             split = find_sah_split(prims, task.begin, task.end, options);
-        if (split.axis < 0 || split.cost >= float(count)) {  // a leaf
-            for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
-            bvh.nodes[task.node].first = task.begin;
-            bvh.nodes[task.node].count = count;
+        if (split.axis < 0 || split.cost >= float(count)) {
+            make_leaf(task);
             continue;
         }
         // Partition by the very same bin computation the split was chosen with.
@@ -130,10 +133,20 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
                 return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
             });
         const std::uint32_t mid = std::uint32_t(middle - prims.begin());
+        // The children's boxes are taken from the primitives each side really got, not from the
+        // split's bins: if the compiler evaluated bin_of a little differently here than in
+        // find_sah_split (as -ffast-math allows), the tree must still be valid.
+        Aabb left_bounds, right_bounds;
+        for (std::uint32_t i = task.begin; i < mid; ++i) left_bounds.grow(prims[i].bounds);
+        for (std::uint32_t i = mid; i < task.end; ++i) right_bounds.grow(prims[i].bounds);
+        if (mid == task.begin || mid == task.end) {  // the same safety: never an empty child
+            make_leaf(task);
+            continue;
+        }
 
         const std::uint32_t left = std::uint32_t(bvh.nodes.size());
-        bvh.nodes.push_back(BvhNode{split.left_bounds.min, 0, split.left_bounds.max, 0});
-        bvh.nodes.push_back(BvhNode{split.right_bounds.min, 0, split.right_bounds.max, 0});
+        bvh.nodes.push_back(BvhNode{left_bounds.min, 0, left_bounds.max, 0});
+        bvh.nodes.push_back(BvhNode{right_bounds.min, 0, right_bounds.max, 0});
         bvh.nodes[task.node].first = left;
         bvh.nodes[task.node].count = 0;
         tasks.push_back({left + 1, mid, task.end, task.depth + 1});
