@@ -4,6 +4,7 @@
 // You edit only this file. Tests: ctest --test-dir build -L stage06
 // Check a tree any time with validate_bvh (framework/accel/bvh.h): it names the first problem.
 #include <algorithm>
+#include <thread>
 
 #include "core/not_implemented.h"
 #include "student/stage06.h"
@@ -95,62 +96,97 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
     // BEGIN SOLUTION
     bvh = Bvh{};
     if (prims.empty()) return;
-    bvh.nodes.reserve(2 * prims.size());
-    bvh.primitives.resize(prims.size());
+    const std::uint32_t n = std::uint32_t(prims.size());
+    bvh.primitives.resize(n);
 
-    Aabb root_bounds;
-    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
-    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
-
-    // Work list instead of recursion: a degenerate mesh may be deep.
     struct Task {
-        std::uint32_t node;
+        std::uint32_t node;  // index in the `nodes` being built
         std::uint32_t begin, end;
         int depth;
     };
-    std::vector<Task> tasks{{0, 0, std::uint32_t(prims.size()), 1}};
-    auto make_leaf = [&](const Task& task) {
-        for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
-        bvh.nodes[task.node].first = task.begin;
-        bvh.nodes[task.node].count = task.end - task.begin;
-    };
-    while (!tasks.empty()) {
-        const Task task = tasks.back();
-        tasks.pop_back();
+    // Makes task.node a leaf, or splits it: partitions its primitives, appends its two children
+    // (boxes set, adjacent) to `nodes` and their tasks to `tasks`, left task last.
+    auto split_node = [&](const Task& task, std::vector<BvhNode>& nodes, std::vector<Task>& tasks) {
         const std::uint32_t count = task.end - task.begin;
         SahSplit split;
         if (count > std::uint32_t(options.max_leaf_size) && task.depth < kBvhMaxDepth)
             split = find_sah_split(prims, task.begin, task.end, options);
-        if (split.axis < 0 || split.cost >= float(count)) {
-            make_leaf(task);
-            continue;
-        }
-        // Partition by the very same bin computation the split was chosen with.
-        const int axis = split.axis;
-        const int bins = std::clamp(options.bins, 2, kMaxBins);
-        const auto middle = std::partition(
-            prims.begin() + task.begin, prims.begin() + task.end, [&](const BvhPrimitive& p) {
+        std::uint32_t mid = task.begin;
+        if (split.axis >= 0 && split.cost < float(count)) {
+            // Partition by the very same bin computation the split was chosen with.
+            const int axis = split.axis;
+            const int bins = std::clamp(options.bins, 2, kMaxBins);
+            const auto left_side = [&](const BvhPrimitive& p) {
                 return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
-            });
-        const std::uint32_t mid = std::uint32_t(middle - prims.begin());
-        // The children's boxes are taken from the primitives each side really got, not from the
+            };
+            mid = std::uint32_t(std::partition(prims.begin() + task.begin, prims.begin() + task.end, left_side) -
+                                prims.begin());
+        }
+        if (mid == task.begin || mid == task.end) {  // a leaf (or, defensively, an empty side)
+            for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
+            nodes[task.node].first = task.begin;
+            nodes[task.node].count = count;
+            return;
+        }
+        // The children's boxes come from the primitives each side really got, not from the
         // split's bins: if the compiler evaluated bin_of a little differently here than in
         // find_sah_split (as -ffast-math allows), the tree must still be valid.
         Aabb left_bounds, right_bounds;
         for (std::uint32_t i = task.begin; i < mid; ++i) left_bounds.grow(prims[i].bounds);
         for (std::uint32_t i = mid; i < task.end; ++i) right_bounds.grow(prims[i].bounds);
-        if (mid == task.begin || mid == task.end) {  // the same safety: never an empty child
-            make_leaf(task);
-            continue;
-        }
-
-        const std::uint32_t left = std::uint32_t(bvh.nodes.size());
-        bvh.nodes.push_back(BvhNode{left_bounds.min, 0, left_bounds.max, 0});
-        bvh.nodes.push_back(BvhNode{right_bounds.min, 0, right_bounds.max, 0});
-        bvh.nodes[task.node].first = left;
-        bvh.nodes[task.node].count = 0;
+        const std::uint32_t left = std::uint32_t(nodes.size());
+        nodes.push_back(BvhNode{left_bounds.min, 0, left_bounds.max, 0});
+        nodes.push_back(BvhNode{right_bounds.min, 0, right_bounds.max, 0});
+        nodes[task.node].first = left;
+        nodes[task.node].count = 0;
         tasks.push_back({left + 1, mid, task.end, task.depth + 1});
         tasks.push_back({left, task.begin, mid, task.depth + 1});
+    };
+    // A work list instead of recursion: a degenerate mesh may make a deep tree.
+    auto build_subtree = [&](Task task, std::vector<BvhNode>& nodes) {
+        std::vector<Task> tasks{task};
+        while (!tasks.empty()) {
+            const Task next = tasks.back();
+            tasks.pop_back();
+            split_node(next, nodes, tasks);
+        }
+    };
+
+    Aabb root_bounds;
+    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
+    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
+    std::vector<Task> children;
+    split_node({0, 0, n, 1}, bvh.nodes, children);
+    if (children.empty()) return;  // the root is a leaf
+
+    // The root's two subtrees are independent: build each into a vector of its own (its root at
+    // local index 0), the right one on a second thread when the mesh is large, then lay them out
+    // after the root: root, left child, right child, the rest of the left subtree, the rest of
+    // the right. The layout does not depend on the thread, so the tree is the same on every run.
+    std::vector<BvhNode> sub[2] = {{bvh.nodes[1]}, {bvh.nodes[2]}};
+    const Task left_task{0, children[1].begin, children[1].end, 2};
+    const Task right_task{0, children[0].begin, children[0].end, 2};
+    sub[0].reserve(2 * std::size_t(left_task.end - left_task.begin));
+    sub[1].reserve(2 * std::size_t(right_task.end - right_task.begin));
+    constexpr std::uint32_t kParallelFrom = 20000;  // below, a thread costs more than it saves
+    if (n >= kParallelFrom && std::thread::hardware_concurrency() > 1) {
+        std::thread right([&] { build_subtree(right_task, sub[1]); });
+        build_subtree(left_task, sub[0]);
+        right.join();
+    } else {
+        build_subtree(left_task, sub[0]);
+        build_subtree(right_task, sub[1]);
+    }
+    bvh.nodes.resize(1 + sub[0].size() + sub[1].size());
+    std::uint32_t offset = 3;  // where the subtree's nodes after its root go
+    for (std::uint32_t side = 0; side < 2; ++side) {
+        const auto place = [&](std::uint32_t local) { return local == 0 ? 1 + side : offset + local - 1; };
+        for (std::uint32_t local = 0; local < sub[side].size(); ++local) {
+            BvhNode node = sub[side][local];
+            if (!node.is_leaf()) node.first = place(node.first);
+            bvh.nodes[place(local)] = node;
+        }
+        offset += std::uint32_t(sub[side].size()) - 1;
     }
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#building-the-tree");
