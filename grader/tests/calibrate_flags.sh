@@ -7,6 +7,7 @@
 # BUILD_DIR/NAME is kept between runs, so a rerun only rebuilds what changed.
 set -uo pipefail
 bin=$1 src=$2 build=$3/$4 name=$4 flags=$5 launcher=${6:-}
+mkdir -p "$3" || { echo "FAIL: cannot create $3"; exit 1; }
 args=(-S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=OFF
       "-DCMAKE_CXX_FLAGS_RELEASE=$flags -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=$flags -DNDEBUG")
 [ -n "$launcher" ] && args+=(-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher")
