@@ -63,21 +63,24 @@ TEST_F(SlabTest, FlatBoxOfAnAxisAlignedTriangle) {
 }
 
 TEST_F(SlabTest, NeverLosesABoxToRounding) {
-    // Rays aimed at points on the faces of a box far from the origin, from far away: the
+    // Rays aimed at points on the edges of a box far from the origin, from far away: the
     // computed entry may round past the exit; the slab test must widen its far bound for that.
     Random random(11);
     const BvhNode node{Vec3f(1000.25f, -3.5f, 7), 0, Vec3f(1000.75f, -3.25f, 7.125f), 1};
     int lost = 0;
     for (int i = 0; i < 20000; ++i) {
+        // On an edge: two coordinates on the box's bounds, where the entry through one slab and
+        // the exit through another coincide and rounding decides.
         Vec3 target = Vec3(node.min) + (Vec3(node.max) - Vec3(node.min)) * random.point(0, 1);
-        const int axis = i % 3;
-        target[axis] = (i / 3) % 2 ? node.min[axis] : node.max[axis];  // on a face
+        const int axis = i % 3, other = (axis + 1 + (i / 3) % 2) % 3;
+        target[axis] = (i / 6) % 2 ? node.min[axis] : node.max[axis];
+        target[other] = (i / 12) % 2 ? node.min[other] : node.max[other];
         const Vec3 origin = target + random.direction() * Real(500);
         const Ray ray{origin, target - origin};
         Real t;
         if (!intersect_node(node, ray, Real(1) / ray.direction, Interval{0, kInfinity}, t)) ++lost;
     }
-    EXPECT_EQ(lost, 0) << "rays aimed at points on the box's faces missed it";
+    EXPECT_EQ(lost, 0) << "rays aimed at points on the box's edges missed it";
 }
 
 // Compares one ray's answers: BVH nearest vs stage 02 loop, BVH any-hit vs "nearest exists".
