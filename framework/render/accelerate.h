@@ -20,12 +20,17 @@ struct AccelerationReport {
 };
 
 // Builds scene.bvh when scene.accelerator == Accelerator::Bvh, and checks it (validate_bvh).
-// A stubbed or invalid build leaves scene.bvh empty, so rendering falls back to stage 02's loop
-// (same image, only slower) after one message on stderr naming the problem and the handout.
+// An invalid tree is reported on stderr (naming the problem and the handout) and dropped:
+// scene.accelerator becomes None, and rendering uses stage 02's loop (same image, slower).
+// A stubbed build_bvh leaves the scene asking for a tree it has not got: nearest_hit then counts
+// every query as a stub call, so the image is magenta at once, like any other stub.
 AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options = {});
 
 // The nearest hit: the BVH (stage 06) when the scene has one, else stage 02's intersect_nearest.
 bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit);
+
+// Counts a stub call for a query that needed the BVH that a stubbed build_bvh did not make.
+void count_missing_bvh();
 
 // True when the scene's queries go through a built BVH.
 inline bool uses_bvh(const Scene& scene) {

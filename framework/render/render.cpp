@@ -56,6 +56,10 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     }
     Hit hit;
     if (mode == RenderMode::BvhVisits) {  // the count goes through `depth`, mapped at the end
+        if (!uses_bvh(scene)) {  // a stubbed build_bvh: magenta, like any stub
+            count_missing_bvh();
+            return out;
+        }
         BvhStats stats;
         bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &stats);
         out.depth = Real(stats.nodes_visited);
@@ -114,11 +118,10 @@ int resolve_thread_count(int threads) {
 }
 
 Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
-    if (mode == RenderMode::BvhVisits && !uses_bvh(scene))
-        throw std::runtime_error(scene.source + ": mode \"bvh_visits\" needs the scene's BVH, which " +
-                                 (scene.accelerator == Accelerator::Bvh
-                                      ? std::string("build_bvh did not produce (see the message above)")
-                                      : std::string("it does not ask for; add \"accelerator\": \"bvh\" to \"render\" (or pass --accelerator bvh)")));
+    if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
+        throw std::runtime_error(scene.source + ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
+                                 "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh (if it has that, the "
+                                 "message above says why its tree was dropped)");
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     std::vector<Real> depth(std::size_t(width) * height, -1);
