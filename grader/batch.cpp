@@ -20,18 +20,15 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
         if (e.is_directory() || e.path().extension() == ".zip") submissions.push_back(e.path());
     std::sort(submissions.begin(), submissions.end());
     jobs = std::max(1, std::min<int>(jobs, int(submissions.size())));
-    for (int slot = 0; slot < jobs; ++slot) {
-        GradeOptions o = base;
-        o.slot = slot;
-        if (!prepare_workspace(o, log)) return 1;
-    }
+    // One workspace serves every job: gradings only read it (each links in a scratch folder).
+    if (!prepare_workspace(base, log)) return 1;
     fs::create_directories(out);
     std::vector<std::string> rows(submissions.size());
     std::vector<int> stage_numbers;
     std::mutex mutex;
     std::size_t next = 0;
     const int per_job_tests = std::max(1, int(std::thread::hardware_concurrency()) / jobs);
-    auto worker = [&](int slot) {
+    auto worker = [&]() {
         for (;;) {
             std::size_t i;
             {
@@ -43,7 +40,6 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
             if (name.ends_with(".zip")) name.resize(name.size() - 4);
             name = clean_output(name);
             GradeOptions o = base;
-            o.slot = slot;
             o.submission = submissions[i];
             o.results = out / name / "results.json";
             o.html = out / name / "report.html";
@@ -76,7 +72,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
         }
     };
     std::vector<std::thread> pool;
-    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker, j);
+    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
     std::string csv = "submission,score,max_score";
     char cell[32];

@@ -55,7 +55,6 @@ struct GradeOptions {
     std::vector<int> stages;            // empty: every stage with a grading.json
     std::filesystem::path results;      // Gradescope results.json (optional)
     std::filesystem::path html;         // HTML report (optional)
-    int slot = 0;                       // workspace slot (batch: one per job)
     int jobs = 0;                       // parallel test processes (0: hardware threads)
     bool quiet = false;                 // no terminal summary
     bool reveal_hidden = false;         // terminal summary shows hidden tests (instructor)
@@ -71,7 +70,8 @@ struct GradeSummary {
     double seconds = 0;
 };
 
-// Builds (or reuses) the workspace of `slot`; prints progress to log. Returns false on failure.
+// Builds (or reuses) the grading workspace (workspace.h); prints progress to log. Returns false
+// on failure.
 bool prepare_workspace(const GradeOptions& options, std::ostream& log);
 
 // Grades one submission. Never throws for problems of the submission itself; results.json is

@@ -81,8 +81,8 @@ int main(int argc, char** argv) {
 
     CLI::App* prepare_cmd = app.add_subcommand(
         "prepare", "Build the grading workspace now (otherwise the first grading does it)");
-    int slots = 1;
-    prepare_cmd->add_option("--slots", slots, "workspaces to prepare (one per batch job)");
+    int slots = 1;  // accepted for old scripts: one workspace now serves every job
+    prepare_cmd->add_option("--slots", slots, "ignored (one workspace serves every batch job)");
 
     std::string batch_dir, batch_out = "grades";
     int batch_jobs = 1;
@@ -119,11 +119,7 @@ int main(int argc, char** argv) {
             return rt::grader::run_release(release, std::cout, std::cerr);
         }
         if (*prepare_cmd) {
-            for (int slot = 0; slot < slots; ++slot) {
-                grade.slot = slot;
-                if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
-            }
-            return 0;
+            return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
         }
         if (*batch_cmd) return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
         if (*compare_cmd) {

@@ -1,15 +1,20 @@
 #include "sandbox.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <grp.h>
+#include <linux/capability.h>
+#include <pwd.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <grp.h>
 
 #include <chrono>
 #include <cstdio>
@@ -24,10 +29,74 @@ namespace fs = std::filesystem;
 namespace rt::grader {
 namespace {
 
-constexpr uid_t kNobody = 65534;
+// ---------------------------------------------------------------- uid leases
+
+// Sandbox uids: none of them is a user of the machine; each is leased to one run at a time
+// through an flock on a file in a root-only folder, so concurrent gradings (batch jobs, two
+// instructors, CI) never share a uid, and with it RLIMIT_NPROC or the right to signal.
+constexpr uid_t kUidBase = 2'000'000;
+constexpr int kUidCount = 4096;
+
+struct UidLease {
+    uid_t uid = 0;
+    int fd = -1;
+    UidLease() = default;
+    UidLease(const UidLease&) = delete;
+    UidLease& operator=(const UidLease&) = delete;
+    ~UidLease() {
+        if (fd >= 0) close(fd);
+    }
+};
+
+bool lease_uid(UidLease& lease) {
+    const char* dir = "/run/rt-grade-uids";
+    mkdir(dir, 0700);
+    struct stat st {};
+    // A folder someone else could have planted (or a symlink) is not trusted.
+    if (lstat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != 0 || (st.st_mode & 077))
+        return false;
+    const int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (dfd < 0) return false;
+    // Start at a random place: fewer collisions between processes starting together.
+    const int start = int(getpid() % kUidCount);
+    for (int i = 0; i < kUidCount; ++i) {
+        const int k = (start + i) % kUidCount;
+        const uid_t uid = kUidBase + uid_t(k);
+        if (getpwuid(uid) != nullptr) continue;  // a real account: never
+        const std::string name = std::to_string(k) + ".lock";
+        const int fd = openat(dfd, name.c_str(), O_CREAT | O_RDWR | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd < 0) continue;
+        if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
+            lease.uid = uid;
+            lease.fd = fd;
+            close(dfd);
+            return true;
+        }
+        close(fd);
+    }
+    close(dfd);
+    return false;
+}
+
+// Kills every process running under `uid`: a helper that becomes `uid` and signals -1 reaches
+// exactly the processes that uid owns, wherever they were started (setsid, double forks).
+void reap_uid(uid_t uid) {
+    for (int round = 0; round < 50 && count_processes_of(uid) > 0; ++round) {
+        const pid_t pid = fork();
+        if (pid == 0) {
+            if (setresgid(uid, uid, uid) != 0 || setresuid(uid, uid, uid) != 0) _exit(1);
+            kill(-1, SIGKILL);
+            _exit(0);
+        }
+        if (pid > 0) waitpid(pid, nullptr, 0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(round < 5 ? 2 : 20));
+    }
+}
+
+// ---------------------------------------------------------------- the jail
 
 bool write_file(const char* path, const std::string& text) {
-    const int fd = open(path, O_WRONLY);
+    const int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd < 0) return false;
     const bool ok = write(fd, text.data(), text.size()) == ssize_t(text.size());
     close(fd);
@@ -38,7 +107,7 @@ bool write_file(const char* path, const std::string& text) {
 bool enter_namespaces() {
     const uid_t uid = getuid();
     const gid_t gid = getgid();
-    int flags = CLONE_NEWNS | CLONE_NEWNET | CLONE_NEWPID;
+    int flags = CLONE_NEWNS | CLONE_NEWNET | CLONE_NEWPID | CLONE_NEWIPC | CLONE_NEWUTS;
     if (uid != 0) flags |= CLONE_NEWUSER;
     if (unshare(flags) != 0) return false;
     if (uid != 0) {
@@ -50,49 +119,97 @@ bool enter_namespaces() {
     return mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) == 0;
 }
 
-bool is_under(const fs::path& path, const fs::path& dir) {
-    const auto rel = path.lexically_relative(dir);
-    return !rel.empty() && *rel.begin() != "..";
-}
-
-bool hide(const fs::path& path) {
-    struct stat st {};
-    if (lstat(path.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) return true;
-    return mount("tmpfs", path.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=64k,mode=0755") == 0;
-}
-
-// Kept directories are set aside (bind mounts), hidden paths above them covered, then the kept
-// ones bound back read-only; hidden paths inside kept directories are covered last.
-bool hide_paths(const RunSpec& spec, const fs::path& stash) {
-    std::vector<fs::path> stashed;
-    for (std::size_t i = 0; i < spec.keep.size(); ++i) {
-        std::string name = std::to_string(i);
-        name.insert(name.begin(), 'k');  // not "k" + ...: GCC 12's -Wrestrict false positive
-        const fs::path dir = stash / name;
-        mkdir(dir.c_str(), 0700);
-        if (mount(spec.keep[i].c_str(), dir.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0)
-            return false;
-        stashed.push_back(dir);
-    }
-    auto above_a_keep = [&](const fs::path& h) {
-        for (const auto& k : spec.keep)
-            if (k == h || is_under(k, h)) return true;
-        return false;
-    };
-    for (const auto& path : spec.hide)
-        if (above_a_keep(path) && !hide(path)) return false;
-    for (std::size_t i = 0; i < spec.keep.size(); ++i) {
-        std::error_code ec;
-        fs::create_directories(spec.keep[i], ec);
-        const char* k = spec.keep[i].c_str();
-        if (mount(stashed[i].c_str(), k, nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
-        if (spec.keep_read_only &&
-            mount(nullptr, k, nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY | MS_REC, nullptr) != 0)
-            return false;
-    }
-    for (const auto& path : spec.hide)
-        if (!above_a_keep(path) && !hide(path)) return false;
+// Creates `path` (and its parents) inside the jail root as a directory, or as an empty file
+// when `file`.
+bool make_mount_point(const fs::path& path, bool file) {
+    std::error_code ec;
+    fs::create_directories(file ? path.parent_path() : path, ec);
+    if (!file) return fs::is_directory(path, ec);
+    if (fs::exists(fs::symlink_status(path, ec))) return fs::is_regular_file(fs::symlink_status(path));
+    const int fd = open(path.c_str(), O_CREAT | O_WRONLY | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0) return false;
+    close(fd);
     return true;
+}
+
+bool bind(const fs::path& host, const fs::path& target, bool writable, bool devices = false) {
+    struct stat st {};
+    if (stat(host.c_str(), &st) != 0) return false;
+    if (!make_mount_point(target, !S_ISDIR(st.st_mode))) return false;
+    if (mount(host.c_str(), target.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+    unsigned long flags = MS_BIND | MS_REMOUNT | MS_NOSUID;
+    if (!devices) flags |= MS_NODEV;
+    if (!writable) flags |= MS_RDONLY;
+    return mount(nullptr, target.c_str(), nullptr, flags, nullptr) == 0;
+}
+
+bool tmpfs(const fs::path& target, const char* options, bool read_only = false) {
+    if (!make_mount_point(target, false)) return false;
+    unsigned long flags = MS_NOSUID | MS_NODEV;
+    if (read_only) flags |= MS_RDONLY;
+    return mount("tmpfs", target.c_str(), "tmpfs", flags, options) == 0;
+}
+
+// The host's system folders: /usr bound read-only; the merged-/usr links recreated.
+bool add_system(const fs::path& root) {
+    if (!bind("/usr", root / "usr", false)) return false;
+    for (const char* top : {"bin", "sbin", "lib", "lib32", "lib64", "libx32"}) {
+        const fs::path host = fs::path("/") / top;
+        std::error_code ec;
+        const auto st = fs::symlink_status(host, ec);
+        if (ec || !fs::exists(st)) continue;
+        if (fs::is_symlink(st)) {
+            fs::create_symlink(fs::read_symlink(host, ec), root / top, ec);
+        } else if (fs::is_directory(st) && !bind(host, root / top, false)) {
+            return false;
+        }
+    }
+    // /etc: only what the dynamic loader and the compiler driver need, and accounts of its own.
+    std::error_code ec;
+    fs::create_directories(root / "etc", ec);
+    for (const char* f : {"ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives"})
+        if (fs::exists(fs::path("/etc") / f, ec) && !bind(fs::path("/etc") / f, root / "etc" / f, false))
+            return false;
+    const std::string passwd = "root:x:0:0:root:/:/usr/sbin/nologin\n"
+                               "nobody:x:65534:65534:nobody:/nonexistent:/usr/sbin/nologin\n";
+    const std::string group = "root:x:0:\nnogroup:x:65534:\n";
+    if (!write_file((root / "etc/passwd").c_str(), passwd) ||
+        !write_file((root / "etc/group").c_str(), group))
+        return false;
+    // /dev: the harmless character devices, a private /dev/shm.
+    fs::create_directories(root / "dev", ec);
+    for (const char* d : {"null", "zero", "full", "random", "urandom"})
+        if (!bind(fs::path("/dev") / d, root / "dev" / d, true, true)) return false;
+    for (const auto& [name, to] : {std::pair{"fd", "/proc/self/fd"}, {"stdin", "/proc/self/fd/0"},
+                                   {"stdout", "/proc/self/fd/1"}, {"stderr", "/proc/self/fd/2"}})
+        fs::create_symlink(to, root / "dev" / name, ec);
+    if (!tmpfs(root / "dev/shm", "size=64m,mode=1777")) return false;
+    if (!tmpfs(root / "tmp", "size=512m,mode=1777")) return false;
+    if (!tmpfs(root / "var/tmp", "size=64m,mode=1777")) return false;
+    fs::create_directories(root / "proc", ec);
+    return true;
+}
+
+// Builds the jail in `root` (an empty host folder) and makes it the root of this mount namespace.
+bool enter_jail(const RunSpec& spec, const fs::path& root) {
+    if (mount("tmpfs", root.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=4m,mode=0755") != 0)
+        return false;
+    if (!add_system(root)) return false;
+    for (const auto& b : spec.binds) {
+        const fs::path inside = b.inside.empty() ? b.host : b.inside;
+        if (!bind(b.host, root / inside.relative_path(), b.writable)) return false;
+    }
+    for (const auto& d : spec.empty_dirs) {
+        std::error_code ec;
+        if (!fs::is_directory(root / d.relative_path(), ec)) continue;
+        if (!tmpfs(root / d.relative_path(), "size=4k,mode=0755", true)) return false;
+    }
+    std::error_code ec;
+    fs::create_directories(root / spec.working_dir.relative_path(), ec);
+    if (chdir(root.c_str()) != 0 || syscall(SYS_pivot_root, ".", ".") != 0) return false;
+    if (umount2(".", MNT_DETACH) != 0 || chdir("/") != 0) return false;
+    // The jail's own top level is read-only too (its tmpfs, /tmp etc. stay writable).
+    return mount(nullptr, "/", nullptr, MS_REMOUNT | MS_RDONLY | MS_NOSUID | MS_NODEV, nullptr) == 0;
 }
 
 void set_limit(int resource, rlim_t soft, rlim_t hard) {
@@ -100,8 +217,17 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     setrlimit(resource, &limit);
 }
 
+// No capability survives into the program (matters when the jail runs in a user namespace,
+// where the program would otherwise be root of it).
+void drop_capabilities() {
+    for (int cap = 0; cap <= 63; ++cap) prctl(PR_CAPBSET_DROP, cap, 0, 0, 0);
+    __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+    __user_cap_data_struct data[2] = {};
+    syscall(SYS_capset, &header, data);
+}
+
 [[noreturn]] void exec_program(const RunSpec& spec, int out_fd, int err_fd,
-                               const std::vector<std::pair<int, int>>& passed, bool drop_uid) {
+                               const std::vector<std::pair<int, int>>& passed, uid_t uid) {
     const Limits& l = spec.limits;
     set_limit(RLIMIT_CPU, rlim_t(l.cpu_seconds), rlim_t(l.cpu_seconds + 1));
     // RLIMIT_DATA counts the heap and anonymous mappings (what a memory hog grows) but not the
@@ -112,10 +238,14 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     set_limit(RLIMIT_FSIZE, rlim_t(l.file_size_mb) << 20, rlim_t(l.file_size_mb) << 20);
     set_limit(RLIMIT_CORE, 0, 0);
     set_limit(RLIMIT_NPROC, rlim_t(l.processes), rlim_t(l.processes));
-    if (drop_uid) {
+    if (uid != 0) {
         // Root ignores RLIMIT_NPROC, so untrusted code never runs as root.
-        if (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0) _exit(125);
+        if (setgroups(0, nullptr) != 0 || setresgid(uid, uid, uid) != 0 ||
+            setresuid(uid, uid, uid) != 0)
+            _exit(125);
     }
+    drop_capabilities();
+    prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);  // setuid programs in /usr cannot give root back
     if (chdir(spec.working_dir.c_str()) != 0) _exit(126);
     dup2(out_fd, 1);
     dup2(err_fd, 2);
@@ -131,7 +261,8 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     argv.push_back(nullptr);
     std::vector<std::string> env = spec.env;
     env.push_back("PATH=/usr/bin:/bin");
-    env.push_back("HOME=" + spec.scratch_dir.string());
+    env.push_back("HOME=/tmp");
+    env.push_back("TMPDIR=/tmp");
     std::vector<char*> envp;
     for (auto& e : env) envp.push_back(e.data());
     envp.push_back(nullptr);
@@ -145,26 +276,32 @@ Isolation forced_or_probed() {
         if (s == "none") return Isolation::None;
         if (s == "uid") return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
     }
+    char dir[] = "/tmp/rt-grade-probe-XXXXXX";
+    if (!mkdtemp(dir)) return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
     const pid_t pid = fork();
     if (pid == 0) {
-        char dir[] = "/tmp/rt-grade-probe-XXXXXX";
-        if (!mkdtemp(dir)) _exit(1);
-        const bool ok = enter_namespaces() && mount("tmpfs", dir, "tmpfs", 0, "size=4k") == 0;
-        umount(dir);
-        rmdir(dir);
+        RunSpec probe;
+        probe.working_dir = "/";
+        const bool ok = enter_namespaces() && enter_jail(probe, dir);
         _exit(ok ? 0 : 1);
     }
     int status = 0;
-    if (pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0)
-        return Isolation::Namespaces;
+    const bool ok =
+        pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    rmdir(dir);
+    if (ok) return Isolation::Namespaces;
     return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
 }
 
-std::string read_capped(const fs::path& file, long long cap, bool& truncated) {
-    std::ifstream in(file, std::ios::binary);
+std::string read_capped(int fd, long long cap, bool& truncated) {
     std::string text(std::size_t(cap) + 1, '\0');
-    in.read(text.data(), std::streamsize(text.size()));
-    text.resize(std::size_t(in.gcount()));
+    std::size_t got = 0;
+    while (got < text.size()) {
+        const ssize_t n = pread(fd, text.data() + got, text.size() - got, off_t(got));
+        if (n <= 0) break;
+        got += std::size_t(n);
+    }
+    text.resize(got);
     if (text.size() > std::size_t(cap)) {
         text.resize(std::size_t(cap));
         truncated = true;
@@ -174,12 +311,28 @@ std::string read_capped(const fs::path& file, long long cap, bool& truncated) {
 
 }  // namespace
 
+int count_processes_of(uid_t uid) {
+    int count = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* e = readdir(proc)) {
+        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+        struct stat st {};
+        const std::string path = std::string("/proc/") + e->d_name;
+        if (stat(path.c_str(), &st) == 0 && st.st_uid == uid) ++count;
+    }
+    closedir(proc);
+    return count;
+}
+
 std::string describe(Isolation isolation) {
     switch (isolation) {
         case Isolation::Namespaces:
-            return "namespaces (no network, instructor files hidden, process tree contained)";
+            return "namespaces (a jail of its own: no network, no host files but the system's, "
+                   "process tree contained)";
         case Isolation::UidDrop:
-            return "uid drop to nobody (the kernel refused namespaces: network not blocked)";
+            return "uid drop to a sandbox uid (the kernel refused namespaces: network not blocked, "
+                   "host files protected only by permissions)";
         case Isolation::None:
             return "NONE (not root and no user namespaces: resource limits only)";
     }
@@ -227,31 +380,55 @@ std::string RunResult::describe(const Limits& limits) const {
 RunResult run_sandboxed(const RunSpec& spec) {
     RunResult result;
     const Isolation isolation = probe_isolation();
+    const bool root = getuid() == 0;
+    UidLease lease;
+    if (root && isolation != Isolation::None && !lease_uid(lease)) {
+        result.output = "sandbox setup failed: no sandbox uid free\n";
+        return result;
+    }
+    result.uid = lease.uid;
+    // Writable binds belong to the run's uid (it is not root and must write there).
+    for (const auto& b : spec.binds)
+        if (b.writable && lease.uid != 0 && chown(b.host.c_str(), lease.uid, lease.uid) != 0) {
+            result.output = "sandbox setup failed: cannot hand " + b.host.string() + " to the sandbox\n";
+            return result;
+        }
+    // Captures live in a folder the child never sees; created exclusively, never followed.
     std::error_code ec;
-    fs::create_directories(spec.scratch_dir, ec);
-    const fs::path out_file = spec.scratch_dir / ".stdout", err_file = spec.scratch_dir / ".stderr";
-    const int out_fd = open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    const int err_fd = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    fs::create_directories(spec.capture_dir, ec);
+    char out_name[] = "stdout-XXXXXX", err_name[] = "stderr-XXXXXX";
+    const std::string out_path = (spec.capture_dir / out_name).string();
+    const std::string err_path = (spec.capture_dir / err_name).string();
+    std::string out_t = out_path, err_t = err_path;
+    const int out_fd = mkostemp(out_t.data(), O_CLOEXEC);
+    const int err_fd = mkostemp(err_t.data(), O_CLOEXEC);
+    if (out_fd >= 0) unlink(out_t.c_str());
+    if (err_fd >= 0) unlink(err_t.c_str());
     int status_pipe[2];
-    if (out_fd < 0 || err_fd < 0 || pipe2(status_pipe, O_CLOEXEC) != 0) return result;
-    char stash[] = "/tmp/rt-grade-keep-XXXXXX";
-    const bool have_stash = mkdtemp(stash) != nullptr;
+    if (out_fd < 0 || err_fd < 0 || pipe2(status_pipe, O_CLOEXEC) != 0) {
+        if (out_fd >= 0) close(out_fd);
+        if (err_fd >= 0) close(err_fd);
+        result.output = "sandbox setup failed: cannot capture output\n";
+        return result;
+    }
+    char root_dir[] = "/tmp/rt-grade-root-XXXXXX";
+    const bool have_root = mkdtemp(root_dir) != nullptr;
 
-    const bool was_root = getuid() == 0;
     const auto start = std::chrono::steady_clock::now();
     const pid_t outer = fork();
     if (outer == 0) {
-        // Outer child: new process group, namespaces, hidden paths; then an init process that
+        // Outer child: new process group, namespaces, the jail; then an init process that
         // runs the program and reports its wait status, so every descendant dies with it.
         setpgid(0, 0);
         close(status_pipe[0]);
-        const bool drop = spec.drop_uid && was_root && isolation != Isolation::None;
         if (isolation == Isolation::Namespaces) {
-            if (!enter_namespaces() || !have_stash || !hide_paths(spec, stash)) _exit(124);
+            if (!have_root || !enter_namespaces() || !enter_jail(spec, root_dir)) _exit(124);
         }
         const pid_t init = fork();
         if (init == 0) {
             prctl(PR_SET_PDEATHSIG, SIGKILL);
+            if (isolation == Isolation::Namespaces)
+                mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
             const pid_t program = fork();
             if (program == 0) {
                 // File descriptors are dup2'ed without CLOEXEC inside exec_program.
@@ -259,7 +436,7 @@ RunResult run_sandboxed(const RunSpec& spec) {
                 std::vector<std::pair<int, int>> passed;
                 for (const auto& [from, to] : spec.pass_fds)
                     passed.push_back({fcntl(from, F_DUPFD_CLOEXEC, 20), to});
-                exec_program(spec, o, e, passed, drop);
+                exec_program(spec, o, e, passed, lease.uid);
             }
             int status = 0;
             while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
@@ -273,10 +450,11 @@ RunResult run_sandboxed(const RunSpec& spec) {
         _exit(0);
     }
     close(status_pipe[1]);
-    close(out_fd);
-    close(err_fd);
     if (outer < 0) {
         close(status_pipe[0]);
+        close(out_fd);
+        close(err_fd);
+        if (have_root) rmdir(root_dir);
         return result;
     }
     setpgid(outer, outer);  // also from the parent, against the race with the child's setpgid
@@ -298,14 +476,16 @@ RunResult run_sandboxed(const RunSpec& spec) {
         std::this_thread::sleep_for(std::chrono::milliseconds(elapsed < 1 ? 2 : 20));
     }
     kill(-outer, SIGKILL);  // stragglers of the group (without a PID namespace)
+    if (lease.uid != 0) {
+        reap_uid(lease.uid);
+        result.survivors = count_processes_of(lease.uid);
+    }
     result.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int status = 0;
     const bool have_status = read(status_pipe[0], &status, sizeof status) == sizeof status;
     close(status_pipe[0]);
-    if (have_stash) rmdir(stash);  // the k* mount points live in the child's namespace only
-    for (const auto& entry : fs::directory_iterator(stash, ec)) fs::remove(entry.path(), ec);
-    fs::remove(stash, ec);
+    if (have_root) rmdir(root_dir);  // the jail's mounts lived in the child's namespace only
 
     if (timed_out) {
         result.end = RunResult::End::TimedOut;
@@ -322,8 +502,10 @@ RunResult run_sandboxed(const RunSpec& spec) {
         result.signal = WTERMSIG(status);
     }
     bool truncated = false;
-    std::string out = read_capped(out_file, spec.limits.output_bytes, truncated);
-    std::string err = read_capped(err_file, spec.limits.output_bytes, truncated);
+    std::string out = read_capped(out_fd, spec.limits.output_bytes, truncated);
+    std::string err = read_capped(err_fd, spec.limits.output_bytes, truncated);
+    close(out_fd);
+    close(err_fd);
     result.output += out;
     if (!err.empty()) {
         if (!out.empty() && out.back() != '\n') result.output.push_back('\n');
@@ -334,8 +516,6 @@ RunResult run_sandboxed(const RunSpec& spec) {
         truncated = true;
     }
     result.output_truncated = truncated;
-    fs::remove(out_file, ec);
-    fs::remove(err_file, ec);
     return result;
 }
 

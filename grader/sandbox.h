@@ -1,15 +1,24 @@
 // Runs one untrusted command (a student-linked test binary, renderer or compiler) in a child
 // process with resource limits, and reports how it ended. Part of the trusted grader.
 //
-// Isolation, strongest first, chosen once per process (Sandbox::probe):
-//   - namespaces: new mount, network and PID namespaces (a user namespace too when not root);
-//     the paths in `hide` are covered by empty tmpfs mounts, so the child cannot read the
-//     instructor's tree, the reference images or hidden tests; killing the namespace's init kills
-//     every process the child started (fork bombs included);
-//   - uid drop (root without namespaces, e.g. Docker's default seccomp): the child runs as
-//     nobody, so RLIMIT_NPROC applies and 0700 grader directories are unreadable;
-//   - none: limits only (reported as such).
+// What the child can see, write, keep alive and share is bounded by construction, not by a
+// list of known attacks (docs/grading.md, "What the sandbox guarantees"):
+//   - see: a jail root built from scratch (new mount namespace, pivot_root): /usr and the
+//     merged-/usr links, a few loader files of /etc, /dev/{null,zero,full,random,urandom}, a
+//     fresh /proc of its own PID namespace, and exactly the `binds` of the RunSpec. Nothing else
+//     of the host exists inside: no instructor tree, no other course copy, no /etc/shadow;
+//   - write: its own empty /tmp, /var/tmp and /dev/shm (tmpfs, gone with it) and the binds
+//     marked writable; everything else is read-only;
+//   - keep alive: it is PID 1's child in a new PID namespace, and the namespace dies with it; a
+//     reaper then kills whatever still runs under its uid (the only processes that could);
+//   - share: it runs under a uid leased to this one run (distinct from every concurrent run),
+//     so RLIMIT_NPROC and signals never reach another grading; no network (new net namespace);
+//     only the descriptors of `pass_fds` are inherited.
+// Without namespaces (the kernel or a container forbids them) only the uid lease, the limits
+// and the reaper remain; the report says so.
 #pragma once
+
+#include <sys/types.h>
 
 #include <atomic>
 #include <filesystem>
@@ -25,7 +34,7 @@ struct Limits {
     long long address_space_mb = 4096;
     long long memory_mb = 512;  // RLIMIT_DATA: heap and anonymous memory
     long long file_size_mb = 16;  // also caps captured stdout/stderr
-    int processes = 64;
+    int processes = 64;           // RLIMIT_NPROC of the run's own uid (threads count)
     long long output_bytes = 64 * 1024;  // what is kept of stdout+stderr for the report
 };
 
@@ -36,23 +45,29 @@ struct RunResult {
     double wall_seconds = 0;
     std::string output;        // stdout then stderr, truncated to Limits::output_bytes
     bool output_truncated = false;
+    int survivors = 0;         // processes of the run's uid still alive after the reaper
+    uid_t uid = 0;             // the leased uid the program ran as (0: none, e.g. not root)
     // "exited with code 3", "crashed: SIGSEGV", "timed out after 10 s", "file size limit hit"...
     std::string describe(const Limits& limits) const;
     bool ok() const { return end == End::Exited && exit_code == 0; }
 };
 
+// A host path shown inside the jail at `inside` (the same path when empty).
+struct Bind {
+    std::filesystem::path host;
+    std::filesystem::path inside;
+    bool writable = false;  // writable binds are handed to the run's uid (chown) first
+};
+
 struct RunSpec {
-    std::vector<std::string> argv;
+    std::vector<std::string> argv;    // argv[0]: an absolute path inside the jail
     std::filesystem::path working_dir;
-    std::filesystem::path scratch_dir;  // writable by the child; stdout/stderr land here
-    std::vector<std::filesystem::path> hide;  // covered by an empty tmpfs in the child
-    // Directories that must stay visible (read-only) even if they lie under a hidden path.
-    std::vector<std::filesystem::path> keep;
-    bool keep_read_only = true;  // false for the compiler, which writes the build tree
+    std::filesystem::path capture_dir;  // trusted-only folder for stdout/stderr (never a bind)
+    std::vector<Bind> binds;
+    std::vector<std::filesystem::path> empty_dirs;  // inside binds: covered by an empty tmpfs
     const std::atomic<bool>* cancel = nullptr;  // set: the child is killed as on a timeout
     std::vector<std::string> env;  // KEY=VALUE; the child gets only these (plus PATH, HOME)
     Limits limits;
-    bool drop_uid = true;  // as root, run as nobody (false for the compiler: it writes the build)
     // Descriptors of the grader passed to the program: {grader fd, fd number in the program}.
     // Every other descriptor of the grader is close-on-exec. Targets must be 3 or more.
     std::vector<std::pair<int, int>> pass_fds;
@@ -65,5 +80,8 @@ std::string describe(Isolation isolation);
 Isolation probe_isolation();
 
 RunResult run_sandboxed(const RunSpec& spec);
+
+// Processes currently running under `uid` (from /proc).
+int count_processes_of(uid_t uid);
 
 }  // namespace rt::grader

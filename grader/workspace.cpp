@@ -1,0 +1,588 @@
+#include "workspace.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <sstream>
+
+#include "release.h"
+#include "sandbox.h"
+#include "util.h"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace rt::grader {
+namespace {
+
+constexpr const char* kStagesArchive = "lib/librt_stages.a";
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string two_digits(int n) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%02d", n);
+    return text;
+}
+
+bool skipped_top_level(const std::string& name) {
+    return name == ".git" || name.starts_with("build") || name == "gallery" || name == "out";
+}
+
+// Every file of the instructor's tree the workspace depends on, and a hash of them all.
+std::vector<fs::path> source_files(const fs::path& source, std::uint64_t& hash) {
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(source, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (it.depth() == 0 && skipped_top_level(it->path().filename().string())) {
+            it.disable_recursion_pending();
+            continue;
+        }
+        if (it->is_regular_file()) files.push_back(it->path().lexically_relative(source));
+    }
+    std::sort(files.begin(), files.end());
+    hash = fnv1a("rt-grade workspace v3");
+    for (const auto& f : files) {
+        hash = fnv1a(f.string(), hash);
+        hash = fnv1a(read_text(source / f), hash);
+    }
+    return files;
+}
+
+std::vector<std::string> split_words(const std::string& command) {
+    std::vector<std::string> words;
+    std::istringstream in(command);
+    std::string w;
+    while (in >> w) words.push_back(w);
+    return words;
+}
+
+// A command of CMake's Ninja generator as argv; our paths never need shell quoting (checked).
+std::vector<std::string> command_argv(std::string command, const std::string& what) {
+    if (command.starts_with(": && ")) command = command.substr(5);
+    if (const auto end = command.rfind(" && :"); end != std::string::npos && end + 5 == command.size())
+        command.resize(end);
+    if (command.find_first_of("'\"\\$`;|&<>") != std::string::npos)
+        throw std::runtime_error("rt-grade: the " + what +
+                                 " command needs a shell (a path with spaces or quotes?): " + command);
+    return split_words(command);
+}
+
+// Runs argv without a shell; output and error in `output`.
+int run_argv(const std::vector<std::string>& argv, const fs::path& cwd, std::string& output) {
+    int p[2];
+    if (pipe2(p, O_CLOEXEC) != 0) return -1;
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(p[1], 1);
+        dup2(p[1], 2);
+        if (chdir(cwd.c_str()) != 0) _exit(126);
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    close(p[1]);
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(p[0], buffer, sizeof buffer)) > 0) output.append(buffer, std::size_t(n));
+    close(p[0]);
+    int status = 0;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::vector<std::string> replaced(std::vector<std::string> argv, const std::string& from,
+                                  const std::string& to) {
+    for (auto& a : argv)
+        if (a == from) a = to;
+    return argv;
+}
+
+// Defined global symbols of an object or archive: name -> nm type letter.
+std::vector<std::pair<std::string, std::string>> defined_symbols(const fs::path& file) {
+    std::string out;
+    run_argv({"/usr/bin/nm", "-g", "--defined-only", "-P", file.string()}, "/", out);
+    std::vector<std::pair<std::string, std::string>> symbols;
+    std::istringstream lines(out);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string name, type;
+        if (!(words >> name >> type) || name.back() == ':' || name.back() == ']') continue;
+        symbols.push_back({name, type});
+    }
+    return symbols;
+}
+
+bool strong(const std::string& type) {
+    return type == "T" || type == "D" || type == "B" || type == "R" || type == "G" || type == "S";
+}
+
+std::vector<std::string> build_targets(const std::vector<StageSpec>& specs) {
+    std::set<std::string> targets{"rt"};
+    for (const auto& s : specs)
+        for (const auto& g : s.groups) targets.insert(g.binary);
+    return {targets.begin(), targets.end()};
+}
+
+std::string object_name(const std::string& key) {
+    std::string name = key;
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
+}
+
+}  // namespace
+
+Workspace workspace_paths(const GradeOptions& o) {
+    Workspace w;
+    w.cache = o.cache.empty() ? o.source / "build" / "grader-cache" : o.cache;
+    w.cache = fs::absolute(w.cache).lexically_normal();
+    w.root = w.cache / "workspace";
+    w.src = w.root / "src";
+    w.build = w.root / "build";
+    w.priv = w.cache / "private";
+    return w;
+}
+
+std::vector<fs::path> hidden_dirs(const Workspace& w) {
+    std::vector<fs::path> dirs;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(w.src / "stages", ec))
+        if (fs::is_directory(e.path() / "hidden", ec)) dirs.push_back(e.path() / "hidden");
+    return dirs;
+}
+
+fs::path solution_object(const Workspace& w, const std::string& key) {
+    return w.priv / "objects" / (object_name(key) + ".solution.o");
+}
+fs::path stub_object(const Workspace& w, const std::string& key) {
+    return w.priv / "objects" / (object_name(key) + ".stub.o");
+}
+
+std::string pixel_hash(const Image8& image) {
+    std::uint64_t h = fnv1a(std::to_string(image.width) + "x" + std::to_string(image.height));
+    const auto* bytes = reinterpret_cast<const char*>(image.data.data());
+    h = fnv1a(std::string_view(bytes, image.data.size()), h);
+    return hex(h);
+}
+
+BuildPlan load_build_plan(const Workspace& w) {
+    BuildPlan plan;
+    const json j = json::parse(read_text(w.priv / "plan.json"));
+    plan.compile = j.at("compile").get<decltype(plan.compile)>();
+    plan.link = j.at("link").get<decltype(plan.link)>();
+    plan.api = j.at("api").get<decltype(plan.api)>();
+    plan.instructor_symbols = j.at("instructor_symbols").get<std::set<std::string>>();
+    plan.shipped_hashes = j.at("shipped_hashes").get<std::set<std::string>>();
+    plan.secret = read_text(w.priv / "secret");
+    return plan;
+}
+
+bool compile_in_jail(const Workspace& w, const BuildPlan& plan, const std::string& key,
+                     const std::string& text, const fs::path& work, const fs::path& object,
+                     std::string& log) {
+    const auto it = plan.compile.find(key);
+    if (it == plan.compile.end()) {
+        log = "no compile command for " + key;
+        return false;
+    }
+    // `work` is trusted-only: the source copy and captures; `out` is the one folder the
+    // compiler may write, owned by the sandbox uid for this run.
+    std::error_code ec;
+    fs::remove_all(work, ec);
+    fs::create_directories(work / "out");
+    fs::permissions(work, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    write_text(work / "source.cpp", text);
+    RunSpec r;
+    r.argv = replaced(it->second, "@OUT@", (work / "out" / "student.o").string());
+    if (probe_isolation() != Isolation::Namespaces) {
+        // No jail to show the text at its own path: compile a copy the compiler's uid can read,
+        // with quoted includes and __FILE__ as if it were in place.
+        const fs::path copy = work / "out" / fs::path(key).filename();
+        write_text(copy, text);
+        r.argv = replaced(r.argv, (w.src / key).string(), copy.string());
+        r.argv.insert(r.argv.begin() + 1, {"-iquote", (w.src / key).parent_path().string(),
+                                           "-fmacro-prefix-map=" + copy.string() + "=" + (w.src / key).string()});
+    }
+    r.working_dir = work / "out";
+    r.capture_dir = work / "capture";
+    r.binds = {{w.src, {}, false},
+               {work / "source.cpp", w.src / key, false},
+               {work / "out", {}, true}};
+    r.empty_dirs = hidden_dirs(w);
+    r.limits = {120, 120, 16384, 4096, 64, 64, 256 * 1024};
+    const RunResult res = run_sandboxed(r);
+    log = clean_output(res.output);
+    for (const auto& root : {w.src.string() + "/", w.build.string() + "/"}) {
+        std::size_t p;
+        while ((p = log.find(root)) != std::string::npos) log.erase(p, root.size());
+    }
+    if (!res.ok()) {
+        if (res.end != RunResult::End::Exited || log.empty())
+            log = "the compiler " + res.describe(r.limits) + "\n" + log;
+        return false;
+    }
+    // Read back through a descriptor that refuses symlinks: the folder was the child's.
+    const int fd = open((work / "out" / "student.o").c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st {};
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (256 << 20)) {
+        if (fd >= 0) close(fd);
+        log = "the compiler wrote no object file\n" + log;
+        return false;
+    }
+    std::string bytes(std::size_t(st.st_size), '\0');
+    const bool read_all = pread(fd, bytes.data(), bytes.size(), 0) == ssize_t(bytes.size());
+    close(fd);
+    if (!read_all) return false;
+    write_text(object, bytes);
+    return true;
+}
+
+std::string check_and_localize(const fs::path& object, const std::set<std::string>& api,
+                               const BuildPlan& plan, const fs::path& out) {
+    std::string problems;
+    auto demangle = [](const std::string& name) {
+        std::string d;
+        run_argv({"/usr/bin/c++filt", name}, "/", d);
+        while (!d.empty() && d.back() == '\n') d.pop_back();
+        return d;
+    };
+    // Symbols: after localization nothing but the API can take part in symbol resolution, so
+    // only what shows intent to replace trusted code is refused (a clear message beats a
+    // silently ignored definition); helpers, templates, inline variables, extern "C" helpers and
+    // what the compiler emits for exceptions and RTTI are simply made local.
+    for (const auto& [name, type] : defined_symbols(object)) {
+        if (api.count(name)) continue;
+        if (type == "i") {
+            problems += "  " + demangle(name) + " (an IFUNC resolver: runs before main)\n";
+        } else if (name == "main") {
+            problems += "  main (the test runner's main is the grader's)\n";
+        } else if (name.find("7testing") != std::string::npos || name.find("gtest") != std::string::npos) {
+            problems += "  " + demangle(name) + " (GoogleTest code)\n";
+        } else if (strong(type) && plan.instructor_symbols.count(name)) {
+            problems += "  " + demangle(name) + " (defined by the framework or the tests)\n";
+        }
+    }
+    // Sections: code that runs before main must be ordinary constructors (.init_array), which
+    // run after the trusted test main has taken its channel.
+    std::string text;
+    run_argv({"/usr/bin/readelf", "-S", "-W", object.string()}, "/", text);
+    std::istringstream sections(text);
+    std::string line;
+    while (std::getline(sections, line)) {
+        const auto open = line.find('[');
+        const auto close = line.find("] ", open == std::string::npos ? 0 : open);
+        if (open == std::string::npos || close == std::string::npos) continue;
+        std::istringstream words(line.substr(close + 2));
+        std::string section;
+        if (!(words >> section) || section == "Name" || section == "NULL") continue;
+        std::string base = section;
+        for (const char* rel : {".rela", ".rel"})
+            if (base.starts_with(std::string(rel) + ".")) {
+                base = base.substr(std::strlen(rel));
+                break;
+            }
+        const bool early = base.starts_with(".init_array.") || base.starts_with(".ctors") ||
+                           base.starts_with(".preinit_array") || base == ".init";
+        if (early) problems += "  section " + section + " (runs code before main)\n";
+    }
+    if (!problems.empty()) return problems;
+    // Localize all but the API; dissolve COMDAT groups, or the linker would let the student's
+    // copy of an inline function stand in for the framework's (groups are merged by name).
+    std::string keep;
+    for (const auto& s : api) keep += s + "\n";
+    const fs::path keep_file = out.string() + ".keep";
+    write_text(keep_file, keep);
+    std::string log;
+    const int code = run_argv({"/usr/bin/objcopy", "--keep-global-symbols=" + keep_file.string(),
+                               "--remove-section=.group", object.string(), out.string()},
+                              "/", log);
+    if (code != 0) return "  objcopy failed: " + clean_output(log) + "\n";
+    return "";
+}
+
+bool link_stage(const Workspace& w, const BuildPlan& plan, const std::vector<fs::path>& objects,
+                const std::vector<std::string>& targets, const fs::path& bin, std::string& log) {
+    fs::create_directories(bin);
+    const fs::path archive = bin / "librt_stages.a";
+    std::error_code ec;
+    fs::remove(archive, ec);
+    // Members are named by their file: copy under distinct names first.
+    std::vector<std::string> ar{"/usr/bin/ar", "qcs", archive.string()};
+    for (const auto& o : objects) ar.push_back(o.string());
+    if (run_argv(ar, w.build, log) != 0) return false;
+    for (const auto& t : targets) {
+        const auto it = plan.link.find(t);
+        if (it == plan.link.end()) {
+            log += "no link command for " + t + "\n";
+            return false;
+        }
+        auto argv = replaced(replaced(it->second, "@STAGES@", archive.string()), "@OUT@",
+                             (bin / t).string());
+        std::string out;
+        if (run_argv(argv, w.build, out) != 0) {
+            log += clean_output(out);
+            return false;
+        }
+    }
+    return true;
+}
+
+bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
+    const Workspace w = workspace_paths(o);
+    const auto specs = load_stage_specs(o.source);
+    std::uint64_t hash = 0;
+    const auto files = source_files(o.source, hash);
+    const std::string key = hex(hash);
+    fs::create_directories(w.cache);
+    const int lock = open((w.cache / "workspace.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
+    flock(lock, LOCK_EX);
+    struct Unlock {
+        int fd;
+        ~Unlock() { close(fd); }
+    } unlock{lock};
+    auto read_key = [](const fs::path& f) {
+        std::error_code ec;
+        return fs::exists(f, ec) ? read_text(f) : std::string();
+    };
+    if (read_key(w.priv / "key") == key && read_key(w.root / "key") == key) return true;
+
+    log << "rt-grade: preparing the grading workspace " << w.root.string()
+        << " (once per source change; builds the framework)\n";
+    const auto start = std::chrono::steady_clock::now();
+    std::error_code ec;
+    fs::remove(w.priv / "key", ec);
+    fs::remove_all(w.priv / "objects", ec);
+    fs::create_directories(w.priv);
+    fs::permissions(w.priv, fs::perms::owner_all);  // 0700
+    fs::permissions(w.cache, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                 fs::perms::others_read | fs::perms::others_exec);
+
+    // The tree: student files as stubs (public), everything else as is; synced rather than
+    // copied afresh, so a change to the instructor's tree rebuilds incrementally.
+    std::set<fs::path> student_keys;
+    for (const auto& s : specs)
+        for (const auto& f : s.student_files) student_keys.insert(fs::path(s.folder) / f);
+    std::set<fs::path> wanted;
+    auto sync = [&](const fs::path& rel, const std::string& text) {
+        wanted.insert(rel);
+        std::error_code e;
+        if (fs::exists(w.src / rel, e) && read_text(w.src / rel) == text) return;
+        write_text(w.src / rel, text);
+    };
+    for (const auto& f : files) {
+        if (*f.begin() == "reference_images") continue;  // the child must never see them
+        if (f == "CMakeLists.txt") continue;
+        std::string text = read_text(o.source / f);
+        if (student_keys.count(f)) {
+            write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
+            const MarkerResult stub = process_markers(text, RegionMode::Strip);
+            if (stub.errors.empty()) text = stub.text;
+            write_text(w.priv / "pristine" / (f.string() + ".stub"), text);
+        }
+        sync(f, text);
+    }
+    // Hidden tests: targets of their own, added to the workspace copy only.
+    std::string hidden_cmake = "# Written by rt-grade: hidden tests (never released).\n";
+    for (const auto& s : specs)
+        for (const auto& g : s.groups) {
+            if (g.hidden_sources.empty()) continue;
+            hidden_cmake += "rt_stage_tests(" + two_digits(s.number) + " " + g.binary + " SOURCES";
+            for (const auto& h : g.hidden_sources) hidden_cmake += " " + s.folder + "/" + h;
+            hidden_cmake += ")\n";
+        }
+    // Every graded test binary gets the trusted main (grader/test_main.cpp) instead of
+    // gtest_main, and is stripped: its verdicts come through the nonce channel.
+    hidden_cmake += "# The trusted test main: verdicts through the nonce channel.\n";
+    for (const auto& t : build_targets(specs)) {
+        if (t == "rt") continue;
+        hidden_cmake += "get_target_property(rt_grade_libs " + t + " LINK_LIBRARIES)\n"
+                        "list(TRANSFORM rt_grade_libs REPLACE \"^GTest::gtest_main$\" \"GTest::gtest\")\n"
+                        "set_property(TARGET " + t +
+                        " PROPERTY LINK_LIBRARIES ${rt_grade_libs} rt_grade_test_main)\n"
+                        "target_link_options(" + t + " PRIVATE -s)\n";
+    }
+    sync("grader_hidden.cmake", hidden_cmake);
+    sync("CMakeLists.txt", read_text(o.source / "CMakeLists.txt") + "\ninclude(grader_hidden.cmake)\n");
+    {
+        std::vector<fs::path> stale;
+        for (auto it = fs::recursive_directory_iterator(w.src, ec);
+             !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+            if (!it->is_directory() && !wanted.count(it->path().lexically_relative(w.src)))
+                stale.push_back(it->path());
+        for (const auto& p : stale) fs::remove(p, ec);
+    }
+    std::string out;
+    std::string cmd = "cmake -S " + shell_quote(w.src.string()) + " -B " +
+                      shell_quote(w.build.string()) +
+                      " -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=OFF"
+                      " -DCMAKE_EXPORT_COMPILE_COMMANDS=ON";
+    if (run_trusted(cmd, &out) != 0) {
+        log << "rt-grade: error: configuring the workspace failed:\n" << out;
+        return false;
+    }
+    const auto targets = build_targets(specs);
+    cmd = "ninja -C " + shell_quote(w.build.string());
+    if (const char* j = std::getenv("RT_GRADE_BUILD_JOBS")) cmd += " -j " + std::to_string(std::atoi(j));
+    for (const auto& t : targets) cmd += " " + t;
+    out.clear();
+    if (run_trusted(cmd, &out) != 0) {
+        log << "rt-grade: error: building the instructor's tree failed:\n" << out;
+        return false;
+    }
+
+    json plan = {{"compile", json::object()}, {"link", json::object()}, {"api", json::object()}};
+    try {
+        // Compile commands of the student files, with the object redirected to @OUT@.
+        const json commands = json::parse(read_text(w.build / "compile_commands.json"));
+        for (const auto& s : specs)
+            for (const auto& f : s.student_files) {
+                const std::string k = s.folder + "/" + f;
+                for (const auto& c : commands)
+                    if (c.at("file").get<std::string>() == (w.src / k).string()) {
+                        auto argv = command_argv(c.at("command").get<std::string>(), "compile");
+                        for (std::size_t i = 0; i + 1 < argv.size(); ++i)
+                            if (argv[i] == "-o") argv[i + 1] = "@OUT@";
+                        plan["compile"][k] = argv;
+                    }
+                if (!plan["compile"].contains(k))
+                    throw std::runtime_error("rt-grade: no compile command for " + k);
+            }
+        // Link commands, with the stage archive and the output as placeholders.
+        for (const auto& t : targets) {
+            std::string text;
+            run_argv({"/usr/bin/ninja", "-C", w.build.string(), "-t", "commands", "bin/" + t}, "/", text);
+            std::string last;
+            std::istringstream lines(text);
+            for (std::string line; std::getline(lines, line);)
+                if (!line.empty()) last = line;
+            auto argv = command_argv(last, "link");
+            bool has_archive = false;
+            for (std::size_t i = 0; i < argv.size(); ++i) {
+                if (argv[i] == kStagesArchive) {
+                    argv[i] = "@STAGES@";
+                    has_archive = true;
+                }
+                if (argv[i] == "-o" && i + 1 < argv.size()) argv[i + 1] = "@OUT@";
+            }
+            if (!has_archive)
+                throw std::runtime_error("rt-grade: " + t + " does not link " + kStagesArchive);
+            plan["link"][t] = argv;
+        }
+    } catch (const std::exception& e) {
+        log << e.what() << "\n";
+        return false;
+    }
+    // The instructor's strong symbols (framework libraries, tests): a student object defining
+    // one shows intent to replace framework or test code.
+    std::set<std::string> instructor;
+    for (auto it = fs::recursive_directory_iterator(w.build, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        const fs::path p = it->path();
+        if (p.string().find("rt_stages") != std::string::npos) continue;
+        if (p.extension() != ".a" && p.extension() != ".o") continue;
+        for (const auto& [name, type] : defined_symbols(p))
+            if (strong(type)) instructor.insert(name);
+    }
+    plan["instructor_symbols"] = instructor;
+
+    // Pristine objects, compiled the way student files are, and the API of each file: the
+    // global functions its stub defines.
+    BuildPlan partial;
+    partial.compile = plan["compile"].get<decltype(partial.compile)>();
+    fs::create_directories(w.priv / "objects");
+    std::vector<fs::path> solutions;
+    for (const auto& s : specs)
+        for (const auto& f : s.student_files) {
+            const std::string k = s.folder + "/" + f;
+            for (const bool solution : {true, false}) {
+                const std::string text =
+                    read_text(w.priv / "pristine" / (k + (solution ? ".solution" : ".stub")));
+                const fs::path raw = w.priv / "objects" / (object_name(k) + ".raw.o");
+                std::string compile_log;
+                if (!compile_in_jail(w, partial, k, text, w.root / "compile", raw, compile_log)) {
+                    log << "rt-grade: error: the " << (solution ? "solution" : "stub") << " of " << k
+                        << " does not compile in the sandbox:\n" << compile_log;
+                    return false;
+                }
+                if (!solution) {
+                    std::set<std::string> api;
+                    for (const auto& [name, type] : defined_symbols(raw))
+                        if (strong(type)) api.insert(name);
+                    plan["api"][k] = api;
+                }
+                fs::rename(raw, solution ? solution_object(w, k) : stub_object(w, k));
+            }
+            solutions.push_back(solution_object(w, k));
+        }
+    // Every shipped reference image, by pixels: a render equal to one was handed in, not made.
+    std::set<std::string> shipped;
+    for (auto it = fs::recursive_directory_iterator(o.source / "reference_images", ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+        if (it->path().extension() == ".png") shipped.insert(pixel_hash(read_image8(it->path())));
+    plan["shipped_hashes"] = shipped;
+    write_text(w.priv / "plan.json", plan.dump(1));
+    // References of the graded scenes, where children never look.
+    for (const auto& s : specs) {
+        const std::string stage = fs::path(s.folder).filename().string();
+        fs::create_directories(w.priv / "reference_images" / stage);
+        for (const auto& sc : s.scenes)
+            fs::copy_file(o.source / "reference_images" / stage / (sc.name + ".png"),
+                          w.priv / "reference_images" / stage / (sc.name + ".png"),
+                          fs::copy_options::overwrite_existing, ec);
+    }
+    // The reference renderer (every solution) renders the unseen views at grading time.
+    {
+        // The secret seeds the unseen views; a student never sees it.
+        unsigned char bytes[32];
+        if (getrandom(bytes, sizeof bytes, 0) != ssize_t(sizeof bytes)) return false;
+        write_text(w.priv / "secret", std::string(reinterpret_cast<char*>(bytes), sizeof bytes));
+        BuildPlan linkable;
+        linkable.link = plan["link"].get<decltype(linkable.link)>();
+        std::string link_log;
+        if (!link_stage(w, linkable, solutions, {"rt"}, w.priv / "bin", link_log)) {
+            log << "rt-grade: error: linking the reference renderer failed:\n" << link_log;
+            return false;
+        }
+    }
+    // The expected test lists come from the instructor's binaries.
+    for (const auto& t : targets) {
+        if (t == "rt") continue;
+        out.clear();
+        run_argv({(w.build / "bin" / t).string(), "--gtest_list_tests"}, w.build, out);
+        std::vector<std::string> names;
+        std::istringstream lines(out);
+        std::string line, suite;
+        while (std::getline(lines, line)) {
+            if (line.empty() || line.starts_with("Running main")) continue;
+            if (line[0] != ' ') {
+                suite = line.substr(0, line.find_first_of(" #"));
+            } else {
+                std::string test = line.substr(2);
+                test = test.substr(0, test.find_first_of(" #"));
+                names.push_back(suite + test);
+            }
+        }
+        write_text(w.priv / "expected" / (t + ".json"), json(names).dump(1));
+    }
+    write_text(w.priv / "key", key);
+    write_text(w.root / "key", key);
+    log << "rt-grade: workspace ready in " << int(seconds_since(start)) << " s\n";
+    return true;
+}
+
+}  // namespace rt::grader

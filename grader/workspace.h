@@ -1,0 +1,74 @@
+// The grading workspace: the instructor's tree built once per change (trusted), and what a
+// grading needs from it to turn untrusted student files into test binaries without ever
+// compiling them outside the sandbox or linking them into trusted code.
+//
+//   CACHE/workspace/src     the tree without reference_images/, every student file a stub
+//   CACHE/workspace/build   its build (framework, tests, hidden tests, all with stubs)
+//   CACHE/private/          0700: references, pristine files, objects, commands, secrets
+//
+// A grading then (docs/grading.md, "How a submission is built"):
+//   1. compiles each student file in the jail (`compile_in_jail`): a non-root sandbox uid that
+//      sees the public framework and stage folders and writes one object file;
+//   2. checks the object and keeps only the stage's API global (`check_and_localize`), so
+//      nothing else it defines can replace or interpose a symbol of the framework, the tests
+//      or a library;
+//   3. links per graded stage (`link_stage`) an archive of solution objects for the stages
+//      before it, the student's for it and stubs after it, exactly as when graded alone.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "grade.h"
+#include "image/image.h"
+
+namespace rt::grader {
+
+struct Workspace {
+    std::filesystem::path cache, root, src, build, priv;
+};
+Workspace workspace_paths(const GradeOptions& options);
+
+// What prepare saved: commands with @OUT@ (and @STAGES@ for the stage archive).
+struct BuildPlan {
+    std::map<std::string, std::vector<std::string>> compile;  // "stages/NN/f.cpp" -> argv
+    std::map<std::string, std::vector<std::string>> link;     // target -> argv (cwd: build)
+    std::map<std::string, std::set<std::string>> api;         // "stages/NN/f.cpp" -> symbols
+    std::set<std::string> instructor_symbols;                 // strong, framework and tests
+    std::set<std::string> shipped_hashes;                     // 8-bit pixels of every reference
+    std::string secret;                                       // per workspace, never shipped
+};
+BuildPlan load_build_plan(const Workspace& w);
+
+// Folders of the workspace tree a child never sees (covered by an empty tmpfs in the jail).
+std::vector<std::filesystem::path> hidden_dirs(const Workspace& w);
+
+// Compiles `text` as the student file `key` into `object`. Returns false with the compiler's
+// output (workspace paths shortened) in `log`.
+bool compile_in_jail(const Workspace& w, const BuildPlan& plan, const std::string& key,
+                     const std::string& text, const std::filesystem::path& work,
+                     const std::filesystem::path& object, std::string& log);
+
+// Refuses what must not reach the link (main, test or framework symbols, code that runs before
+// main), then writes `out` with every global symbol but the API localized. Returns the problems,
+// one per line ("" when the object is fine).
+std::string check_and_localize(const std::filesystem::path& object, const std::set<std::string>& api,
+                               const BuildPlan& plan, const std::filesystem::path& out);
+
+// Archives `objects` and links `targets` into `bin`. Returns false with the linker's output.
+bool link_stage(const Workspace& w, const BuildPlan& plan, const std::vector<std::filesystem::path>& objects,
+                const std::vector<std::string>& targets, const std::filesystem::path& bin,
+                std::string& log);
+
+// Pristine objects of every student file, compiled at prepare time.
+std::filesystem::path solution_object(const Workspace& w, const std::string& key);
+std::filesystem::path stub_object(const Workspace& w, const std::string& key);
+
+// Hash of an 8-bit image's size and pixels (for "is this a shipped reference?").
+std::string pixel_hash(const Image8& image);
+
+}  // namespace rt::grader
