@@ -201,6 +201,28 @@ std::string first_failure(const std::string& output) {
     return where + ": " + what;
 }
 
+// The compiler's output from its first error on (warnings before it would bury it), with the
+// "In function" line that names where it is.
+std::string first_errors(const std::string& log) {
+    std::vector<std::string> lines;
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::size_t first = 0;
+    while (first < lines.size() && lines[first].find("error") == std::string::npos) ++first;
+    if (first == lines.size()) first = 0;
+    std::size_t from = first;
+    for (std::size_t i = first; i-- > 0;)
+        if (lines[i].find("In function") != std::string::npos || lines[i].find("In member function") != std::string::npos) {
+            from = i;
+            break;
+        } else if (lines[i].find("warning:") != std::string::npos) {
+            break;
+        }
+    std::string out;
+    for (std::size_t i = from; i < lines.size() && i < from + 40; ++i) out += lines[i] + "\n";
+    return out;
+}
+
 // A file the child wrote, copied out through a descriptor that refuses symlinks, fifos and
 // devices: the child owned the folder and could have planted anything there.
 bool copy_out(const fs::path& child_dir, const std::string& name, const fs::path& to,
@@ -448,6 +470,13 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     // Only the grader lists it; uid-drop children (no jail) may pass through to their own folder.
     fs::permissions(scratch, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
 
+    // The reference renderer, where a sandbox uid may execute but not read it (uid-drop mode
+    // has no jail to bind it into).
+    const fs::path reference_rt = trusted_dir(scratch / "reference") / "rt";
+    fs::copy_file(w.priv / "bin" / "rt", reference_rt);
+    fs::permissions(reference_rt.parent_path(), fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    fs::permissions(reference_rt, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+
     Intake in = take_in(o, graded, all_specs, w.src);
     if (!in.error.empty()) general += "The submission could not be read: " + in.error + "\n";
     std::string digest;
@@ -483,7 +512,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
             if (!compile_in_jail(w, plan, key, in.files[key], scratch / "compile" / name, raw,
                                  compile_log)) {
                 build_errors[s.number] += key + " does not compile. The compiler's first errors:\n\n" +
-                                          compile_log.substr(0, 4000);
+                                          first_errors(compile_log);
                 continue;
             }
             const fs::path local = raw.parent_path() / (name + ".local.o");
@@ -527,8 +556,12 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
                                       "missing or defined twice?):\n\n" + shown.substr(0, 4000);
             continue;
         }
-        fs::permissions(bin.parent_path(), fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
-        fs::permissions(bin, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+        // Executable by a sandbox uid, readable by none (they hold earlier stages' solutions).
+        const auto exec_only = fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec;
+        fs::permissions(bin.parent_path(), exec_only);
+        fs::permissions(bin, exec_only);
+        for (const auto& t : targets) fs::permissions(bin / t, exec_only);
+        fs::remove(bin / "librt_stages.a");
         stage_bins[s.number] = bin;
     }
     for (const auto& [stage, errors] : build_errors) {
@@ -663,7 +696,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
                     double yaw = unseen_yaw(plan.secret, digest, task.stage->folder + "/" + task.scene->name);
                     Render truth;
                     for (int attempt = 0; attempt < 3; ++attempt, yaw *= 1.8) {
-                        truth = render(w.priv / "bin" / "rt", task, yaw, dir, "truth");
+                        truth = render(reference_rt, task, yaw, dir, "truth");
                         // A turn that leaves the image as shipped would test nothing.
                         if (!truth.ok || score_image(reference, truth.image, task.scene->thresholds).fraction < 1)
                             break;

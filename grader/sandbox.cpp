@@ -319,7 +319,14 @@ int count_processes_of(uid_t uid) {
         if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
         struct stat st {};
         const std::string path = std::string("/proc/") + e->d_name;
-        if (stat(path.c_str(), &st) == 0 && st.st_uid == uid) ++count;
+        if (stat(path.c_str(), &st) != 0 || st.st_uid != uid) continue;
+        // A zombie is dead already (killed, waiting for whoever adopted it to reap it).
+        std::ifstream stat_file(path + "/stat");
+        std::string text;
+        std::getline(stat_file, text);
+        const auto close = text.rfind(')');
+        if (close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z') continue;
+        ++count;
     }
     closedir(proc);
     return count;

@@ -265,8 +265,10 @@ std::string check_and_localize(const fs::path& object, const std::set<std::strin
     // only what shows intent to replace trusted code is refused (a clear message beats a
     // silently ignored definition); helpers, templates, inline variables, extern "C" helpers and
     // what the compiler emits for exceptions and RTTI are simply made local.
+    std::string renames;  // unique globals ('u'): objcopy cannot make them local, so rename
     for (const auto& [name, type] : defined_symbols(object)) {
         if (api.count(name)) continue;
+        if (type == "u") renames += name + " rt.student." + name + "\n";
         if (type == "i") {
             problems += "  " + demangle(name) + " (an IFUNC resolver: runs before main)\n";
         } else if (name == "main") {
@@ -307,9 +309,12 @@ std::string check_and_localize(const fs::path& object, const std::set<std::strin
     for (const auto& s : api) keep += s + "\n";
     const fs::path keep_file = out.string() + ".keep";
     write_text(keep_file, keep);
+    const fs::path rename_file = out.string() + ".renames";
+    write_text(rename_file, renames);
     std::string log;
     const int code = run_argv({"/usr/bin/objcopy", "--keep-global-symbols=" + keep_file.string(),
-                               "--remove-section=.group", object.string(), out.string()},
+                               "--redefine-syms=" + rename_file.string(), "--remove-section=.group",
+                               object.string(), out.string()},
                               "/", log);
     if (code != 0) return "  objcopy failed: " + clean_output(log) + "\n";
     return "";
@@ -350,7 +355,6 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     const std::string key = hex(hash);
     fs::create_directories(w.cache);
     const int lock = open((w.cache / "workspace.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
-    flock(lock, LOCK_EX);
     struct Unlock {
         int fd;
         ~Unlock() { close(fd); }
@@ -359,6 +363,12 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         std::error_code ec;
         return fs::exists(f, ec) ? read_text(f) : std::string();
     };
+    // Gradings hold the lock shared while they run; checking the key needs no more. Only a
+    // rebuild takes it exclusively (waiting for running gradings to finish).
+    flock(lock, LOCK_SH);
+    if (read_key(w.priv / "key") == key && read_key(w.root / "key") == key) return true;
+    flock(lock, LOCK_UN);
+    flock(lock, LOCK_EX);
     if (read_key(w.priv / "key") == key && read_key(w.root / "key") == key) return true;
 
     log << "rt-grade: preparing the grading workspace " << w.root.string()

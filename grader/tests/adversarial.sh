@@ -5,32 +5,7 @@
 #   adversarial.sh BIN_DIR SRC_DIR CASE
 set -uo pipefail
 bin=$1 src=$2 case=$3
-work=$(mktemp -d /tmp/rt-grade-adv-XXXXXX)
-trap 'rm -rf "$work"' EXIT
-sub=$work/submission
-s1=stages/01-camera-rays s2=stages/02-intersections s3=stages/03-blinn-phong
-s4=stages/04-shadows s5=stages/05-recursion
-mkdir -p "$sub/$s1" "$sub/$s2"
-# Every stage that grading covers here, its student file, and the stubs' handout sections.
-all_stages=1,2,3,4,5
-files=("$s1/camera_rays.cpp" "$s2/intersections.cpp" "$s3/blinn_phong.cpp" "$s4/shadows.cpp"
-       "$s5/recursion.cpp")
-sections() { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/' | sort -u; }
-
-# The starter (stub) version of a student file: what `rt-grade release` writes.
-stub() {
-  awk '/^[ \t]*\/\/ BEGIN SOLUTION[ \t]*$/ {s=1; next}
-       /^[ \t]*\/\/ STUB[ \t]*$/ {s=2; next}
-       /^[ \t]*\/\/ END SOLUTION[ \t]*$/ {s=0; next}
-       s==1 {next}
-       s==2 {sub(/\/\/ ?/, "")}
-       {print}' "$1"
-}
-solution1() { cp "$src/$s1/camera_rays.cpp" "$sub/$s1/camera_rays.cpp"; }
-solution2() { cp "$src/$s2/intersections.cpp" "$sub/$s2/intersections.cpp"; }
-append1() { cat >> "$sub/$s1/camera_rays.cpp"; }
-append2() { cat >> "$sub/$s2/intersections.cpp"; }
-solution_all() { for f in "${files[@]}"; do mkdir -p "$sub/$(dirname "$f")"; cp "$src/$f" "$sub/$f"; done; }
+source "$(dirname "$0")/case_lib.sh"
 
 # Whole-command cases: batch mode, the Gradescope package, an interrupted grading.
 case $case in
@@ -379,15 +354,4 @@ CPP
   *) echo "unknown case $case"; exit 2 ;;
 esac
 
-start=$(date +%s)
-timeout 900 "$bin/rt-grade" "$sub" --stages "$stages" "${limit[@]}" --quiet \
-  --results "$work/results.json" --html "$work/report.html"
-code=$?
-echo "rt-grade exited with $code after $(( $(date +%s) - start )) s"
-[ $code -eq 0 ] || { echo "FAIL: rt-grade did not finish cleanly"; exit 1; }
-[ -s "$work/report.html" ] || { echo "FAIL: no HTML report"; exit 1; }
-if [ "$(id -u)" -eq 0 ] && pgrep -u 65534 >/dev/null; then
-  echo "FAIL: processes of the sandbox user survived:"; pgrep -a -u 65534; exit 1
-fi
-"$bin/results_check" "$work/results.json" "${checks[@]}" || {
-  echo "--- results.json"; head -c 6000 "$work/results.json"; exit 1; }
+grade_and_check

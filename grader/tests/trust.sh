@@ -1,0 +1,334 @@
+#!/usr/bin/env bash
+# The grader's trust (docs/grading.md, "What the sandbox guarantees"): one case per class of
+# attack, each built from the instructor's files so it follows the course, plus the benign
+# corpus of ordinary C++ that must always score full marks.
+#   trust.sh BIN_DIR SRC_DIR CASE
+set -uo pipefail
+bin=$1 src=$2 case=$3
+source "$(dirname "$0")/case_lib.sh"
+cache=${RT_GRADE_CACHE:-$src/build/grader-cache}
+hidden_marker="Hidden stage 02 tests"  # the first line of stages/02-intersections/hidden/hidden_test.cpp
+grep -q "$hidden_marker" "$src/$s2/hidden/hidden_test.cpp" || { echo "FAIL: hidden test marker changed"; exit 1; }
+stages=1 limit=(--time-limit 5) checks=()
+
+# A forger that tries every way to turn its FAIL into a PASS: read the records back from any
+# descriptor (read, recv, /proc/self/fd reopen) and rewrite them, take the nonce from what it
+# read or from hex strings in its memory, write PASS records with every guess, exit 0.
+forger() {
+  cat <<'CPP'
+#include <fcntl.h>
+#include <csignal>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <unistd.h>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+namespace {
+void forge() {
+  std::ifstream cmd("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>()), test;
+  for (std::size_t p = 0, q; p < all.size(); p = q + 1) {
+    q = all.find('\0', p); if (q == std::string::npos) q = all.size();
+    const std::string a = all.substr(p, q - p);
+    if (a.rfind("--gtest_filter=", 0) == 0) test = a.substr(15);
+  }
+  std::vector<std::string> nonces{std::string(32, '0')};
+  auto harvest = [&](const std::string& data) {
+    for (std::size_t at = 0; (at = data.find("RTG1 ", at)) != std::string::npos; at += 5)
+      if (at + 37 <= data.size()) nonces.push_back(data.substr(at + 5, 32));
+  };
+  char buf[65536];
+  for (int fd = 3; fd < 64; ++fd) {
+    ssize_t n = recv(fd, buf, sizeof buf, MSG_DONTWAIT); if (n > 0) harvest(std::string(buf, n));
+    n = pread(fd, buf, sizeof buf, 0); if (n > 0) harvest(std::string(buf, n));
+    const std::string path = "/proc/self/fd/" + std::to_string(fd);
+    const int again = open(path.c_str(), O_RDONLY | O_NONBLOCK);
+    if (again >= 0) { n = read(again, buf, sizeof buf); if (n > 0) harvest(std::string(buf, n)); close(again); }
+  }
+  std::ifstream maps("/proc/self/maps"); std::string line;
+  while (std::getline(maps, line) && nonces.size() < 64) {
+    unsigned long lo = 0, hi = 0; char perms[8] = {};
+    if (std::sscanf(line.c_str(), "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[1] != 'w') continue;
+    if (hi - lo > (8ul << 20)) continue;
+    const char* m = reinterpret_cast<const char*>(lo); int run = 0;
+    for (unsigned long i = 0; i < hi - lo && nonces.size() < 64; ++i) {
+      const char c = m[i];
+      run = ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')) ? run + 1 : 0;
+      if (run == 32) nonces.push_back(std::string(m + i - 31, 32));
+    }
+  }
+  for (int fd = 3; fd < 64; ++fd)
+    for (const auto& n : nonces) {
+      const std::string rec = "RTG1 " + n + " PASS " + test + "\nRTG1 " + n + " END 1 0\n";
+      if (write(fd, rec.data(), rec.size()) < 0) break;
+    }
+  std::printf("FORGER ran: %zu nonce guesses\n", nonces.size()); std::fflush(stdout);
+  _exit(0);
+}
+}
+CPP
+}
+
+# A C++ base64 decoder and a writer of an embedded image to the renderer's -o path.
+hand_in() {  # hand_in SCENE...: the shipped references of those scenes, embedded
+  echo '#include <cstdio>'; echo '#include <fstream>'; echo '#include <iterator>'
+  echo '#include <string>'; echo '#include <unistd.h>'
+  echo 'namespace { const char* kImages[][2] = {'
+  for scene in "$@"; do
+    oiiotool "$src/reference_images/01-camera-rays/$scene.png" --colorconvert sRGB linear -d half \
+      --compression zip -o "$work/$scene.exr" || exit 1
+    printf '{"%s", "%s"},\n' "$scene" "$(base64 -w0 "$work/$scene.exr")"
+  done
+  cat <<'CPP'
+};
+std::string decode(const char* in) {
+  static const std::string abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out; int bits = 0, value = 0;
+  for (; *in && *in != '='; ++in) { value = value * 64 + int(abc.find(*in)); bits += 6;
+    if (bits >= 8) { bits -= 8; out.push_back(char((value >> bits) & 255)); } }
+  return out;
+}
+struct HandIn { HandIn() {
+  std::ifstream cmd("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
+  std::string out, scene;
+  for (std::size_t p = 0, q; p < all.size(); p = q + 1) {
+    q = all.find('\0', p); if (q == std::string::npos) q = all.size();
+    const std::string a = all.substr(p, q - p);
+    if (a.size() > 5 && a.substr(a.size() - 5) == ".json") scene = a.substr(a.rfind('/') + 1, a.size() - a.rfind('/') - 6);
+    if (!out.empty() && out == "-o") out = a;
+    if (a == "-o") out = "-o";
+  }
+  for (const auto& img : kImages)
+    if (scene == img[0]) { std::ofstream(out, std::ios::binary) << decode(img[1]); _exit(0); }
+} } hand_in; }
+CPP
+}
+
+# Honest C++ that ordinary students write: every construct GCC emits unusual symbols for.
+benign_helpers() {
+  cat <<'CPP'
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <typeinfo>
+#include <vector>
+int g_calls = 0;                       // a global variable (an unmangled C name)
+inline int g_inline_counter = 0;       // an inline variable (a unique global)
+extern "C" int student_c_helper(int x) { return x + 1; }  // an extern "C" helper
+namespace helpers {
+struct Shape { virtual ~Shape() = default; virtual double area() const = 0; };  // vtable, RTTI
+struct Square : Shape { double s = 2; double area() const override { return s * s; } };
+template <typename T> T twice(T x) { return x + x; }                           // templates
+std::string describe(int n) { return "n=" + std::to_string(n); }               // to_string's table
+int safe_parse(const std::string& text) {                                      // exceptions by reference
+  try { if (text.empty()) throw std::invalid_argument("empty"); return std::stoi(text); }
+  catch (const std::exception& e) { return -1; }
+}
+int next_id() { static int id = 0; return ++id; }                              // a static local
+thread_local int t_scratch = 0;                                                // TLS
+std::map<std::string, std::function<int(int)>> table() {                       // std::function
+  return {{"inc", [](int x) { return x + 1; }}, {"dbl", twice<int>}};
+}
+const char* kind(const Shape& s) { return dynamic_cast<const Square*>(&s) ? typeid(s).name() : "?"; }
+struct Logger { std::ostringstream out; Logger() { out << "ready"; } } g_logger;  // a constructor
+int use_everything() {
+  std::unique_ptr<Shape> sq = std::make_unique<Square>();
+  g_calls += twice(1) + next_id() + student_c_helper(1) + safe_parse("") + g_inline_counter++;
+  t_scratch = int(sq->area()) + int(describe(3).size()) + table()["inc"](1);
+  if (std::getenv("RT_BENIGN_NOISE")) std::cerr << kind(*sq) << g_logger.out.str() << "\n";
+  return g_calls + t_scratch;
+}
+}  // namespace helpers
+CPP
+}
+
+case $case in
+  forge_destructor | forge_atexit | forge_signal)
+    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
+    forger | append1
+    case $case in
+      forge_destructor) echo 'namespace { struct Late { ~Late() { forge(); } } late; }' | append1 ;;
+      forge_atexit) echo 'namespace { struct Reg { Reg() { std::atexit([] { forge(); }); } } reg; }' | append1 ;;
+      # A timer fires in the middle of the test: the forger runs before the runner's record.
+      forge_signal) echo 'namespace { struct Arm { Arm() { std::signal(SIGALRM, [](int) { forge(); });
+        itimerval t{}; t.it_value.tv_usec = 20000; setitimer(ITIMER_REAL, &t, nullptr); } } arm; }' | append1
+        # ... and the test body must still be running when it fires.
+        sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|{ volatile long spin = 0; while (spin < 300000000L) spin = spin + 1; } RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp" ;;
+    esac
+    checks=(--score-max 0 --contains "FORGER ran" --contains "tampering") ;;
+  hand_in_reference)  # the shipped references written as renders: the shipped view passes...
+    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
+    hand_in perspective_directions orthographic_directions | append1
+    # ... but the unseen view of the same scene exposes it: no point for either scene.
+    checks=(--score-max 0 --contains "0.000% of the pixels differ"
+            --contains "the image is one of the shipped reference images") ;;
+  compile_reads)  # the compiler is made to read files: hidden tests, /etc/shadow, /etc/passwd
+    hidden=$cache/workspace/src/$s2/hidden/hidden_test.cpp
+    shadow_line=$(head -1 /etc/shadow 2>/dev/null | cut -d: -f1-2)
+    passwd_line=$(head -1 /etc/passwd)
+    tricks=("%:include \"$hidden\""
+            "#line 1 \"$hidden\"
+int broken = ;"
+            "asm(\".inc\" \"bin \\\"/etc/shadow\\\"\");"
+            "#/**/include \"/etc/passwd\""
+            "#line 1 \"/etc/shadow\"
+int broken = ;")
+    stages=2 failed=0
+    for trick in "${tricks[@]}"; do
+      rm -rf "$sub"; mkdir -p "$sub/$s2"; solution2; printf '%s\n' "$trick" | append2
+      checks=(--score-max 0 --not-contains "$hidden_marker" --not-contains "$passwd_line")
+      [ -n "$shadow_line" ] && checks+=(--not-contains "$shadow_line")
+      echo "--- trick: $trick"
+      grade_and_check || failed=1
+      grep -q "$hidden_marker" "$work/report.html" && { echo "FAIL: hidden test text in the report"; failed=1; }
+    done
+    exit $failed ;;
+  benign_mix)  # stage 01 with every unusual construct
+    solution1; benign_helpers | append1
+    checks=(--full-marks --not-contains "Build (compiling your files)") ;;
+  benign_exceptions)  # the reference plus a helper that catches std::exception by reference
+    solution2; stages=2
+    echo '#include <stdexcept>
+namespace rt { int checked(int x) { try { if (x < 0) throw std::runtime_error("negative"); return x; }
+  catch (const std::exception& e) { return 0; } } }' | append2
+    checks=(--full-marks --not-contains "Build (compiling your files)") ;;
+  benign_to_string)  # the reference plus std::to_string(int) (GCC 12: a unique global digit table)
+    solution2; stages=2
+    echo '#include <string>
+namespace rt { std::string label(int i) { return "primitive " + std::to_string(i); } }' | append2
+    checks=(--full-marks --not-contains "Build (compiling your files)") ;;
+  overrides_refused)  # what would replace trusted code is still refused, with a clear message
+    failed=0
+    for extra in 'int main() { return 0; }' \
+                 'namespace testing { namespace internal { bool ParseInt32(const char*, const char*, int*) { return true; } } }' \
+                 '#include "testing/stage_test.h"
+void rt::testing::StageTest::TearDown() {}' \
+                 '#include "render/render.h"
+namespace rt { int resolve_thread_count(int) { return 1; } }'; do
+      rm -rf "$sub"; mkdir -p "$sub/$s1"; solution1; printf '%s\n' "$extra" | append1
+      checks=(--score-max 0 --contains "Build (compiling your files)" --contains "Remove them")
+      echo "--- override: $extra"
+      grade_and_check || failed=1
+    done
+    exit $failed ;;
+  together_reference)  # stages graded together score as when graded alone
+    rm -rf "$sub"; mkdir -p "$sub"
+    cp "$src/$s2/intersections.cpp" "$src/stages/06-bvh/bvh.cpp" "$sub/"
+    stages=2,6 limit=()
+    checks=(--full-marks --full-marks-tag stage02 --full-marks-tag stage06) ;;
+  together_broken)  # a stage 02 stub does not cost stage 06 anything
+    rm -rf "$sub"; mkdir -p "$sub"
+    stub "$src/$s2/intersections.cpp" > "$sub/intersections.cpp"
+    cp "$src/stages/06-bvh/bvh.cpp" "$sub/"
+    stages=2,6 limit=()
+    checks=(--full-marks-tag stage06) ;;
+  host_writes)  # the shared /tmp, /var/tmp, /dev/shm and the grader's folders stay untouched
+    tag=rt-grade-canary-$$
+    solution1
+    sed "s|@TAG@|$tag|" <<'CPP' | append1
+#include <fstream>
+#include <unistd.h>
+namespace { struct Litter { Litter() {
+  for (const char* dir : {"/tmp", "/var/tmp", "/dev/shm"}) std::ofstream(std::string(dir) + "/@TAG@") << "x";
+  std::ofstream("/tmp/results.json") << "{}";
+} } litter; }
+CPP
+    checks=(--full-marks)
+    grade_and_check || exit 1
+    for f in /tmp/$tag /var/tmp/$tag /dev/shm/$tag; do
+      [ -e "$f" ] && { echo "FAIL: the sandbox wrote $f on the host"; rm -f "$f"; exit 1; }
+    done
+    exit 0 ;;
+  symlink_plant)  # symlinks where the grader reads and writes: it never follows them
+    echo original > "$work/canary"
+    solution1
+    sed "s|@CANARY@|$work/canary|" <<'CPP' | append1
+#include <unistd.h>
+#include <fstream>
+#include <iterator>
+#include <string>
+namespace { struct Plant { Plant() {
+  std::ifstream cmd("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
+  for (const char* name : {"render.exr", "student.png", "reference.png", "diff.png", "results.json",
+                           "../render.exr", "../trusted", "../png", "../capture"})
+    (void)!symlink("@CANARY@", name);
+  if (all.find("render") != std::string::npos) _exit(0);  // the "image" is the symlink
+} } plant; }
+CPP
+    checks=(--score-max 10 --contains "the renderer wrote no image")
+    grade_and_check || exit 1
+    [ "$(cat "$work/canary")" = original ] || { echo "FAIL: the canary was changed through a symlink"; exit 1; }
+    exit 0 ;;
+  daemon | uid_daemon)  # setsid + double fork: the grandchild must not outlive its test
+    [ $case = uid_daemon ] && export RT_GRADE_ISOLATION=uid
+    marker=rtgd$$
+    solution1
+    sed "s|@MARKER@|$marker|" <<'CPP' | append1
+#include <sys/prctl.h>
+#include <unistd.h>
+namespace { struct Daemon { Daemon() {
+  if (fork() == 0) { setsid(); if (fork() == 0) { prctl(PR_SET_NAME, "@MARKER@"); for (;;) sleep(1); } _exit(0); }
+} } daemon_; }
+CPP
+    checks=(--full-marks)
+    grade_and_check || exit 1
+    sleep 1
+    # Zombies are dead (killed, not yet reaped by whoever adopted them): only live ones count.
+    if ps -eo stat=,comm= | awk -v m="$marker" '$2 == m && $1 !~ /^Z/ {found=1} END {exit !found}'; then
+      echo "FAIL: a daemon outlived its test"; pkill -9 -x "$marker"; exit 1
+    fi
+    exit 0 ;;
+  batch_fork_bomb)  # a fork bomb graded beside an honest submission costs it nothing, ten times
+    mkdir -p "$work/all/honest/$s1" "$work/all/bomb/$s1"
+    cp "$src/$s1/camera_rays.cpp" "$work/all/honest/$s1/"
+    cp "$src/$s1/camera_rays.cpp" "$work/all/bomb/$s1/"
+    cat >> "$work/all/bomb/$s1/camera_rays.cpp" <<'CPP'
+#include <unistd.h>
+namespace { struct Bomb { Bomb() { while (fork() >= 0) {} sleep(1); _exit(1); } } bomb; }
+CPP
+    for round in 1 2 3 4 5 6 7 8 9 10; do
+      rm -rf "$work/grades"
+      "$bin/rt-grade" batch "$work/all" --out "$work/grades" --jobs 2 --stages 1 --time-limit 5 || exit 1
+      grep -q '^"honest",18,18' "$work/grades/scores.csv" ||
+        { echo "FAIL: round $round:"; cat "$work/grades/scores.csv"; "$bin/results_check" "$work/grades/honest/results.json" --full-marks; exit 1; }
+      grep -q '^"bomb",0,18' "$work/grades/scores.csv" || { echo "FAIL: round $round: the bomb scored"; exit 1; }
+      echo "round $round: honest 18/18, bomb 0/18"
+    done
+    exit 0 ;;
+  concurrent)  # the grader's own cases pass while another grading (a fork bomb) runs beside them
+    mkdir -p "$work/bomb/$s1"
+    cp "$src/$s1/camera_rays.cpp" "$work/bomb/$s1/"
+    echo '#include <unistd.h>
+namespace { struct Bomb { Bomb() { for (;;) fork(); } } bomb; }' >> "$work/bomb/$s1/camera_rays.cpp"
+    ( while [ ! -e "$work/stop" ]; do
+        "$bin/rt-grade" "$work/bomb" --stages 1 --time-limit 3 --quiet --results "$work/bomb.json" > /dev/null 2>&1
+      done ) &
+    background=$!
+    sleep 3
+    failed=0
+    for c in reference_stage1 daemon fork_bomb forge_destructor; do
+      if [ $c = reference_stage1 ]; then
+        rm -rf "$sub"; mkdir -p "$sub/$s1"; solution1; checks=(--full-marks); stages=1
+        grade_and_check || failed=1
+      else
+        bash "$(dirname "$0")/$( [ $c = fork_bomb ] && echo adversarial.sh || echo trust.sh )" "$bin" "$src" $c || failed=1
+      fi
+      echo "--- $c with a grading beside it: $([ $failed = 0 ] && echo ok || echo FAILED)"
+    done
+    touch "$work/stop"; wait $background
+    exit $failed ;;
+  *) echo "unknown case $case"; exit 2 ;;
+esac
+
+grade_and_check
