@@ -385,9 +385,33 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     const Workspace w = workspace_paths(o);
     const auto all_specs = load_stage_specs(o.source);
     std::vector<StageSpec> graded;
-    for (const auto& s : all_specs)
-        if (o.stages.empty() || std::count(o.stages.begin(), o.stages.end(), s.number))
-            graded.push_back(s);
+    std::string started_note;
+    if (o.stages.empty() && o.started_only) {
+        // Self-grading: the stages whose files differ from their stubs (at least stage 01).
+        for (const auto& s : all_specs) {
+            bool started = false;
+            for (const auto& f : s.student_files) {
+                std::error_code ec;
+                const fs::path mine = o.source / s.folder / f, stub = w.priv / "pristine" / s.folder / (f + ".stub");
+                started = started || (fs::is_regular_file(mine, ec) && fs::is_regular_file(stub, ec) &&
+                                      read_text(mine) != read_text(stub));
+            }
+            if (started) graded.push_back(s);
+        }
+        if (graded.empty() && !all_specs.empty()) {
+            graded.push_back(all_specs.front());
+            started_note = "No stage started yet (every student file is still its stub): grading stage " +
+                           two_digits(all_specs.front().number) + ".\n";
+        } else {
+            started_note = "Grading the stages you have started:";
+            for (const auto& s : graded) started_note += " " + two_digits(s.number);
+            started_note += " (--stages N,M grades others).\n";
+        }
+    } else {
+        for (const auto& s : all_specs)
+            if (o.stages.empty() || std::count(o.stages.begin(), o.stages.end(), s.number))
+                graded.push_back(s);
+    }
     const auto expected = list_tests(w, all_specs);
     const Isolation isolation = probe_isolation();
 
@@ -439,7 +463,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
         }
     }
     std::vector<TestOutcome> notes;  // 0-point entries: build, file checks
-    std::string general;             // top-level output
+    std::string general = started_note;  // top-level output
 
     auto to_report = [&]() {
         Report r;
@@ -473,9 +497,11 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     // The reference renderer, where a sandbox uid may execute but not read it (uid-drop mode
     // has no jail to bind it into).
     const fs::path reference_rt = trusted_dir(scratch / "reference") / "rt";
-    fs::copy_file(w.priv / "bin" / "rt", reference_rt);
-    fs::permissions(reference_rt.parent_path(), fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
-    fs::permissions(reference_rt, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    if (plan.has_reference) {
+        fs::copy_file(w.priv / "bin" / "rt", reference_rt);
+        fs::permissions(reference_rt.parent_path(), fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+        fs::permissions(reference_rt, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    }
 
     Intake in = take_in(o, graded, all_specs, w.src);
     if (!in.error.empty()) general += "The submission could not be read: " + in.error + "\n";
@@ -497,6 +523,14 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
             notes.push_back(note);
         }
     }
+
+    // Without namespaces the hidden tests are kept from the children (compiler included) by
+    // permissions only.
+    if (isolation == Isolation::UidDrop)
+        for (const auto& d : hidden_dirs(w)) {
+            std::error_code ec;
+            fs::permissions(d, fs::perms::owner_all, ec);
+        }
 
     // Build: each submitted file compiled in the jail, checked, its non-API symbols localized.
     std::map<std::string, fs::path> student_objects;
@@ -527,6 +561,33 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
             }
             student_objects[key] = local;
         }
+    // A starter tree has no solutions: the stages before a graded one use the tree's own files
+    // (compiled here like any student file; the stub when they do not compile).
+    std::map<std::string, fs::path> own_solutions;
+    for (const auto& key : plan.solution_from_source) {
+        if (student_objects.count(key)) {
+            own_solutions[key] = student_objects[key];
+            continue;
+        }
+        std::string text;
+        std::error_code ec;
+        if (!fs::is_regular_file(o.source / key, ec)) continue;
+        text = read_text(o.source / key);
+        std::string name = key;
+        std::replace(name.begin(), name.end(), '/', '_');
+        const fs::path raw = trusted_dir(scratch / "objects" / (name + "-own")) / (name + ".o");
+        std::string compile_log;
+        const auto api = plan.api.count(key) ? plan.api.at(key) : std::set<std::string>{};
+        if (compile_in_jail(w, plan, key, text, scratch / "compile" / (name + "-own"), raw, compile_log) &&
+            check_and_localize(raw, api, plan, raw.parent_path() / (name + ".local.o")).empty())
+            own_solutions[key] = raw.parent_path() / (name + ".local.o");
+    }
+    auto earlier_stage_object = [&](const std::string& key) -> fs::path {
+        if (!plan.solution_from_source.count(key)) return solution_object(w, key);
+        const auto it = own_solutions.find(key);
+        return it != own_solutions.end() ? it->second : stub_object(w, key);
+    };
+
     // Link: per graded stage, as if it were graded alone (solutions before it, stubs after).
     std::map<int, fs::path> stage_bins;
     for (const auto& s : graded) {
@@ -535,7 +596,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
         for (const auto& t : all_specs)
             for (const auto& f : t.student_files) {
                 const std::string key = t.folder + "/" + f;
-                if (t.number < s.number) objects.push_back(solution_object(w, key));
+                if (t.number < s.number) objects.push_back(earlier_stage_object(key));
                 else if (t.number == s.number && student_objects.count(key))
                     objects.push_back(student_objects[key]);
                 else objects.push_back(stub_object(w, key));
@@ -578,12 +639,6 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
             if (t.stage == stage) t.output = "not run: the build failed (see the Build test)\n";
     }
 
-    // Without namespaces the hidden tests are kept from the child (its own uid) by permissions.
-    if (isolation == Isolation::UidDrop)
-        for (const auto& d : hidden_dirs(w)) {
-            std::error_code ec;
-            fs::permissions(d, fs::perms::owner_all, ec);
-        }
 
     // Run every test and render in its own sandboxed child, `jobs` at a time.
     const std::vector<fs::path> hidden = hidden_dirs(w);
@@ -695,14 +750,17 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
                     // rendered by the student's code and by the reference renderer here.
                     double yaw = unseen_yaw(plan.secret, digest, task.stage->folder + "/" + task.scene->name);
                     Render truth;
-                    for (int attempt = 0; attempt < 3; ++attempt, yaw *= 1.8) {
+                    for (int attempt = 0; plan.has_reference && attempt < 3; ++attempt, yaw *= 1.8) {
                         truth = render(reference_rt, task, yaw, dir, "truth");
                         // A turn that leaves the image as shipped would test nothing.
                         if (!truth.ok || score_image(reference, truth.image, task.scene->thresholds).fraction < 1)
                             break;
                     }
                     std::string unseen;
-                    if (!truth.ok) {
+                    if (!plan.has_reference) {
+                        unseen = "(a starter tree has no reference renderer: the course's grader "
+                                 "also scores an unseen view of this scene)";
+                    } else if (!truth.ok) {
                         unseen = "the unseen view could not be rendered by the reference (grader problem): " +
                                  truth.output;
                         fraction = 0;

@@ -57,6 +57,7 @@ struct GradeOptions {
     std::filesystem::path html;         // HTML report (optional)
     int jobs = 0;                       // parallel test processes (0: hardware threads)
     bool quiet = false;                 // no terminal summary
+    bool started_only = false;          // no --stages: grade the stages started (self-grading)
     bool reveal_hidden = false;         // terminal summary shows hidden tests (instructor)
     double time_limit = 0;              // > 0: overrides every test's and render's wall/CPU limit
 };

@@ -482,6 +482,18 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
         if (problems.size() != problems_before) continue;
         (solved ? kept : stripped) += result.regions;
         rewritten.push_back({relative, std::move(result.text)});
+        // The stub as released, whatever --solved-through says: `rt-grade .` in the starter
+        // tree builds its grading copy from it and tells started stages from untouched ones.
+        rewritten.push_back({std::string(kStarterStubs) + "/" + relative,
+                             process_markers(content, RegionMode::Strip).text});
+    }
+    // The students' README replaces the instructor's (no instructor commands in a starter tree).
+    {
+        std::string readme;
+        if (read_file(options.source / "grader/templates/starter_README.md", readme)) {
+            copied.erase("README.md");
+            rewritten.push_back({"README.md", readme});
+        }
     }
     // stage.json files describe the stages to students and tools: always ship them.
     for (const auto& [folder, info] : stages) {

@@ -23,6 +23,9 @@
 
 namespace rt::grader {
 
+// Where a starter tree keeps its student files' stubs as released (`rt-grade .` reads them).
+inline constexpr const char* kStarterStubs = ".rt-grade/stubs";
+
 // What to do with the solution regions of one file.
 enum class RegionMode {
     Strip,  // remove the solution, un-comment the stub (stage not solved)

@@ -31,6 +31,8 @@ std::vector<int> parse_stages(const std::string& list) {
 
 }  // namespace
 
+namespace fs = std::filesystem;
+
 int main(int argc, char** argv) {
     // Not dumpable: a child running as the same user (no user namespace, no uid drop) cannot
     // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
@@ -43,9 +45,11 @@ int main(int argc, char** argv) {
     grade.source = RT_SOURCE_DIR;
     std::string submission, stages, cache;
     app.add_option("submission", submission, "folder or .zip to grade ('.' : the working tree)");
-    app.add_option("--stages", stages, "comma-separated stage numbers (default: every graded stage)");
+    app.add_option("--stages", stages,
+                   "comma-separated stage numbers (default: every graded stage; for '.', the "
+                   "stages you have started)");
     app.add_option("--results", grade.results, "write Gradescope's results.json here");
-    app.add_option("--html", grade.html, "write the HTML report here");
+    app.add_option("--html", grade.html, "write the HTML report here (default for '.': report.html)");
     app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
         ->check(CLI::ExistingDirectory);
     if (const char* c = std::getenv("RT_GRADE_CACHE")) cache = c;
@@ -133,8 +137,19 @@ int main(int argc, char** argv) {
             return 2;
         }
         grade.submission = submission;
+        // Self-grading (the tree rt-grade grades from): the started stages, and a report.
+        std::error_code ec;
+        const bool self = fs::weakly_canonical(fs::absolute(submission), ec) ==
+                          fs::weakly_canonical(fs::absolute(grade.source), ec);
+        if (self) {
+            grade.started_only = grade.stages.empty();
+            if (grade.html.empty()) grade.html = "report.html";
+        }
         if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
         rt::grader::grade_submission(grade, std::cout);
+        if (!grade.html.empty() && !grade.quiet)
+            std::cout << "Report: " << fs::absolute(grade.html).lexically_normal().string()
+                      << " (failures first; open it in a browser)\n";
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "rt-grade: error: " << e.what() << "\n";

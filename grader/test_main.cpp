@@ -5,14 +5,20 @@
 //
 // The channel (docs/grading.md, "Unit-test verdicts"):
 //   - rt-grade passes two descriptors, named by RT_GRADE_NONCE_FD and RT_GRADE_RESULT_FD: a pipe
-//     holding a per-run random nonce, and an unlinked file for the records;
+//     holding a per-run random nonce, and one end of a socket pair for the records (a socket end
+//     sends to its peer only: nothing in this process can read back or rewrite what was sent);
 //   - a constructor of priority 101 reads the nonce and closes the pipe before any student
 //     constructor can run (rt-grade refuses student objects with prioritized constructors,
 //     .preinit_array or IFUNC resolvers, which would run earlier);
 //   - a listener writes one record per finished test and one at the end, each carrying the
-//     nonce, through raw system calls and functions of internal linkage (a student object cannot
-//     interpose them the way it could interpose write() or a library template);
-//   - rt-grade rejects any record without the nonce, so guessing fails on the first try.
+//     nonce, through raw system calls and functions of internal linkage (student objects have
+//     every symbol but their API localized, so they cannot interpose write() either);
+//   - rt-grade rejects any record without the nonce, and duplicates, so a forger that runs
+//     after the listener (a destructor, an atexit handler) can only spoil its own grade.
+// The residual risk, stated in docs/grading.md: code running in this process during the test
+// can read this process's memory, so a forger that reconstructs the masked nonce and exits
+// before the listener writes is not excluded by the channel; image tests (scored outside the
+// process, on unseen views) are not exposed to it.
 // Without those variables (a student building the workspace by hand) it is a plain gtest main.
 #include <gtest/gtest.h>
 

@@ -41,7 +41,22 @@ bool skipped_top_level(const std::string& name) {
 }
 
 // Every file of the instructor's tree the workspace depends on, and a hash of them all.
-std::vector<fs::path> source_files(const fs::path& source, std::uint64_t& hash) {
+// A student file's text as the workspace builds it: the stub. The instructor's files carry
+// solution markers (the stub is derived); a starter tree's files are the student's own work, and
+// their stubs as released lie in kStarterStubs (or, failing that, the file is taken as is).
+// `from_source` says the file holds no solution: its "solution" is whatever the tree has now.
+std::string stub_text(const fs::path& source, const fs::path& key, const std::string& text,
+                      bool& from_source) {
+    const MarkerResult stub = process_markers(text, RegionMode::Strip);
+    from_source = !stub.has_markers;
+    if (stub.has_markers) return stub.errors.empty() ? stub.text : text;
+    std::error_code ec;
+    const fs::path released = source / kStarterStubs / key;
+    return fs::is_regular_file(released, ec) ? read_text(released) : text;
+}
+
+std::vector<fs::path> source_files(const fs::path& source, const std::set<fs::path>& student_keys,
+                                   std::uint64_t& hash) {
     std::vector<fs::path> files;
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(source, ec);
@@ -53,10 +68,17 @@ std::vector<fs::path> source_files(const fs::path& source, std::uint64_t& hash) 
         if (it->is_regular_file()) files.push_back(it->path().lexically_relative(source));
     }
     std::sort(files.begin(), files.end());
+    // Student files count by their stubs: editing one (self-grading in a starter tree) never
+    // forces a rebuild of the workspace.
     hash = fnv1a("rt-grade workspace v3");
     for (const auto& f : files) {
         hash = fnv1a(f.string(), hash);
-        hash = fnv1a(read_text(source / f), hash);
+        std::string text = read_text(source / f);
+        if (student_keys.count(f)) {
+            bool from_source = false;
+            text = stub_text(source, f, text, from_source);
+        }
+        hash = fnv1a(text, hash);
     }
     return files;
 }
@@ -102,6 +124,25 @@ int run_argv(const std::vector<std::string>& argv, const fs::path& cwd, std::str
     close(p[0]);
     int status = 0;
     if (pid < 0 || waitpid(pid, &status, 0) != pid) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// A trusted ninja run whose progress ("[12/80] ...") reaches the log every tenth of the way.
+int run_with_progress(const std::string& command, std::string& output, std::ostream& log) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return -1;
+    char line[8192];
+    int shown = -1;
+    while (std::fgets(line, sizeof line, pipe)) {
+        output += line;
+        int done = 0, total = 0;
+        if (std::sscanf(line, "[%d/%d]", &done, &total) == 2 && total > 0 && done * 10 / total > shown) {
+            shown = done * 10 / total;
+            log << "rt-grade: building the grading workspace: " << done << " of " << total << " steps\n"
+                << std::flush;
+        }
+    }
+    const int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -189,6 +230,9 @@ BuildPlan load_build_plan(const Workspace& w) {
     plan.instructor_symbols = j.at("instructor_symbols").get<std::set<std::string>>();
     plan.shipped_hashes = j.at("shipped_hashes").get<std::set<std::string>>();
     plan.secret = read_text(w.priv / "secret");
+    plan.solution_from_source = j.at("solution_from_source").get<std::set<std::string>>();
+    std::error_code ec;
+    plan.has_reference = fs::exists(w.priv / "bin" / "rt", ec);
     return plan;
 }
 
@@ -350,8 +394,11 @@ bool link_stage(const Workspace& w, const BuildPlan& plan, const std::vector<fs:
 bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     const Workspace w = workspace_paths(o);
     const auto specs = load_stage_specs(o.source);
+    std::set<fs::path> student_keys;
+    for (const auto& s : specs)
+        for (const auto& f : s.student_files) student_keys.insert(fs::path(s.folder) / f);
     std::uint64_t hash = 0;
-    const auto files = source_files(o.source, hash);
+    const auto files = source_files(o.source, student_keys, hash);
     const std::string key = hex(hash);
     fs::create_directories(w.cache);
     const int lock = open((w.cache / "workspace.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
@@ -372,7 +419,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     if (read_key(w.priv / "key") == key && read_key(w.root / "key") == key) return true;
 
     log << "rt-grade: preparing the grading workspace " << w.root.string()
-        << " (once per source change; builds the framework)\n";
+        << " (once per framework version, about a minute on 2 cores; later gradings reuse it)\n";
     const auto start = std::chrono::steady_clock::now();
     std::error_code ec;
     fs::remove(w.priv / "key", ec);
@@ -384,10 +431,8 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
 
     // The tree: student files as stubs (public), everything else as is; synced rather than
     // copied afresh, so a change to the instructor's tree rebuilds incrementally.
-    std::set<fs::path> student_keys;
-    for (const auto& s : specs)
-        for (const auto& f : s.student_files) student_keys.insert(fs::path(s.folder) / f);
     std::set<fs::path> wanted;
+    std::set<std::string> solution_from_source;
     auto sync = [&](const fs::path& rel, const std::string& text) {
         wanted.insert(rel);
         std::error_code e;
@@ -399,10 +444,12 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         if (f == "CMakeLists.txt") continue;
         std::string text = read_text(o.source / f);
         if (student_keys.count(f)) {
-            write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
-            const MarkerResult stub = process_markers(text, RegionMode::Strip);
-            if (stub.errors.empty()) text = stub.text;
-            write_text(w.priv / "pristine" / (f.string() + ".stub"), text);
+            bool from_source = false;
+            const std::string stub = stub_text(o.source, f, text, from_source);
+            if (from_source) solution_from_source.insert(f.string());
+            else write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
+            write_text(w.priv / "pristine" / (f.string() + ".stub"), stub);
+            text = stub;
         }
         sync(f, text);
     }
@@ -450,7 +497,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     if (const char* j = std::getenv("RT_GRADE_BUILD_JOBS")) cmd += " -j " + std::to_string(std::atoi(j));
     for (const auto& t : targets) cmd += " " + t;
     out.clear();
-    if (run_trusted(cmd, &out) != 0) {
+    if (run_with_progress(cmd, out, log) != 0) {
         log << "rt-grade: error: building the instructor's tree failed:\n" << out;
         return false;
     }
@@ -520,6 +567,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         for (const auto& f : s.student_files) {
             const std::string k = s.folder + "/" + f;
             for (const bool solution : {true, false}) {
+                if (solution && solution_from_source.count(k)) continue;  // compiled per grading
                 const std::string text =
                     read_text(w.priv / "pristine" / (k + (solution ? ".solution" : ".stub")));
                 const fs::path raw = w.priv / "objects" / (object_name(k) + ".raw.o");
@@ -539,6 +587,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             }
             solutions.push_back(solution_object(w, k));
         }
+    plan["solution_from_source"] = solution_from_source;
     // Every shipped reference image, by pixels: a render equal to one was handed in, not made.
     std::set<std::string> shipped;
     for (auto it = fs::recursive_directory_iterator(o.source / "reference_images", ec);
@@ -564,7 +613,10 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         BuildPlan linkable;
         linkable.link = plan["link"].get<decltype(linkable.link)>();
         std::string link_log;
-        if (!link_stage(w, linkable, solutions, {"rt"}, w.priv / "bin", link_log)) {
+        fs::remove_all(w.priv / "bin", ec);
+        // A starter tree has no solutions: no reference renderer, no unseen views.
+        if (solution_from_source.empty() &&
+            !link_stage(w, linkable, solutions, {"rt"}, w.priv / "bin", link_log)) {
             log << "rt-grade: error: linking the reference renderer failed:\n" << link_log;
             return false;
         }

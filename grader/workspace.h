@@ -41,6 +41,10 @@ struct BuildPlan {
     std::set<std::string> instructor_symbols;                 // strong, framework and tests
     std::set<std::string> shipped_hashes;                     // 8-bit pixels of every reference
     std::string secret;                                       // per workspace, never shipped
+    // Student files without solutions (a starter tree): their "solution" is the tree's current
+    // text, compiled per grading; then there is no reference renderer either.
+    std::set<std::string> solution_from_source;
+    bool has_reference = false;
 };
 BuildPlan load_build_plan(const Workspace& w);
 

@@ -141,11 +141,52 @@ for n in "${STAGES[@]}"; do
         fail "stage$n: the tests above pass in the starter tree although every function is a stub"
     fi
     grep -qi "not implemented" "$log" || { tail -n 30 "$log"; fail "stage$n: output never says 'not implemented'"; }
+    # No stub may crash, and every failing test must say why: each test's output (from its
+    # status line to the next one) names "not implemented".
+    if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*\*\*\*Exception" "$log"; then
+        fail "stage$n: the tests above crash on the stubs instead of failing with 'not implemented'"
+    fi
+    silent="$(awk '/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / { if (name != "" && !said) print name; name = $4; said = 0; next }
+                   /not implemented/ { said = 1 }
+                   END { if (name != "" && !said) print name }' "$log")"
+    [[ -z "$silent" ]] || fail "stage$n: these stubbed tests fail without saying 'not implemented': $silent"
     grep -q "README.md#" "$log" || { tail -n 30 "$log"; fail "stage$n: output never points at a handout section (README.md#)"; }
     ok "stage$n tests fail on the stubs ($summary), saying 'not implemented' and pointing at README.md#"
 done
 stubbed_seconds=$((SECONDS - start))
 echo "stubbed pass: ${stubbed_seconds} s"
+
+# --- 2b. The student README, command by command, in the released tree ---------------------
+# Its two commands (first image; the tests), then the stage loop for stage 01.
+readme_start=$SECONDS
+mapfile -t COMMANDS < <(awk '/^```sh$/ {inside=1; next} /^```$/ {inside=0} inside' "$STARTER/README.md" | head -n 2)
+[[ ${#COMMANDS[@]} -eq 2 ]] || fail "the starter README does not open with two commands"
+grep -q "rt-grade release\|rt-grade batch\|rt-grade package\|accuracy" "$STARTER/README.md" \
+    && fail "the starter README names instructor commands"
+(cd "$STARTER" && bash -c "${COMMANDS[0]}") > "$TMP/readme1.log" 2>&1 \
+    || { tail -n 30 "$TMP/readme1.log"; fail "the starter README's first command failed"; }
+[[ -s "$STARTER/gallery/01-camera-rays/perspective_directions.png" ]] || fail "the first command rendered no gallery"
+ok "README command 1 (first image) in $((SECONDS - readme_start)) s"
+readme2_start=$SECONDS
+(cd "$STARTER" && bash -c "${COMMANDS[1]}") > "$TMP/readme2.log" 2>&1
+rc=$?
+[[ $rc -ne 0 ]] || fail "the starter README's test command passes although every stage is a stub"
+grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: (Grader|Release|Calibration|Bench|Accuracy)\." "$TMP/readme2.log" \
+    && fail "the starter README's test command runs instructor-only tests (above)"
+if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: (Framework|Render|Cli)\..*(Failed|Exception)" "$TMP/readme2.log"; then
+    fail "framework tests fail in the starter tree (above)"
+fi
+ok "README command 2 (tests) in $((SECONDS - readme2_start)) s: only stage and framework tests, the stages fail on stubs"
+(cd "$STARTER" && ctest --test-dir build -L stage01 --output-on-failure > "$TMP/loop-test.log" 2>&1)
+grep -q "not implemented" "$TMP/loop-test.log" || fail "the loop's test command shows no failure message"
+(cd "$STARTER" && build/bin/rt render stages/01-camera-rays/scenes/perspective_directions.json -o out.png -q) \
+    || fail "the loop's render command failed"
+(cd "$STARTER" && build/bin/rt-grade . > "$TMP/self-grade.log" 2>&1) || { cat "$TMP/self-grade.log"; fail "rt-grade . failed"; }
+grep -q "Stage 01" "$TMP/self-grade.log" && ! grep -q "Stage 02" "$TMP/self-grade.log" \
+    || { cat "$TMP/self-grade.log"; fail "rt-grade . in an untouched tree should grade stage 01 only"; }
+grep -q "Report: .*report.html" "$TMP/self-grade.log" && [[ -s "$STARTER/report.html" ]] \
+    || { cat "$TMP/self-grade.log"; fail "rt-grade . wrote or named no report"; }
+ok "the stage loop: tests, render, rt-grade . (stage 01 only, report.html) ($((SECONDS - readme_start)) s for the README in all)"
 
 # --- 3. The ladder: --solved-through N for every stage N ----------------------------------
 # A student who could not finish stage N gets its solution (and those of earlier stages) with
