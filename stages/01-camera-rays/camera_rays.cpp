@@ -27,6 +27,7 @@ Ray perspective_ray(const Camera& camera, Vec2 pixel, ImageSize size) {
     return Ray{camera.eye, glm::normalize(direction)};
     // STUB
     // RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");
+    // (void)pixel; (void)size;
     // return Ray{camera.eye, Vec3(0)};
     // END SOLUTION
 }
@@ -44,6 +45,7 @@ Ray orthographic_ray(const Camera& camera, Vec2 pixel, ImageSize size) {
     return Ray{origin, -camera.w};
     // STUB
     // RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#orthographic-rays");
+    // (void)pixel; (void)size;
     // return Ray{camera.eye, Vec3(0)};
     // END SOLUTION
 }

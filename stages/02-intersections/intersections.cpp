@@ -51,6 +51,7 @@ bool intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range, Hi
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-sphere");
+    // (void)ray; (void)sphere; (void)t_range; (void)hit;
     // return false;
     // END SOLUTION
 }
@@ -70,6 +71,7 @@ bool intersect_plane(const Ray& ray, const Plane& plane, Interval t_range, Hit& 
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-plane");
+    // (void)ray; (void)plane; (void)t_range; (void)hit;
     // return false;
     // END SOLUTION
 }
@@ -102,6 +104,7 @@ bool intersect_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-triangle-cramers-rule");
+    // (void)ray; (void)a; (void)b; (void)c; (void)t_range; (void)hit;
     // return false;
     // END SOLUTION
 }
@@ -148,6 +151,7 @@ bool intersect_box(const Ray& ray, const Box& box, Interval t_range, Hit& hit) {
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-box-slabs");
+    // (void)ray; (void)box; (void)t_range; (void)hit;
     // return false;
     // END SOLUTION
 }
@@ -182,6 +186,7 @@ bool intersect_nearest(const Ray& ray, const Scene& scene, Interval t_range, Hit
     return found;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#nearest-hit");
+    // (void)ray; (void)scene; (void)t_range; (void)hit;
     // return false;
     // END SOLUTION
 }

@@ -31,6 +31,7 @@ LightSample illuminate(const Light& light, const Vec3& point) {
     return sample;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/03-blinn-phong/README.md#lights");
+    // (void)light; (void)point;
     // return {};
     // END SOLUTION
 }
@@ -52,6 +53,7 @@ Color blinn_phong(const Material& material, const Vec3& normal, const Vec3& to_v
     return incident * reflected;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/03-blinn-phong/README.md#diffuse-and-specular");
+    // (void)material; (void)normal; (void)to_viewer; (void)to_light; (void)incident;
     // return Color(0);
     // END SOLUTION
 }
@@ -72,6 +74,7 @@ Color direct_light(const Scene& scene, const Material& material, const Vec3& poi
     return colour;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/03-blinn-phong/README.md#summing-the-terms");
+    // (void)scene; (void)material; (void)point; (void)normal; (void)to_viewer; (void)visibility;
     // return Color(0);
     // END SOLUTION
 }

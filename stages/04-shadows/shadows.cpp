@@ -25,6 +25,7 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample) {
     return shadow;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/04-shadows/README.md#shadow-rays");
+    // (void)at; (void)sample;
     // return {};
     // END SOLUTION
 }
@@ -50,6 +51,7 @@ Color light_transmittance(const Scene& scene, const SurfacePoint& at, const Ligh
     return Color(0);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/04-shadows/README.md#coloured-shadows-through-glass");
+    // (void)scene; (void)at; (void)sample;
     // return Color(1);
     // END SOLUTION
 }

@@ -18,6 +18,7 @@ Vec3 reflect(const Vec3& d, const Vec3& n) {
     return d - 2 * glm::dot(d, n) * n;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/05-recursion/README.md#mirror-reflection");
+    // (void)n;
     // return d;
     // END SOLUTION
 }
@@ -33,6 +34,7 @@ bool refract(const Vec3& d, const Vec3& n, Real eta, Vec3& refracted) {
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/05-recursion/README.md#refraction-snells-law");
+    // (void)d; (void)n; (void)eta; (void)refracted;
     // return false;
     // END SOLUTION
 }
@@ -53,6 +55,7 @@ Real schlick_reflectance(Real cos_incident, Real n1, Real n2) {
     return r0 + (1 - r0) * x * x * x * x * x;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/05-recursion/README.md#fresnel-schlicks-approximation");
+    // (void)cos_incident; (void)n1; (void)n2;
     // return 0;
     // END SOLUTION
 }
@@ -91,6 +94,7 @@ SecondaryRays secondary_rays(const Ray& incoming, const SurfacePoint& at, const 
     return out;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/05-recursion/README.md#secondary-rays-and-their-weights");
+    // (void)incoming; (void)at; (void)material; (void)fresnel;
     // return {};
     // END SOLUTION
 }

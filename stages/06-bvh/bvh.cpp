@@ -87,6 +87,7 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     return best;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#the-surface-area-heuristic");
+    // (void)prims; (void)begin; (void)end; (void)options;
     // return {};
     // END SOLUTION
 }
@@ -190,6 +191,7 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
     }
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#building-the-tree");
+    // (void)prims; (void)options; (void)bvh;
     // END SOLUTION
 }
 
@@ -220,6 +222,7 @@ bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_directi
     return t0 <= t1;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#ray-box-slab-test");
+    // (void)node; (void)ray; (void)inv_direction; (void)t_range; (void)t_entry;
     // return false;
     // END SOLUTION
 }
@@ -285,6 +288,7 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
     return found;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#nearest-hit-traversal");
+    // (void)scene; (void)ray; (void)t_range; (void)hit; (void)stats;
     // return false;
     // END SOLUTION
 }
@@ -323,6 +327,7 @@ bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, Bvh
     return found;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#any-hit-queries");
+    // (void)scene; (void)ray; (void)t_range; (void)stats;
     // return false;
     // END SOLUTION
 }

@@ -12,8 +12,8 @@ TEST_F(Box, HitEntryFace) {
     Hit hit;
     ASSERT_TRUE(intersect_box(Ray{Vec3(0.5, 0.25, 5), Vec3(0, 0, -1)}, kUnit, {}, hit));
     EXPECT_NEAR(hit.t, 4, kTol);
-    expect_vec_near(hit.normal, Vec3(0, 0, 1));
-    EXPECT_TRUE(hit.front_face);
+    expect_vec_near(hit.normal, Vec3(0, 0, 1), "normal entering the +z face from z = 5");
+    EXPECT_TRUE(hit.front_face) << "a ray entering from outside hits the front side";
 }
 
 // Entering through the -x face: the outward normal is -x.
@@ -23,9 +23,12 @@ TEST_F(Box, NormalOfEachFace) {
         {Vec3(0.1, -5, 0.2), Vec3(0, 1, 0), Vec3(0, -1, 0)}, {Vec3(0.1, 5, 0.2), Vec3(0, -1, 0), Vec3(0, 1, 0)},
         {Vec3(0.1, 0.2, -5), Vec3(0, 0, 1), Vec3(0, 0, -1)}, {Vec3(0.1, 0.2, 5), Vec3(0, 0, -1), Vec3(0, 0, 1)}};
     for (const auto& c : cases) {
+        const std::string what =
+            "ray from " + text(c.o) + " along " + text(c.d) + " into the face " + text(c.n);
+        SCOPED_TRACE(what);
         Hit hit;
         ASSERT_TRUE(intersect_box(Ray{c.o, c.d}, kUnit, {}, hit));
-        expect_vec_near(hit.normal, c.n);
+        expect_vec_near(hit.normal, c.n, "normal, " + what);
         EXPECT_NEAR(hit.t, 4, kTol);
     }
 }
@@ -35,8 +38,11 @@ TEST_F(Box, FromInsideHitsExitFace) {
     Hit hit;
     ASSERT_TRUE(intersect_box(Ray{Vec3(0), Vec3(0, 2, 0)}, kUnit, {}, hit));
     EXPECT_NEAR(hit.t, 0.5, kTol);
-    expect_vec_near(hit.normal, Vec3(0, -1, 0));
-    EXPECT_FALSE(hit.front_face);
+    expect_vec_near(hit.normal, Vec3(0, -1, 0),
+                    "normal leaving through the +y face from the centre, turned to face the ray");
+    EXPECT_FALSE(hit.front_face) << "a ray from inside leaves through the +y face: its outward "
+                                    "normal (0, 1, 0) points the way the ray goes, so the ray "
+                                    "hits the back side (set_face_normal with the outward normal)";
 }
 
 TEST_F(Box, Oblique) {
@@ -63,6 +69,7 @@ TEST_F(Box, RespectsTRange) {
 
 TEST_F(Box, BadDirectionsMiss) {
     for (const Vec3& d : kBadDirections) {
+        SCOPED_TRACE("direction " + text(d));
         Hit hit = sentinel_hit();
         EXPECT_FALSE(intersect_box(Ray{Vec3(0, 0, 5), d}, kUnit, {}, hit));
         EXPECT_FALSE(intersect_box(Ray{Vec3(0), d}, kUnit, {}, hit));  // even from inside

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,33 @@ using namespace rt::exact;
 
 constexpr double kEps = std::numeric_limits<Real>::epsilon();
 constexpr bool kFloat = std::is_same_v<Real, float>;
+
+// Where a failure sends the student: the handout section on what went wrong.
+constexpr const char* kReadSphere = "read stages/02-intersections/README.md#a-stable-quadratic";
+constexpr const char* kReadTriangle =
+    "read stages/02-intersections/README.md#ray-triangle-cramers-rule";
+constexpr const char* kReadBox = "read stages/02-intersections/README.md#ray-box-slabs";
+constexpr const char* kReadPlane = "read stages/02-intersections/README.md#ray-plane";
+constexpr const char* kReadRanges = "read docs/conventions.md#rays-and-t-ranges";
+
+std::string text(const Vec3& v) {
+    std::ostringstream out;
+    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return out.str();
+}
+// Numbers in messages: a ratio or a size to 3 significant digits, a t to 9.
+std::string few(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", x);
+    return buffer;
+}
+std::string digits(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", x);
+    return buffer;
+}
+std::string text(const Ray& ray) { return "ray o " + text(ray.origin) + " d " + text(ray.direction); }
+const char* hit_or_miss(bool hit) { return hit ? "a hit" : "a miss"; }
 
 
 double max_abs(const Vec3& v) {
@@ -108,9 +136,15 @@ struct TriangleChecker {
                 const double ratio = std::abs(truth.edge_distance) / (kEps * L / cos);
                 s.worst_band = std::max(s.worst_band, ratio);
                 EXPECT_LE(ratio, tol.band)
-                    << name << ": " << kMethods[m].name << " says " << (got ? "hit" : "miss")
-                    << " but the exact plane point is " << truth.edge_distance
-                    << " from the nearest edge line (t_exact " << t_exact << ", cos " << cos << ")";
+                    << name << ": " << kMethods[m].name << " reports " << hit_or_miss(got)
+                    << ", exact arithmetic " << hit_or_miss(truth.hit) << ", for a ray whose "
+                    << "plane point is " << few(truth.edge_distance) << " from the nearest edge "
+                    << "line: " << few(ratio) << " rounding widths (one width here: eps L / cos = "
+                    << few(kEps * L / cos) << "), at most " << tol.band << " allowed. Only rays "
+                    << "within rounding of an edge may be decided differently: check the inside "
+                    << "test (beta >= 0, gamma >= 0, beta + gamma <= 1) and the open t-range. "
+                    << text(ray) << ", t_exact " << digits(t_exact) << ", cos " << few(cos) << "; "
+                    << kReadTriangle;
                 continue;
             }
             if (!got) continue;
@@ -118,9 +152,14 @@ struct TriangleChecker {
             const double err = std::abs(CGAL::to_double(FT(double(hit.t)) - truth.t)) * dlen;
             const double ratio = err / (kEps * L * aspect / cos);
             s.worst_t = std::max(s.worst_t, ratio);
-            EXPECT_LE(ratio, tol.t) << name << ": " << kMethods[m].name << " t = " << hit.t
-                                    << ", exact " << t_exact << " (cos " << cos << ", aspect "
-                                    << aspect << ")";
+            EXPECT_LE(ratio, tol.t)
+                << name << ": " << kMethods[m].name << " t = " << digits(hit.t) << ", exact "
+                << digits(t_exact) << ": the error is " << few(ratio) << " units, at most "
+                << tol.t << " allowed (1 unit = the rounding Cramer's rule makes on this ray, "
+                << "eps L aspect / cos = " << few(kEps * L * aspect / cos) << "). Is t the "
+                << "ratio |a-b, a-c, s| / |M| of the handout? " << text(ray) << ", cos "
+                << few(cos) << ", aspect " << few(aspect)
+                << "; " << kReadTriangle;
             if (cos >= 0.2 && aspect <= 4)
                 s.worst_ulps = std::max(s.worst_ulps, ulp_error(hit.t, truth.t));
         }
@@ -167,9 +206,16 @@ TEST_F(TriangleExact, RandomRaysAgreeWithCgal) {
         if (HasFatalFailure()) return;
     }
     check.print();
-    for (const MethodStats& s : check.stats) {
-        EXPECT_GT(s.hits, 500);
-        EXPECT_LE(s.worst_ulps, kUlps);
+    for (int m = 0; m < 2; ++m) {
+        const MethodStats& s = check.stats[m];
+        EXPECT_GT(s.hits, 500) << kMethods[m].name << ": only " << s.hits << " of " << s.rays
+                               << " random rays were hits that agree with exact arithmetic "
+                               << "(more than 500 expected); " << kReadTriangle;
+        EXPECT_LE(s.worst_ulps, kUlps)
+            << kMethods[m].name << ": on well-conditioned hits (cos >= 0.2, aspect <= 4) t is up "
+            << "to " << few(s.worst_ulps) << " units in the last place (ulps) from the exact t, at "
+            << "most " << kUlps << " allowed: a handful of roundings gives a few ulps, more means "
+            << "digits lost somewhere; " << kReadTriangle;
     }
 }
 
@@ -194,7 +240,11 @@ TEST_F(TriangleExact, GrazingRays) {
         if (HasFatalFailure()) return;
     }
     check.print();
-    for (const MethodStats& s : check.stats) EXPECT_GT(s.hits, 500);
+    for (int m = 0; m < 2; ++m)
+        EXPECT_GT(check.stats[m].hits, 500)
+            << kMethods[m].name << ": only " << check.stats[m].hits << " of "
+            << check.stats[m].rays << " grazing rays were hits that agree with exact arithmetic "
+            << "(more than 500 expected); " << kReadTriangle;
 }
 
 TEST_F(TriangleExact, SliverTriangles) {
@@ -242,7 +292,11 @@ TEST_F(TriangleExact, FarAwayAndExtremeScales) {
         if (HasFatalFailure()) return;
     }
     check.print();
-    for (const MethodStats& s : check.stats) EXPECT_GT(s.hits, 500);
+    for (int m = 0; m < 2; ++m)
+        EXPECT_GT(check.stats[m].hits, 500)
+            << kMethods[m].name << ": only " << check.stats[m].hits << " of "
+            << check.stats[m].rays << " rays at far or extreme scales were hits that agree with "
+            << "exact arithmetic (more than 500 expected); " << kReadTriangle;
 }
 
 TEST_F(TriangleExact, ParallelAndInPlaneRaysMiss) {
@@ -260,7 +314,10 @@ TEST_F(TriangleExact, ParallelAndInPlaneRaysMiss) {
             ASSERT_TRUE(truth.parallel);
             for (const Method& m : kMethods) {
                 Hit hit;
-                EXPECT_FALSE(m.fn(ray, a, b, c, Interval{}, hit)) << m.name;
+                EXPECT_FALSE(m.fn(ray, a, b, c, Interval{}, hit))
+                    << m.name << ": " << text(ray) << " is exactly parallel to the triangle's "
+                    << "plane (|M| = 0), so it misses, also when it lies in the plane; "
+                    << kReadTriangle;
             }
         }
 }
@@ -281,7 +338,11 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
                 ASSERT_TRUE(exact_triangle(Ray{o, d}, a, b, c).origin_in_plane);
                 for (const Method& m : kMethods) {
                     Hit hit;
-                    EXPECT_FALSE(m.fn(Ray{o, d}, a, b, c, Interval{}, hit)) << m.name;
+                    EXPECT_FALSE(m.fn(Ray{o, d}, a, b, c, Interval{}, hit))
+                        << m.name << ": " << text(Ray{o, d}) << " starts exactly on an "
+                        << "axis-aligned triangle with exact coordinates: t is exactly 0, outside "
+                        << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); "
+                        << kReadRanges;
                 }
             }
         }
@@ -306,10 +367,16 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
                 const double cos = std::abs(glm::dot(n, ray.direction)) /
                                    (length(n) * length(ray.direction));
                 EXPECT_LE(std::abs(hit.t) * length(ray.direction), 16 * kEps * L / cos)
-                    << m.name;
+                    << m.name << ": " << text(ray) << " starts exactly on the triangle (exact "
+                    << "t = 0), yet a hit at distance " << few(std::abs(hit.t) * length(ray.direction))
+                    << " is reported, more than rounding can explain (16 eps L / cos = "
+                    << few(16 * kEps * L / cos) << "); " << kReadTriangle;
             }
             Hit hit2;
-            EXPECT_FALSE(m.fn(ray, a, b, c, Interval{Real(1e-3), kInfinity}, hit2)) << m.name;
+            EXPECT_FALSE(m.fn(ray, a, b, c, Interval{Real(1e-3), kInfinity}, hit2))
+                << m.name << ": " << text(ray) << " starts exactly on the triangle, so with "
+                << "t_range.min = 1e-3 nothing may be hit (reported t " << digits(hit2.t) << "); "
+                << kReadRanges;
         }
     }
     std::printf("[origin on triangle] %d exact origins, %d tiny-t hits reported\n",
@@ -433,7 +500,11 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
                     count.leaks[1]);
         EXPECT_EQ(count.leaks[1], 0) << c.name << ": the watertight method leaked";
         if (c.dyadic) {
-            EXPECT_EQ(count.leaks[0], 0) << c.name << ": Cramer leaked on exact data";
+            EXPECT_EQ(count.leaks[0], 0)
+                << c.name << ": Cramer's rule let " << count.leaks[0] << " of " << count.rays
+                << " rays through the closed mesh although every number here is exact (no "
+                << "rounding at all): do edges and vertices count as inside (beta >= 0, not > 0; "
+                << "beta + gamma <= 1, not < 1)? " << kReadTriangle;
         }
         total.rays += count.rays;
         total.leaks[0] += count.leaks[0];
@@ -446,7 +517,11 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
     // icosphere at the origin, where rays aim at edges and vertices from the centre), bounded
     // at 6% for margin. In double the rate is measured and printed the same way.
     constexpr double kCramerLeakBound = 0.06;
-    EXPECT_LE(rate, kCramerLeakBound);
+    EXPECT_LE(rate, kCramerLeakBound)
+        << "Cramer's rule let " << few(100 * rate) << "% of " << total.rays << " rays aimed at edges "
+        << "and vertices through the closed meshes, at most " << 100 * kCramerLeakBound
+        << "% allowed (the reference leaks about 2%): edges and vertices must count as inside "
+        << "(beta >= 0, gamma >= 0, beta + gamma <= 1); " << kReadTriangle;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -480,7 +555,17 @@ struct SphereChecker {
             ++disagreements;
             const double ratio = std::abs(truth.tangency) / (kEps * (oc + r));
             worst_band = std::max(worst_band, ratio);
-            EXPECT_LE(ratio, band) << name << ": got " << got << ", tangency " << truth.tangency;
+            EXPECT_LE(ratio, band)
+                << name << ": you report " << hit_or_miss(got) << ", exact arithmetic "
+                << hit_or_miss(truth.hit) << ". The ray's line passes "
+                << few(std::abs(truth.tangency)) << (truth.tangency < 0 ? " inside" : " outside")
+                << " the rim: " << few(ratio) << " rounding widths (one width here: "
+                << "eps (|o - c| + r) = " << few(kEps * (oc + r)) << "), at most " << band
+                << " allowed. Only near-tangent rays may be decided differently: check the "
+                << "discriminant (b^2 - a c' cancels for a small sphere far away: use "
+                << "a (r^2 - l.l)), that a root t <= 0 (behind the origin) is never taken, and "
+                << "the open t-range. " << text(ray) << ", sphere c "
+                << text(sphere.center) << " r " << digits(sphere.radius) << "; " << kReadSphere;
             return;
         }
         if (!got) return;
@@ -490,10 +575,23 @@ struct SphereChecker {
         const double err = std::abs(hit.t - truth.t.to_double()) * dlen;
         const double ratio = err / (kEps * (oc + r) * (1 + r / h));
         worst_t = std::max(worst_t, ratio);
-        EXPECT_LE(ratio, t_tol) << name << ": t " << hit.t << " exact " << truth.t.to_double();
+        EXPECT_LE(ratio, t_tol)
+            << name << ": t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double())
+            << ": t is " << few(ratio) << " units from the exact root, at most " << t_tol
+            << " allowed (1 unit = the rounding a stable quadratic makes on this ray, "
+            << "eps (|o - c| + r) (1 + r / h) = " << few(kEps * (oc + r) * (1 + r / h))
+            << ", h the half chord). Digits lost to cancellation, in -b + sqrt(disc) or in "
+            << "b^2 - a c'? Or the wrong root? "
+            << text(ray) << ", sphere c " << text(sphere.center) << " r " << digits(sphere.radius)
+            << "; " << kReadSphere;
         const double ulps = truth.t.ulp_error(hit.t);
         worst_ulps = std::max(worst_ulps, ulps);
-        EXPECT_LE(ulps, ulp_bound) << name << ": t " << hit.t << " exact " << truth.t.to_double();
+        EXPECT_LE(ulps, ulp_bound)
+            << name << ": t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double())
+            << ": " << few(ulps) << " units in the last place (ulps) from the exact root, at most "
+            << ulp_bound << " allowed on this well-conditioned ray (the stable quadratic loses "
+            << "only a few ulps): cancellation? " << text(ray) << ", sphere c "
+            << text(sphere.center) << " r " << digits(sphere.radius) << "; " << kReadSphere;
     }
     void print() const {
         std::printf("[%s] rays %d hits %d disagreements %d (worst band %.3g of %g) worst t %.3g "
@@ -534,7 +632,9 @@ TEST_F(SphereExact, RandomRaysAgreeWithExactRoot) {
     }
     check.print();
     wide.print();
-    EXPECT_GT(check.hits, 1000);
+    EXPECT_GT(check.hits, 1000) << "only " << check.hits << " of " << check.rays
+                                << " well-conditioned rays were hits that agree with exact "
+                                << "arithmetic (more than 1000 expected); " << kReadSphere;
 }
 
 TEST_F(SphereExact, SmallSphereFarAway) {
@@ -554,7 +654,10 @@ TEST_F(SphereExact, SmallSphereFarAway) {
         check.check(ray, s, kUlps);
     }
     check.print();
-    EXPECT_GT(check.hits, 1000);
+    EXPECT_GT(check.hits, 1000) << "only " << check.hits << " of " << check.rays
+                                << " rays at the small far sphere were hits that agree with "
+                                << "exact arithmetic (more than 1000 expected): b^2 - a c' "
+                                << "cancels here, use a (r^2 - l.l); " << kReadSphere;
 }
 
 TEST_F(SphereExact, LargeSphereFromJustAboveTheSurface) {
@@ -582,13 +685,24 @@ TEST_F(SphereExact, LargeSphereFromJustAboveTheSurface) {
             const double h = length(o - s.center) - s.radius;  // actual height after rounding
             const double r_ulps = truth.t.ulp_error(hit.t) / (s.radius / h);
             worst_ratio_ulps = std::max(worst_ratio_ulps, r_ulps);
-            EXPECT_LE(r_ulps, kUlpsPerRatio);
+            EXPECT_LE(r_ulps, kUlpsPerRatio)
+                << "t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double())
+                << ": " << few(truth.t.ulp_error(hit.t)) << " ulps from the exact root for an "
+                << "origin " << few(h) << " above a sphere of radius " << s.radius << ", that is "
+                << few(r_ulps)
+                << " ulps per unit of r / height, at most " << kUlpsPerRatio << " allowed (the "
+                << "rounding of c' = |o - c|^2 - r^2 costs about r / height ulps; more means "
+                << "another cancellation). " << text(ray) << ", sphere c " << text(s.center)
+                << "; " << kReadSphere;
         }
     }
     check.print();
     std::printf("[large sphere] worst ulps / (r / height) = %.3g (bound %g)\n", worst_ratio_ulps,
                 kUlpsPerRatio);
-    EXPECT_GT(check.hits, 1000);
+    EXPECT_GT(check.hits, 1000) << "only " << check.hits << " of " << check.rays
+                                << " rays from just above the large sphere were hits that agree "
+                                << "with exact arithmetic (more than 1000 expected); "
+                                << kReadSphere;
 }
 
 TEST_F(SphereExact, LargeSphereFromJustInsideTheSurfaceExactC) {
@@ -615,11 +729,19 @@ TEST_F(SphereExact, LargeSphereFromJustInsideTheSurfaceExactC) {
         const SphereTruth truth = exact_sphere(ray, s);
         ASSERT_TRUE(truth.hit);
         Hit hit;
-        ASSERT_TRUE(intersect_sphere(ray, s, Interval{}, hit));
+        ASSERT_TRUE(intersect_sphere(ray, s, Interval{}, hit))
+            << text(ray) << " starts inside the sphere c " << text(s.center) << " r 1000, so "
+            << "it hits (the far root is the only one > 0); " << kReadSphere;
         ++hits;
         const double ulps = truth.t.ulp_error(hit.t);
         worst = std::max(worst, ulps);
-        EXPECT_LE(ulps, kUlps) << "t " << hit.t << " exact " << truth.t.to_double();
+        EXPECT_LE(ulps, kUlps)
+            << "t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double()) << ": "
+            << few(ulps)
+            << " ulps from the exact root, at most " << kUlps << " allowed. The ray leaves a "
+            << "large sphere from just inside: (-b + sqrt(disc)) / a cancels here (about 2000 "
+            << "ulps), c' / q does not. " << text(ray) << ", sphere c " << text(s.center)
+            << " r 1000; " << kReadSphere;
     }
     std::printf("[large sphere from inside, exact c] hits %d worst ulps %.3g (bound %g)\n", hits,
                 worst, kUlps);
@@ -639,12 +761,21 @@ TEST_F(SphereExact, OriginOnTheSphere) {
     const SphereTruth in = exact_sphere(inward, s);
     ASSERT_TRUE(in.hit);
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(inward, s, Interval{}, hit));
-    EXPECT_LE(in.t.ulp_error(hit.t), 4);
+    ASSERT_TRUE(intersect_sphere(inward, s, Interval{}, hit))
+        << "origin exactly on the sphere, heading inside: the far side is hit; " << kReadSphere;
+    EXPECT_LE(in.t.ulp_error(hit.t), 4)
+        << "origin exactly on the sphere (c' = 0), heading inside: t = " << digits(hit.t)
+        << ", exact root " << digits(in.t.to_double()) << ", " << few(in.t.ulp_error(hit.t))
+        << " ulps away, at most 4 allowed (with c' = 0 the far root is q / a); " << kReadSphere;
     EXPECT_FALSE(exact_sphere(outward, s).hit);
-    EXPECT_FALSE(intersect_sphere(outward, s, Interval{}, hit));
+    EXPECT_FALSE(intersect_sphere(outward, s, Interval{}, hit))
+        << "origin exactly on the sphere, heading outside: the only roots are t = 0 and one "
+        << "behind the origin, neither in the open range (0, inf), so a miss (reported t "
+        << digits(hit.t) << "); " << kReadRanges;
     EXPECT_FALSE(exact_sphere(tangent, s).hit);  // double root at 0
-    EXPECT_FALSE(intersect_sphere(tangent, s, Interval{}, hit));
+    EXPECT_FALSE(intersect_sphere(tangent, s, Interval{}, hit))
+        << "origin exactly on the sphere, tangent direction: a double root at t = 0, outside "
+        << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); " << kReadRanges;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -682,26 +813,48 @@ TEST_F(BoxExact, SlabsAgreeWithCgal) {
             ++disagreements;
             worst_gap = std::max(worst_gap, std::abs(truth.relative_gap) / kEps);
             EXPECT_LE(std::abs(truth.relative_gap), kGap * kEps)
-                << "box: got " << got << ", exact relative gap " << truth.relative_gap;
+                << "box: you report " << hit_or_miss(got) << ", exact arithmetic "
+                << hit_or_miss(truth.hit) << ". The ray's t-interval inside the three slabs has "
+                << "a relative width of " << few(truth.relative_gap) << " ("
+                << few(truth.relative_gap / kEps)
+                << " eps; negative: it passes beside the box); only rays within " << kGap
+                << " eps of an edge or a corner may be decided differently. Check the swap for "
+                << "d_i < 0, the case d_i = 0 (no division), t_far > 0 and the open t-range. "
+                << text(ray) << ", box " << text(box.min) << " .. " << text(box.max) << "; "
+                << kReadBox;
             continue;
         }
         if (!got) continue;
         ++hits;
         const double ulps = ulp_error(hit.t, truth.t);
         worst_ulps = std::max(worst_ulps, ulps);
-        EXPECT_LE(ulps, kUlps);
+        EXPECT_LE(ulps, kUlps)
+            << "box: t = " << digits(hit.t) << ", exact " << digits(CGAL::to_double(truth.t))
+            << ": " << few(ulps)
+            << " units in the last place (ulps) off, at most " << kUlps << " allowed: a slab "
+            << "distance is (bound - o_i) / d_i, two roundings. " << text(ray) << ", box "
+            << text(box.min) << " .. " << text(box.max) << "; " << kReadBox;
         if (truth.face_margin > kGap * kEps) {
             ++faces_checked;
             const bool positive = ray.direction[truth.axis] > 0;
             Vec3 outward(0);  // entering: the face facing the ray; leaving: the one behind it
             outward[truth.axis] = truth.at_near == positive ? Real(-1) : Real(1);
-            EXPECT_EQ(hit.normal, hit.front_face ? outward : -outward) << "wrong face";
+            EXPECT_EQ(hit.normal, hit.front_face ? outward : -outward)
+                << "box: wrong face. You stored the normal " << text(hit.normal)
+                << " (front_face " << hit.front_face << "), but the ray "
+                << (truth.at_near ? "enters" : "leaves") << " through the face with outward "
+                << "normal " << text(outward) << " (the slab of axis " << truth.axis << " sets "
+                << (truth.at_near ? "t_near" : "t_far") << "), so the stored normal is "
+                << text(hit.front_face ? outward : -outward) << ", that one turned to face the "
+                << "ray. " << text(ray) << ", box " << text(box.min) << " .. "
+                << text(box.max) << "; " << kReadBox;
         }
     }
     std::printf("[box] hits %d, disagreements %d (worst |gap| %.3g eps, bound %g), worst ulps "
                 "%.3g (bound %g), faces checked %d\n",
                 hits, disagreements, worst_gap, kGap, worst_ulps, kUlps, faces_checked);
-    EXPECT_GT(hits, 600);
+    EXPECT_GT(hits, 600) << "only " << hits << " of the random box rays were hits that agree "
+                         << "with exact arithmetic (more than 600 expected); " << kReadBox;
 }
 
 RT_TEST_SUITE(PlaneExact);
@@ -727,17 +880,32 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
         const double t_exact = CGAL::to_double(truth.t);
         const double scale = kEps * (length(plane.point - ray.origin) + std::abs(t_exact) * dlen) / cos;
         if (got != truth.hit) {  // only when the exact t is 0 to within rounding
-            EXPECT_LE(std::abs(t_exact) * dlen, kT * scale);
+            EXPECT_LE(std::abs(t_exact) * dlen, kT * scale)
+                << "plane: you report " << hit_or_miss(got) << ", exact arithmetic "
+                << hit_or_miss(truth.hit) << ", at exact t = " << digits(t_exact) << ": the hit "
+                << "is " << few(std::abs(t_exact) * dlen) << " from the origin, "
+                << few(std::abs(t_exact) * dlen / scale)
+                << " rounding units (one unit: eps (|p0 - o| + |t d|) / cos = " << few(scale)
+                << "); only hits within " << kT << " units of the origin may be decided "
+                << "differently. Check the sign of t = n.(p0 - o) / n.d and the open t-range. "
+                << text(ray) << ", plane p0 " << text(plane.point) << " n " << text(plane.normal)
+                << "; " << kReadPlane;
             continue;
         }
         if (!got) continue;
         ++hits;
         const double ratio = std::abs(CGAL::to_double(FT(double(hit.t)) - truth.t)) * dlen / scale;
         worst = std::max(worst, ratio);
-        EXPECT_LE(ratio, kT);
+        EXPECT_LE(ratio, kT)
+            << "plane: t = " << digits(hit.t) << ", exact " << digits(t_exact) << ": the error "
+            << "is " << few(ratio) << " units, at most " << kT << " allowed (1 unit = the "
+            << "rounding of n.(p0 - o) / n.d on this ray, eps (|p0 - o| + |t d|) / cos = "
+            << few(scale) << "). " << text(ray) << ", plane p0 "
+            << text(plane.point) << " n " << text(plane.normal) << "; " << kReadPlane;
     }
     std::printf("[plane] hits %d, worst t error %.3g of %g\n", hits, worst, kT);
-    EXPECT_GT(hits, 1000);
+    EXPECT_GT(hits, 1000) << "only " << hits << " of the random plane rays were hits that agree "
+                          << "with exact arithmetic (more than 1000 expected); " << kReadPlane;
 }
 
 TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
@@ -747,7 +915,9 @@ TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
         const Ray ray{o, Vec3(1, -1, 3)};
         ASSERT_TRUE(exact_plane(ray, plane).parallel);
         Hit hit;
-        EXPECT_FALSE(intersect_plane(ray, plane, Interval{}, hit));
+        EXPECT_FALSE(intersect_plane(ray, plane, Interval{}, hit))
+            << text(ray) << " is exactly parallel to the plane (n.d = 0): a miss, also when it "
+            << "lies in the plane; " << kReadPlane;
     }
     // Origin exactly on the plane, direction across it: exact t == 0, outside (0, inf): miss.
     const Plane flat{Vec3(0, 1.5, 0), Vec3(0, 1, 0)};
@@ -757,7 +927,9 @@ TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
         ASSERT_TRUE(truth.origin_in_plane);
         EXPECT_FALSE(truth.hit);
         Hit hit;
-        EXPECT_FALSE(intersect_plane(ray, flat, Interval{}, hit));
+        EXPECT_FALSE(intersect_plane(ray, flat, Interval{}, hit))
+            << text(ray) << " starts exactly on the plane: t = 0 is outside the open range "
+            << "(0, inf), so a miss (reported t " << digits(hit.t) << "); " << kReadRanges;
     }
 }
 

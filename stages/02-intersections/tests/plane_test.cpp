@@ -10,9 +10,9 @@ TEST_F(Plane, HitFromAbove) {
     Hit hit;
     ASSERT_TRUE(intersect_plane(Ray{Vec3(1, 3, 2), Vec3(0, -1, 0)}, rt::Plane{Vec3(0, -1, 0), Vec3(0, 1, 0), 0}, {}, hit));
     EXPECT_NEAR(hit.t, 4, kTol);
-    expect_vec_near(hit.point, Vec3(1, -1, 2));
-    expect_vec_near(hit.normal, Vec3(0, 1, 0));
-    EXPECT_TRUE(hit.front_face);
+    expect_vec_near(hit.point, Vec3(1, -1, 2), "point, ray straight down onto y = -1");
+    expect_vec_near(hit.normal, Vec3(0, 1, 0), "normal, ray from above: the plane's normal");
+    EXPECT_TRUE(hit.front_face) << "a ray from the side the normal points to hits the front";
 }
 
 // From below, the normal is flipped to face the ray and front_face is false.
@@ -20,8 +20,10 @@ TEST_F(Plane, HitFromBelowFacesRay) {
     Hit hit;
     ASSERT_TRUE(intersect_plane(Ray{Vec3(0, -3, 0), Vec3(0, 2, 0)}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
     EXPECT_NEAR(hit.t, 1.5, kTol);
-    expect_vec_near(hit.normal, Vec3(0, -1, 0));
-    EXPECT_FALSE(hit.front_face);
+    expect_vec_near(hit.normal, Vec3(0, -1, 0),
+                    "normal, ray from below: the plane's normal turned to face the ray");
+    EXPECT_FALSE(hit.front_face) << "a ray from below hits the back side (set_face_normal with "
+                                    "plane.normal)";
 }
 
 // An oblique ray: t from the closed form n.(p - o) / n.d.
@@ -55,6 +57,7 @@ TEST_F(Plane, BehindTheRayMisses) {
 
 TEST_F(Plane, BadDirectionsMiss) {
     for (const Vec3& d : kBadDirections) {
+        SCOPED_TRACE("direction " + text(d));
         Hit hit = sentinel_hit();
         EXPECT_FALSE(intersect_plane(Ray{Vec3(0, 1, 0), d}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
         EXPECT_TRUE(untouched(hit));

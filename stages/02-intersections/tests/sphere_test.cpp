@@ -11,9 +11,9 @@ TEST_F(Sphere, HitFromOutside) {
     Hit hit;
     ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 4, kTol);
-    expect_vec_near(hit.point, Vec3(0, 0, 1));
-    expect_vec_near(hit.normal, Vec3(0, 0, 1));
-    EXPECT_TRUE(hit.front_face);
+    expect_vec_near(hit.point, Vec3(0, 0, 1), "point, ray from z = 5 to the unit sphere");
+    expect_vec_near(hit.normal, Vec3(0, 0, 1), "normal, ray from z = 5 to the unit sphere");
+    EXPECT_TRUE(hit.front_face) << "a ray from outside hits the front side";
 }
 
 // From the centre the only root in (0, inf) is the far one; the normal faces the ray (inwards).
@@ -21,8 +21,10 @@ TEST_F(Sphere, HitFromInsideFacesRay) {
     Hit hit;
     ASSERT_TRUE(intersect_sphere(Ray{Vec3(1, 2, 3), Vec3(1, 0, 0)}, rt::Sphere{Vec3(1, 2, 3), 2, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
-    expect_vec_near(hit.normal, Vec3(-1, 0, 0));
-    EXPECT_FALSE(hit.front_face);
+    expect_vec_near(hit.normal, Vec3(-1, 0, 0),
+                    "normal, ray from the centre along +x: (p - c) / r turned to face the ray");
+    EXPECT_FALSE(hit.front_face) << "a ray from inside hits the back side (set_face_normal with "
+                                    "the outward normal (p - c) / r)";
 }
 
 // t is in units of the direction's length: doubling the direction halves t.
@@ -30,7 +32,7 @@ TEST_F(Sphere, NonUnitDirection) {
     Hit hit;
     ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -2)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
-    expect_vec_near(hit.point, Vec3(0, 0, 1));
+    expect_vec_near(hit.point, Vec3(0, 0, 1), "point, direction (0, 0, -2) from z = 5");
 }
 
 TEST_F(Sphere, MissLeavesHitUntouched) {
@@ -76,6 +78,7 @@ TEST_F(Sphere, SmallSphereFarAway) {
 
 TEST_F(Sphere, BadDirectionsMiss) {
     for (const Vec3& d : kBadDirections) {
+        SCOPED_TRACE("direction " + text(d));
         Hit hit = sentinel_hit();
         EXPECT_FALSE(intersect_sphere(Ray{Vec3(0, 0, 5), d}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
         EXPECT_TRUE(untouched(hit));

@@ -15,25 +15,28 @@ TEST_F(Triangle, HitInside) {
     Hit hit;
     ASSERT_TRUE(intersect_triangle(Ray{Vec3(0.25, 0.25, 2), Vec3(0, 0, -1)}, A, B, C, {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
-    expect_vec_near(hit.point, Vec3(0.25, 0.25, 0));
-    expect_vec_near(hit.normal, Vec3(0, 0, 1));
-    EXPECT_TRUE(hit.front_face);
-    EXPECT_NEAR(hit.uv.x, 0.25, kTol);  // beta: weight of b
-    EXPECT_NEAR(hit.uv.y, 0.25, kTol);  // gamma: weight of c
+    expect_vec_near(hit.point, Vec3(0.25, 0.25, 0), "point, ray down at (0.25, 0.25)");
+    expect_vec_near(hit.normal, Vec3(0, 0, 1),
+                    "normal, seen from the front: normalize(cross(b - a, c - a))");
+    EXPECT_TRUE(hit.front_face) << "seen from +z the triangle is counter-clockwise: the front";
+    EXPECT_NEAR(hit.uv.x, 0.25, kTol) << "uv.x is beta, the weight of b";
+    EXPECT_NEAR(hit.uv.y, 0.25, kTol) << "uv.y is gamma, the weight of c";
 }
 
 // Seen from behind (clockwise), the triangle is still hit; the normal faces the ray.
 TEST_F(Triangle, BackFaceIsHit) {
     Hit hit;
     ASSERT_TRUE(intersect_triangle(Ray{Vec3(0.2, 0.3, -1), Vec3(0, 0, 1)}, A, B, C, {}, hit));
-    expect_vec_near(hit.normal, Vec3(0, 0, -1));
-    EXPECT_FALSE(hit.front_face);
+    expect_vec_near(hit.normal, Vec3(0, 0, -1), "normal, seen from behind: turned to face the ray");
+    EXPECT_FALSE(hit.front_face) << "seen from -z the triangle is clockwise: the back side";
 }
 
 TEST_F(Triangle, MissOutsideEachEdge) {
     for (const Vec3& o : {Vec3(-0.1, 0.5, 1), Vec3(0.5, -0.1, 1), Vec3(0.6, 0.6, 1)}) {
         Hit hit = sentinel_hit();
-        EXPECT_FALSE(intersect_triangle(Ray{o, Vec3(0, 0, -1)}, A, B, C, {}, hit)) << o.x << "," << o.y;
+        EXPECT_FALSE(intersect_triangle(Ray{o, Vec3(0, 0, -1)}, A, B, C, {}, hit))
+            << "ray straight down at (" << o.x << ", " << o.y << "), just outside an edge of the "
+            << "triangle (0, 0, 0), (1, 0, 0), (0, 1, 0)";
         EXPECT_TRUE(untouched(hit));
     }
 }
@@ -43,7 +46,10 @@ TEST_F(Triangle, MissOutsideEachEdge) {
 TEST_F(Triangle, EdgesAndVerticesCount) {
     for (const Vec3& o : {Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1)}) {
         Hit hit;
-        EXPECT_TRUE(intersect_triangle(Ray{o, Vec3(0, 0, -1)}, A, B, C, {}, hit)) << o.x << "," << o.y;
+        EXPECT_TRUE(intersect_triangle(Ray{o, Vec3(0, 0, -1)}, A, B, C, {}, hit))
+            << "ray straight down at (" << o.x << ", " << o.y << "), exactly on an edge or a "
+            << "vertex of the triangle (0, 0, 0), (1, 0, 0), (0, 1, 0): inside, since beta >= 0, "
+            << "gamma >= 0 and beta + gamma <= 1 include equality";
     }
 }
 
@@ -60,6 +66,9 @@ TEST_F(Triangle, BarycentricsReproduceThePoint) {
         const Vec3 target = (1 - beta0 - gamma0) * a + beta0 * b + gamma0 * c;
         const Vec3 origin(u(rng), u(rng), 4);
         const Ray aimed{origin, target - origin};
+        SCOPED_TRACE(::testing::Message() << "random triangle " << i << ": a " << text(a) << ", b "
+                                          << text(b) << ", c " << text(c) << ", aimed at beta "
+                                          << beta0 << ", gamma " << gamma0);
         Hit hit;
         if (!intersect_triangle(aimed, a, b, c, {}, hit)) continue;
         ++hits;
@@ -67,8 +76,9 @@ TEST_F(Triangle, BarycentricsReproduceThePoint) {
         EXPECT_NEAR(beta, beta0, Real(1e-3));
         EXPECT_NEAR(gamma, gamma0, Real(1e-3));
         EXPECT_NEAR(hit.t, 1, Real(1e-3));
-        expect_vec_near((1 - beta - gamma) * a + beta * b + gamma * c, hit.point, Real(1e-3));
-        expect_vec_near(aimed.at(hit.t), hit.point, Real(1e-5));
+        expect_vec_near((1 - beta - gamma) * a + beta * b + gamma * c, hit.point,
+                        "(1 - beta - gamma) a + beta b + gamma c against hit.point", Real(1e-3));
+        expect_vec_near(aimed.at(hit.t), hit.point, "ray.at(hit.t) against hit.point", Real(1e-5));
     }
     // Only triangles seen almost edge-on may be missed.
     EXPECT_GT(hits, 490);
@@ -92,6 +102,7 @@ TEST_F(Triangle, ParallelAndDegenerateMiss) {
 
 TEST_F(Triangle, BadDirectionsMiss) {
     for (const Vec3& d : kBadDirections) {
+        SCOPED_TRACE("direction " + text(d));
         Hit hit = sentinel_hit();
         EXPECT_FALSE(intersect_triangle(Ray{Vec3(0.2, 0.2, 1), d}, A, B, C, {}, hit));
         EXPECT_TRUE(untouched(hit));
