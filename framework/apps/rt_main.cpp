@@ -5,16 +5,20 @@
 //   rt gallery [--out DIR]       every scene of every stage, in its own mode
 //   rt info SCENE.json           what the scene contains and which features the renderer uses
 //   rt gl-info [--window]        the OpenGL context the GPU stage will use
+//   rt fmt [--check] SCENE.json...   rewrite scene files in canonical form (--check: only report)
 #include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "apps/cli_parse.h"
 #include "gl/headless_context.h"
@@ -23,6 +27,7 @@
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
+#include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -173,6 +178,57 @@ int run_gl_info(bool window) {
     return 0;
 }
 
+// Writes `text` to `file` through a temporary file beside it, so a failure never leaves half a
+// scene behind. A symbolic link keeps pointing at the rewritten file.
+void replace_file(const fs::path& file, const std::string& text) {
+    const fs::path target = fs::is_symlink(file) ? fs::canonical(file) : file;
+    const fs::path temporary = target.string() + ".rt-fmt.tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << text;
+        out.close();
+        if (!out) {
+            std::error_code ignored;
+            fs::remove(temporary, ignored);
+            throw std::runtime_error(file.string() + ":1:1: error: cannot write the file; check its folder's permissions");
+        }
+    }
+    std::error_code ec;
+    fs::permissions(temporary, fs::status(target).permissions(), ec);
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw std::runtime_error(file.string() + ":1:1: error: cannot replace the file (" + ec.message() + ")");
+    }
+}
+
+// rt fmt: every file is read and checked by the scene loader, then compared with (or replaced
+// by) its canonical form. A bad file is reported in the loader's one line and the others are
+// still done; the exit code is 1 if any file was bad or, with --check, not canonical.
+int run_fmt(const std::vector<std::string>& files, bool check) {
+    int status = 0;
+    for (const std::string& file : files) {
+        try {
+            const std::string text = read_scene_text(file);
+            const std::string canonical = canonical_scene_text(text, file, fs::path(file).parent_path());
+            if (text == canonical) continue;
+            if (check) {
+                std::fprintf(stderr, "%s: not in canonical form; run rt fmt %s\n", file.c_str(), file.c_str());
+                status = 1;
+            } else {
+                replace_file(file, canonical);
+                std::printf("%s: rewritten in canonical form\n", file.c_str());
+            }
+        } catch (const std::exception& e) {
+            std::fflush(stdout);
+            std::fprintf(stderr, "%s\n", e.what());
+            status = 1;
+        }
+    }
+    return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -225,6 +281,14 @@ int main(int argc, char** argv) {
     auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
     gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
 
+    std::vector<std::string> fmt_files;
+    bool fmt_check = false;
+    auto* fmt_cmd = app.add_subcommand(
+        "fmt", "rewrite scene files in canonical form (docs/scene-format.md#canonical-form)");
+    fmt_cmd->add_option("scenes", fmt_files, "scene files (.json)")->required();
+    fmt_cmd->add_flag("--check", fmt_check,
+                      "change nothing; name each file not in canonical form and exit 1 if any");
+
     if (const auto stop = parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
         return *stop;
 
@@ -236,6 +300,7 @@ int main(int argc, char** argv) {
         if (*gallery_cmd) return run_gallery(source, gallery_out, gallery_threads);
         if (*info_cmd) return run_info(info_scene);
         if (*gl_cmd) return run_gl_info(gl_window);
+        if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -34,6 +34,7 @@ constexpr double kMaxPixels = 64.0 * 1024 * 1024;
 constexpr double kMaxRecursionDepth = 64;
 constexpr std::size_t kMaxTriangles = 20'000'000;
 constexpr std::size_t kMaxSceneFileBytes = std::size_t(64) << 20;
+constexpr double kMaxCheckerTiles = 1024;  // per side of a "checkerboard"
 constexpr int kMaxNesting = 100;  // a scene needs 5 levels; this stops pathological input early
 
 // Messages stay on one line whatever the input contained.
@@ -581,7 +582,12 @@ private:
     int material_of(const json& surface, const std::string& pointer) const {
         const json* v = member(surface, "material");
         if (!v) return 0;
-        std::string at = JsonPositions::child(pointer, "material");
+        return material_ref(*v, JsonPositions::child(pointer, "material"));
+    }
+
+    // A material name (string) or index (whole number) at `at`.
+    int material_ref(const json& value, const std::string& at) const {
+        const json* v = &value;
         if (v->is_string()) {
             std::string name = v->get<std::string>();
             auto it = material_ids_.find(name);
@@ -608,7 +614,7 @@ private:
                                " or a material name");
             return int(d);
         }
-        fail_value(at, "\"material\" must be a material name or index, got " + describe(*v),
+        fail_value(at, label(at) + " must be a material name or index, got " + describe(*v),
                    "write e.g. \"material\": \"red\" or \"material\": 0");
     }
 
@@ -621,7 +627,8 @@ private:
     }
 
     void read_surface(const json& s, const std::string& pointer) {
-        static const std::vector<std::string> types{"sphere", "plane", "triangle", "box", "mesh"};
+        static const std::vector<std::string> types{"sphere", "plane", "triangle", "box", "mesh",
+                                                    "checkerboard"};
         require_object(s, pointer, "{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}");
         const json& type_value = required(s, pointer, "type", "a surface", list_of(types));
         std::size_t type = choice(type_value, JsonPositions::child(pointer, "type"), types);
@@ -684,12 +691,83 @@ private:
                 scene_.boxes.push_back(box);
                 break;
             }
-            default:
+            case 4:
                 check_keys(s, pointer, "a mesh",
                            {"type", "file", "procedural", "triangles", "seed", "translate", "scale", "material"});
                 read_mesh(s, pointer);
                 break;
+            default:
+                check_keys(s, pointer, "a checkerboard", {"type", "min", "max", "tiles", "materials"});
+                read_checkerboard(s, pointer);
+                break;
         }
+    }
+
+    // A "checkerboard": shorthand for a floor of tiles[0] x tiles[1] boxes between "min" and
+    // "max" (docs/scene-format.md). Tile (i, j) spans x edges i..i+1 and z edges j..j+1, where
+    // edge k = min + (max - min) * k / n in double (edge n is max itself), and all of min.y..max.y;
+    // it gets materials[(i + j) % 2]. Boxes are appended with i outer, j inner.
+    void read_checkerboard(const json& s, const std::string& pointer) {
+        auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+        const json& lo_value = required(s, pointer, "min", "a checkerboard", "[x, y, z]");
+        const json& hi_value = required(s, pointer, "max", "a checkerboard", "[x, y, z]");
+        const Vec3 lo = vec3(lo_value, at("min")), hi = vec3(hi_value, at("max"));
+        for (int k = 0; k < 3; ++k) {
+            const bool flat = k != 1;  // the board needs an area in x and z; y may be thin
+            const double a = lo_value[std::size_t(k)].get<double>(), b = hi_value[std::size_t(k)].get<double>();
+            if (flat ? !(a < b) : !(a <= b)) {
+                const std::string element = JsonPositions::child(at("max"), std::size_t(k));
+                fail_value(element,
+                           std::string("\"max\" must ") + (flat ? "be above" : "not be below") +
+                               " \"min\", but " + "xyz"[k] + " is " + source_text(element) +
+                               (flat ? " <= " : " < ") +
+                               source_text(JsonPositions::child(at("min"), std::size_t(k))),
+                           flat ? "give the board an area in x and z" : "swap the values or fix the corner");
+            }
+        }
+        const json& tiles = required(s, pointer, "tiles", "a checkerboard", "[8, 8]");
+        if (!tiles.is_array() || tiles.size() != 2)
+            fail_value(at("tiles"),
+                       "\"tiles\" must be an array of 2 whole numbers (along x, along z), got " +
+                           (tiles.is_array() ? std::to_string(tiles.size()) + " numbers" : describe(tiles)),
+                       "write it as [8, 8]");
+        std::size_t count[2];
+        for (std::size_t k = 0; k < 2; ++k) {
+            const std::string element = JsonPositions::child(at("tiles"), k);
+            const double d = whole_number(tiles[k], element);
+            if (d < 1 || d > kMaxCheckerTiles)
+                fail_value(element, label(element) + " must be between 1 and " +
+                                        std::to_string(int(kMaxCheckerTiles)) + ", got " + source_text(element),
+                           "use fewer, larger tiles");
+            count[k] = std::size_t(d);
+        }
+        const json& materials = required(s, pointer, "materials", "a checkerboard", "[\"dark\", \"light\"]");
+        if (!materials.is_array() || materials.size() != 2)
+            fail_value(at("materials"),
+                       "\"materials\" must be an array of 2 materials, got " +
+                           (materials.is_array() ? std::to_string(materials.size()) + " entries"
+                                                 : describe(materials)),
+                       "write it as [\"dark\", \"light\"] (names or indices)");
+        const int material[2] = {material_ref(materials[0], JsonPositions::child(at("materials"), std::size_t(0))),
+                                 material_ref(materials[1], JsonPositions::child(at("materials"), std::size_t(1)))};
+        // The edges in double, from the numbers as written (not from their Real roundings).
+        auto edges = [](double a, double b, std::size_t n) {
+            std::vector<Real> e(n + 1);
+            for (std::size_t k = 0; k < n; ++k) e[k] = Real(std::min(a + (b - a) * double(k) / double(n), b));
+            e[n] = Real(b);
+            return e;
+        };
+        const std::vector<Real> ex = edges(lo_value[0].get<double>(), hi_value[0].get<double>(), count[0]);
+        const std::vector<Real> ez = edges(lo_value[2].get<double>(), hi_value[2].get<double>(), count[1]);
+        scene_.boxes.reserve(scene_.boxes.size() + count[0] * count[1]);
+        for (std::size_t i = 0; i < count[0]; ++i)
+            for (std::size_t j = 0; j < count[1]; ++j) {
+                Box box;
+                box.min = Vec3(ex[i], lo.y, ez[j]);
+                box.max = Vec3(ex[i + 1], hi.y, ez[j + 1]);
+                box.material = material[(i + j) % 2];
+                scene_.boxes.push_back(box);
+            }
     }
 
     void check_vertex_room(std::size_t more, const std::string& pointer) const {
@@ -907,7 +985,7 @@ Scene parse_scene(const std::string& text, const std::string& name, const fs::pa
     }
 }
 
-Scene load_scene(const fs::path& file) {
+std::string read_scene_text(const fs::path& file) {
     const std::string name = file.string();
     auto fail = [&](const std::string& what, const std::string& fix) {
         throw SceneError(one_line(name + ":1:1: error: " + what + "; " + fix));
@@ -926,7 +1004,11 @@ Scene load_scene(const fs::path& file) {
             fail("the file is larger than 64 MiB", "put large geometry in an OBJ mesh");
     }
     if (in.bad()) fail("the file could not be read", "check the file");
-    return parse_scene(text, name, file.parent_path());
+    return text;
+}
+
+Scene load_scene(const fs::path& file) {
+    return parse_scene(read_scene_text(file), file.string(), file.parent_path());
 }
 
 }  // namespace rt

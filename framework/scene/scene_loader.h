@@ -24,4 +24,8 @@ Scene load_scene(const std::filesystem::path& file);
 Scene parse_scene(const std::string& text, const std::string& name,
                   const std::filesystem::path& base_dir);
 
+// The text of a scene file, with load_scene's checks and messages for the file itself (missing,
+// a directory, unreadable, larger than 64 MiB). Throws SceneError.
+std::string read_scene_text(const std::filesystem::path& file);
+
 }  // namespace rt

@@ -1,0 +1,21 @@
+# `rt fmt FILE` rewrites a copy of a non-canonical scene in place (one line on stdout), after
+# which `rt fmt --check` accepts it and a second `rt fmt` changes nothing (prints nothing).
+# Usage: cmake -DRT=<rt> -DSCENE=<non-canonical scene> -DOUT=<dir> -P check_fmt_rewrite.cmake
+file(MAKE_DIRECTORY ${OUT})
+set(copy ${OUT}/scene.json)
+configure_file(${SCENE} ${copy} COPYONLY)
+execute_process(COMMAND ${RT} fmt ${copy} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "scene.json: rewritten in canonical form\n$" OR NOT err STREQUAL "")
+  message(FATAL_ERROR "rt fmt: exit code ${rc}, stdout '${out}', stderr '${err}'")
+endif()
+execute_process(COMMAND ${RT} fmt --check ${copy} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out STREQUAL "" OR NOT err STREQUAL "")
+  message(FATAL_ERROR "rt fmt --check after rt fmt: exit code ${rc}, stdout '${out}', stderr '${err}'")
+endif()
+file(READ ${copy} first)
+execute_process(COMMAND ${RT} fmt ${copy} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(READ ${copy} second)
+if(NOT rc EQUAL 0 OR NOT out STREQUAL "" OR NOT first STREQUAL second)
+  message(FATAL_ERROR "a second rt fmt changed the file or said something: exit code ${rc}, '${out}${err}'")
+endif()
+message(STATUS "rt fmt rewrote the file once:\n${first}")
