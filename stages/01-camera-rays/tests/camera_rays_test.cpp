@@ -1,5 +1,6 @@
 // Stage 01 tests: primary rays checked against closed forms.
-// Run: ctest --test-dir build -L stage01   (or build/bin/stage01_tests --gtest_filter='Perspective.*')
+// Run: ctest --test-dir build -L stage01 --output-on-failure
+//   (or build/bin/stage01_tests --gtest_filter='Perspective.*')
 #include <cmath>
 #include <source_location>
 #include <sstream>

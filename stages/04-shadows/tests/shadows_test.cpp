@@ -1,6 +1,9 @@
 // Stage 04 tests: the shadow ray, self-intersection (acne) far from the origin and at grazing
 // light, thin occluders, and light filtered through transparent surfaces.
 #include <cmath>
+#include <source_location>
+#include <sstream>
+#include <string>
 
 #include "render/render.h"
 #include "student/stage02.h"
@@ -53,10 +56,23 @@ SurfacePoint floor_point(const Scene& scene, Real x, Real z) {
     return surface_point(scene, Ray{Vec3(x, 1, z), Vec3(0, -1, 0)}, hit);
 }
 
-void expect_colour_near(const Color& actual, const Color& expected, float tol = 1e-5f) {
-    EXPECT_NEAR(actual.r, expected.r, tol);
-    EXPECT_NEAR(actual.g, expected.g, tol);
-    EXPECT_NEAR(actual.b, expected.b, tol);
+std::string text(const Color& c) {
+    std::ostringstream out;
+    out << "(" << c.r << ", " << c.g << ", " << c.b << ")";
+    return out.str();
+}
+
+// Compares two colours channel by channel. `what` names the case so that each failure says which
+// one it was; the trace line gives the line of the call.
+void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
+                        std::source_location where = std::source_location::current()) {
+    const float tol = 1e-5f;
+    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
+                                       "the check that failed");
+    const std::string both = ": got " + text(actual) + ", expected " + text(expected);
+    EXPECT_NEAR(actual.r, expected.r, tol) << what << ", red" << both;
+    EXPECT_NEAR(actual.g, expected.g, tol) << what << ", green" << both;
+    EXPECT_NEAR(actual.b, expected.b, tol) << what << ", blue" << both;
 }
 
 // The origin is the framework's robust offset origin, the direction the light's, and the range
@@ -162,13 +178,13 @@ TEST_F(Transmittance, ThinOccluderCloseToSurface) {
     const SurfacePoint at = floor_point(scene, 0.2f, 0.1f);
     expect_colour_near(
         light_transmittance(scene, at, illuminate(point_light(Vec3(0.2f, 3, 0.1f)), at.point)),
-        Color(0));
+        Color(0), "floor under an opaque slab 1e-5 above it: in shadow (no epsilon of your own)");
     // Beside the slab the floor is lit.
     const SurfacePoint beside = floor_point(scene, 0.7f, 0.1f);
     expect_colour_near(
         light_transmittance(scene, beside,
                             illuminate(point_light(Vec3(0.7f, 3, 0.1f)), beside.point)),
-        Color(1));
+        Color(1), "floor beside the thin slab: lit");
 }
 
 // Nothing between the point and the light: occluders beyond the light, or below the surface,
@@ -178,11 +194,13 @@ TEST_F(Transmittance, OnlyBetweenPointAndLight) {
     scene.spheres = {Sphere{Vec3(0, 6, 0), 1, 0}, Sphere{Vec3(0, -3, 0), 1, 0}};
     const SurfacePoint at = floor_point(scene, 0, 0);
     expect_colour_near(
-        light_transmittance(scene, at, illuminate(point_light(Vec3(0, 4, 0)), at.point)), Color(1));
+        light_transmittance(scene, at, illuminate(point_light(Vec3(0, 4, 0)), at.point)), Color(1),
+        "point light at height 4, spheres beyond it and below the floor: lit (t_range ends at "
+        "the light)");
     // A directional light has no end: the sphere 6 units up blocks it.
     expect_colour_near(
         light_transmittance(scene, at, illuminate(directional_light(Vec3(0, -1, 0)), at.point)),
-        Color(0));
+        Color(0), "directional light from above, sphere 6 up: in shadow (t_range (0, inf))");
 }
 
 // Thin-shell shadows: a glass triangle filters once, a glass sphere twice (in and out), and
@@ -196,25 +214,27 @@ TEST_F(Transmittance, ColouredShadowsThroughGlass) {
     const Light light = point_light(Vec3(0, 4, 0));
     SurfacePoint at = floor_point(scene, 0, 0);
     expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.9f, 0.5f, 0.2f));
+                       Color(0.9f, 0.5f, 0.2f), "one glass triangle: k_t once");
 
     scene.triangles.clear();
     scene.vertices.clear();
     scene.spheres = {Sphere{Vec3(0, 2, 0), 0.5f, 2}};
     at = floor_point(scene, 0, 0);
     expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.25f, 1, 0.64f));
+                       Color(0.25f, 1, 0.64f), "one glass sphere: k_t^2 (in and out)");
 
     scene.vertices = {Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(0, 1, 2)};
     scene.triangles = {Triangle{{0, 1, 2}, 1}};
     at = floor_point(scene, 0, 0);
     expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.9f * 0.25f, 0.5f, 0.2f * 0.64f));
+                       Color(0.9f * 0.25f, 0.5f, 0.2f * 0.64f),
+                       "glass triangle and glass sphere: the filters multiply");
 
     // An opaque box behind the glass (seen from the floor) blocks everything.
     scene.boxes = {Box{Vec3(-0.2f, 3, -0.2f), Vec3(0.2f, 3.2f, 0.2f), 0}};
     at = floor_point(scene, 0, 0);
-    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)), Color(0));
+    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)), Color(0),
+                       "an opaque box behind the glass: blocked");
 }
 
 }  // namespace

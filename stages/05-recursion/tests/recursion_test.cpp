@@ -2,6 +2,9 @@
 // reflection, Schlick's approximation, the weights of secondary rays, and the depth limit.
 #include <cmath>
 #include <random>
+#include <source_location>
+#include <sstream>
+#include <string>
 
 #include "render/shade.h"
 #include "student/stage05.h"
@@ -18,18 +21,34 @@ RT_TEST_SUITE(Recursion);
 
 constexpr Real kTol = Real(1e-5);
 
-void expect_vec_near(const Vec3& a, const Vec3& b, Real tol = kTol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
+std::string text(const Vec3& v) {
+    std::ostringstream out;
+    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return out.str();
+}
+
+// Compares two vectors component by component. `what` names the case so that each failure says
+// which one it was; the trace line gives the line of the call.
+void expect_vec_near(const Vec3& a, const Vec3& b, const std::string& what,
+                     std::source_location where = std::source_location::current()) {
+    const Real tol = kTol;
+    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
+                                       "the check that failed");
+    const std::string both = ": got " + text(a) + ", expected " + text(b);
+    EXPECT_NEAR(a.x, b.x, tol) << what << ", x component" << both;
+    EXPECT_NEAR(a.y, b.y, tol) << what << ", y component" << both;
+    EXPECT_NEAR(a.z, b.z, tol) << what << ", z component" << both;
 }
 
 TEST_F(Reflect, ClosedForm) {
-    expect_vec_near(reflect(Vec3(1, -1, 0), Vec3(0, 1, 0)), Vec3(1, 1, 0));
+    expect_vec_near(reflect(Vec3(1, -1, 0), Vec3(0, 1, 0)), Vec3(1, 1, 0),
+                    "reflect((1, -1, 0), n = (0, 1, 0))");
     // Length is kept; the normal may face either way.
-    expect_vec_near(reflect(Vec3(0, 0, -3), Vec3(0, 0, -1)), Vec3(0, 0, 3));
+    expect_vec_near(reflect(Vec3(0, 0, -3), Vec3(0, 0, -1)), Vec3(0, 0, 3),
+                    "reflect((0, 0, -3), n = (0, 0, -1)): length kept, either side of the normal");
     const Vec3 n = glm::normalize(Vec3(1, 1, 0));
-    expect_vec_near(reflect(Vec3(-1, 0, 0), n), Vec3(0, 1, 0));
+    expect_vec_near(reflect(Vec3(-1, 0, 0), n), Vec3(0, 1, 0),
+                    "reflect((-1, 0, 0), n = normalize(1, 1, 0))");
 }
 
 // 45 degrees from air into glass (1.5): sin(t) = sin(45)/1.5, bent towards the normal.
@@ -38,16 +57,17 @@ TEST_F(Refract, SnellClosedForm) {
     Vec3 t;
     ASSERT_TRUE(refract(d, Vec3(0, 1, 0), Real(1) / Real(1.5), t));
     const Real sin_t = std::sqrt(Real(0.5)) / Real(1.5);
-    expect_vec_near(t, Vec3(sin_t, -std::sqrt(1 - sin_t * sin_t), 0));
+    expect_vec_near(t, Vec3(sin_t, -std::sqrt(1 - sin_t * sin_t), 0),
+                    "45 degrees from air into glass 1.5: sin(t) = sin(45) / 1.5");
     EXPECT_NEAR(glm::length(t), 1, kTol);
 }
 
 TEST_F(Refract, NormalIncidenceGoesStraight) {
     Vec3 t;
     ASSERT_TRUE(refract(Vec3(0, 0, -1), Vec3(0, 0, 1), Real(1) / Real(1.33), t));
-    expect_vec_near(t, Vec3(0, 0, -1));
+    expect_vec_near(t, Vec3(0, 0, -1), "normal incidence into water: straight on");
     ASSERT_TRUE(refract(Vec3(0, 0, -1), Vec3(0, 0, 1), Real(1.5), t));  // leaving glass
-    expect_vec_near(t, Vec3(0, 0, -1));
+    expect_vec_near(t, Vec3(0, 0, -1), "normal incidence leaving glass: straight on");
 }
 
 // From glass (1.5) into air the critical angle is asin(1/1.5) = 41.81 degrees: just below it the
@@ -108,7 +128,8 @@ TEST_F(Secondary, Mirror) {
     ASSERT_TRUE(s.reflected.valid);
     EXPECT_FALSE(s.refracted.valid);
     EXPECT_EQ(s.reflected.weight, Color(0.8f, 0.7f, 0.6f));
-    expect_vec_near(glm::normalize(s.reflected.ray.direction), glm::normalize(Vec3(1, 1, 0)));
+    expect_vec_near(glm::normalize(s.reflected.ray.direction), glm::normalize(Vec3(1, 1, 0)),
+                    "mirror hit along (1, -1, 0) with normal (0, 1, 0): reflected direction");
     EXPECT_EQ(s.reflected.ray.origin,
               offset_ray_origin(at.point, at.error, at.normal, s.reflected.ray.direction));
     EXPECT_GT(s.reflected.ray.origin.y, at.point.y);
@@ -126,7 +147,8 @@ TEST_F(Secondary, EnteringAndLeaving) {
     EXPECT_EQ(s.refracted.weight, Color(0.9f));
     Vec3 expected;
     ASSERT_TRUE(refract(d, at.normal, Real(1) / Real(1.5), expected));
-    expect_vec_near(s.refracted.ray.direction, expected);
+    expect_vec_near(s.refracted.ray.direction, expected,
+                    "entering glass (front face): refracted direction with eta = 1 / ior");
     EXPECT_LT(s.refracted.ray.origin.y, at.point.y);
 
     // Leaving at 30 degrees: sin(t) = 1.5 sin(30) = 0.75, bent away from the normal.
