@@ -1,7 +1,7 @@
 // Stage 01: camera rays. Handout: stages/01-camera-rays/README.md
 // Conventions (pixel centres, camera frame, units): docs/conventions.md
 //
-// You edit only this file. Tests: ctest --test-dir build -L stage01
+// You edit only this file. Tests: ctest --test-dir build -L stage01 --output-on-failure
 // The camera frame is given: camera.u points right, camera.v up, and the camera looks along
 // -camera.w. All three are unit length and mutually orthogonal.
 #include <cmath>

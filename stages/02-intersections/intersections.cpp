@@ -1,7 +1,7 @@
 // Stage 02: ray-surface intersections. Handout: stages/02-intersections/README.md
 // Conventions (t-ranges, normal orientation, triangle winding): docs/conventions.md
 //
-// You edit only this file. Tests: ctest --test-dir build -L stage02
+// You edit only this file. Tests: ctest --test-dir build -L stage02 --output-on-failure
 // The contract shared by every function here is written at the top of
 // framework/student/stage02.h: open t-range, set_face_normal, leave `hit` alone on a miss, and
 // never crash on a zero, NaN or infinite direction (report a miss).

@@ -1,7 +1,7 @@
 // Stage 03: Blinn-Phong direct lighting. Handout: stages/03-blinn-phong/README.md
 // Conventions (colours are linear, light directions): docs/conventions.md
 //
-// You edit only this file. Tests: ctest --test-dir build -L stage03
+// You edit only this file. Tests: ctest --test-dir build -L stage03 --output-on-failure
 // The contracts are in framework/student/stage03.h.
 #include <algorithm>
 #include <cmath>

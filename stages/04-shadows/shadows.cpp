@@ -2,7 +2,7 @@
 // Where secondary rays start: framework/geometry/offset.h and
 // docs/conventions.md#secondary-ray-origins. Never add an epsilon of your own.
 //
-// You edit only this file. Tests: ctest --test-dir build -L stage04
+// You edit only this file. Tests: ctest --test-dir build -L stage04 --output-on-failure
 // The contracts are in framework/student/stage04.h.
 #include "core/not_implemented.h"
 #include "student/stage02.h"

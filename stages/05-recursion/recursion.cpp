@@ -1,7 +1,7 @@
 // Stage 05: recursive reflection and refraction. Handout: stages/05-recursion/README.md
 // Conventions (front_face, nested objects, ray origins): docs/conventions.md
 //
-// You edit only this file. Tests: ctest --test-dir build -L stage05
+// You edit only this file. Tests: ctest --test-dir build -L stage05 --output-on-failure
 // The contracts are in framework/student/stage05.h. The framework's shading driver
 // (framework/render/shade.cpp) does the recursion: it calls secondary_rays() at each hit.
 #include <algorithm>

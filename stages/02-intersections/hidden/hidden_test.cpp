@@ -13,7 +13,7 @@ TEST_F(HiddenSphere, FarAwayHit) {
     ASSERT_TRUE(intersect_sphere(Ray{Vec3(1000, 0, 5), Vec3(0, 0, -1)},
                                  rt::Sphere{Vec3(1000, 0, 0), 2, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 3, Real(1e-3));
-    expect_vec_near(hit.normal, Vec3(0, 0, 1), Real(1e-3));
+    expect_vec_near(hit.normal, Vec3(0, 0, 1), "normal of the far-away hit", Real(1e-3));
 }
 
 RT_TEST_SUITE(HiddenPlane);

@@ -222,6 +222,7 @@ TEST_F(BuildTest, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
     const std::vector<BvhPrimitive> input = bvh_primitives(scene);
     Bvh sah;
     build_bvh(input, {}, sah);
+    ASSERT_FALSE(sah.nodes.empty()) << "build_bvh produced no nodes";
     auto expected_cost = [](const Bvh& bvh) {
         const float root = bvh.nodes[0].bounds().surface_area();
         double cost = 0;
@@ -234,6 +235,7 @@ TEST_F(BuildTest, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
     two_bins.bins = 2;
     Bvh coarse;
     build_bvh(input, two_bins, coarse);
+    ASSERT_FALSE(coarse.nodes.empty()) << "build_bvh produced no nodes with 2 bins";
     EXPECT_LE(expected_cost(sah), expected_cost(coarse)) << "16 bins should do at least as well as 2";
 }
 
