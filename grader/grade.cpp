@@ -41,16 +41,6 @@ std::atomic<bool> g_interrupted{false};
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string two_digits(int n) {
-    char text[8];
-    std::snprintf(text, sizeof text, "%02d", n);
-    return text;
-}
-
 // ---------------------------------------------------------------- grading specs
 
 ImageThresholds parse_thresholds(const json& j, ImageThresholds t) {

@@ -56,6 +56,16 @@ int run_trusted(const std::string& command, std::string* output) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string two_digits(int n) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%02d", n);
+    return text;
+}
+
 std::uint64_t fnv1a(std::string_view data, std::uint64_t hash) {
     for (unsigned char c : data) {
         hash ^= c;

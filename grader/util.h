@@ -1,6 +1,7 @@
 // Small helpers of the trusted grader: files, hashing, shell commands it runs itself.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -21,6 +22,9 @@ int run_trusted(const std::string& command, std::string* output = nullptr);
 
 std::uint64_t fnv1a(std::string_view data, std::uint64_t hash = 1469598103934665603ull);
 std::string hex(std::uint64_t value);
+
+double seconds_since(std::chrono::steady_clock::time_point start);
+std::string two_digits(int n);  // "07": stage numbers as folders and test names spell them
 
 // gtest-style pattern: '*' any run, '?' one character.
 bool glob_match(std::string_view pattern, std::string_view text);

@@ -26,16 +26,6 @@ namespace {
 
 constexpr const char* kStagesArchive = "lib/librt_stages.a";
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string two_digits(int n) {
-    char text[8];
-    std::snprintf(text, sizeof text, "%02d", n);
-    return text;
-}
-
 // What the workspace copies of the tree: what a build reads. A student's renders, reports and
 // notes at the top of their tree must not count as a change of the framework.
 bool skipped_top_level(const std::string& name) {

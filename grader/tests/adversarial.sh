@@ -245,61 +245,6 @@ CPP
     echo '#include "hidden/hidden_test.cpp"' | append2
     checks=(--score-max 0 --contains "was not used" --contains "is not allowed") ;;
   # Calibration (the flag builds are calibrate_flags.sh): known bugs must fail.
-  forge_pass)  # forges passing results: fake gtest JSON, guessed channel records, then _exit(0)
-    stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
-    append1 <<'CPP'
-#include <dirent.h>
-#include <unistd.h>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <iterator>
-#include <string>
-#include <vector>
-namespace { struct Forger { Forger() {
-  std::ifstream cmd("/proc/self/cmdline", std::ios::binary);
-  std::string all((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
-  std::string test, json = "test_detail.json";
-  for (std::size_t p = 0, q; p < all.size(); p = q + 1) {
-    q = all.find('\0', p); if (q == std::string::npos) q = all.size();
-    const std::string a = all.substr(p, q - p);
-    if (a.rfind("--gtest_filter=", 0) == 0) test = a.substr(15);
-    if (a.rfind("--gtest_output=json:", 0) == 0) json = a.substr(20);
-  }
-  const auto dot = test.find('.');
-  if (dot != std::string::npos)  // GoogleTest's JSON report, as the old verdict read it
-    std::ofstream(json) << "{\"testsuites\": [{\"name\": \"" << test.substr(0, dot)
-      << "\", \"testsuite\": [{\"name\": \"" << test.substr(dot + 1)
-      << "\", \"status\": \"RUN\", \"result\": \"COMPLETED\"}]}]}";
-  // Nonce candidates: whatever the nonce pipe still holds, and hex strings in writable memory.
-  std::vector<std::string> nonces{std::string(32, '0')};
-  if (const char* fd = std::getenv("RT_GRADE_NONCE_FD")) {
-    char buf[64] = {}; const ssize_t n = read(std::atoi(fd), buf, 32);
-    if (n > 0) nonces.push_back(std::string(buf, std::size_t(n)));
-  }
-  std::ifstream maps("/proc/self/maps"); std::string line;
-  while (std::getline(maps, line) && nonces.size() < 64) {
-    unsigned long lo = 0, hi = 0; char perms[8] = {};
-    if (std::sscanf(line.c_str(), "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[1] != 'w') continue;
-    if (hi - lo > (8ul << 20)) continue;
-    const char* m = reinterpret_cast<const char*>(lo); int run = 0;
-    for (unsigned long i = 0; i < hi - lo && nonces.size() < 64; ++i) {
-      const char c = m[i];
-      run = ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')) ? run + 1 : 0;
-      if (run == 32) nonces.push_back(std::string(m + i - 31, 32));
-    }
-  }
-  for (int fd = 3; fd < 64; ++fd)
-    for (const auto& n : nonces) {
-      const std::string rec = "RTG1 " + n + " PASS " + test + "\nRTG1 " + n + " END 1 0\n";
-      if (write(fd, rec.data(), rec.size()) < 0) break;
-    }
-  std::printf("FORGER ran: %zu nonce guesses\n", nonces.size()); std::fflush(stdout);
-  _exit(0);
-} } forger; }
-CPP
-    checks=(--score-max 0 --contains "FORGER ran" --contains "tampering") ;;
   early_constructor)  # runs before the trusted test main to take the nonce: refused at build
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     append1 <<'CPP'
