@@ -8,6 +8,7 @@
 #include <string>
 
 #include "student/stage02.h"
+#include "testing/expect_near.h"
 #include "testing/stage_test.h"
 
 namespace rt::stage02 {
@@ -15,24 +16,8 @@ namespace rt::stage02 {
 // Tolerance for closed-form checks of a few operations on values of order 1.
 inline constexpr Real kTol = Real(1e-5);
 
-inline std::string text(const Vec3& v) {
-    std::ostringstream out;
-    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return out.str();
-}
-
-// Compares two vectors component by component. `what` names the case (which face, which point)
-// so that each failure says which one it was; the trace line gives the line of the call.
-inline void expect_vec_near(const Vec3& actual, const Vec3& expected, const std::string& what,
-                            Real tol = kTol,
-                            std::source_location where = std::source_location::current()) {
-    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
-                                       "the check that failed");
-    const std::string both = ": got " + text(actual) + ", expected " + text(expected);
-    EXPECT_NEAR(actual.x, expected.x, tol) << what << ", x component" << both;
-    EXPECT_NEAR(actual.y, expected.y, tol) << what << ", y component" << both;
-    EXPECT_NEAR(actual.z, expected.z, tol) << what << ", z component" << both;
-}
+using testing::expect_vec_near;
+using testing::text;
 
 // A hit record that no correct implementation writes, to detect writes on a miss.
 inline Hit sentinel_hit() {

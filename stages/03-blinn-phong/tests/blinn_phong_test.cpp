@@ -8,6 +8,7 @@
 
 #include "render/shade.h"
 #include "student/stage03.h"
+#include "testing/expect_near.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -19,26 +20,11 @@ RT_TEST_SUITE(DirectLight);
 
 constexpr float kTol = 1e-5f;
 
-std::string text(const Color& c) {
-    std::ostringstream out;
-    out << "(" << c.r << ", " << c.g << ", " << c.b << ")";
-    return out.str();
-}
-
-// Compares two colours channel by channel. `what` names the case so that each failure says which
-// one it was; the trace line gives the line of the call.
+// Relative tolerance: some expected values here exceed 1.
 void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
                         float tol = kTol,
                         std::source_location where = std::source_location::current()) {
-    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
-                                       "the check that failed");
-    const std::string both = ": got " + text(actual) + ", expected " + text(expected);
-    EXPECT_NEAR(actual.r, expected.r, tol * std::max(1.0f, std::abs(expected.r)))
-        << what << ", red" << both;
-    EXPECT_NEAR(actual.g, expected.g, tol * std::max(1.0f, std::abs(expected.g)))
-        << what << ", green" << both;
-    EXPECT_NEAR(actual.b, expected.b, tol * std::max(1.0f, std::abs(expected.b)))
-        << what << ", blue" << both;
+    testing::expect_colour_near(actual, expected, what, tol, testing::Scale::Relative, where);
 }
 
 Light point_light(Vec3 position, Color intensity, Vec3 attenuation = Vec3(1, 0, 1)) {

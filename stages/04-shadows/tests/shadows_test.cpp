@@ -8,6 +8,7 @@
 #include "render/render.h"
 #include "student/stage02.h"
 #include "student/stage04.h"
+#include "testing/expect_near.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -56,24 +57,7 @@ SurfacePoint floor_point(const Scene& scene, Real x, Real z) {
     return surface_point(scene, Ray{Vec3(x, 1, z), Vec3(0, -1, 0)}, hit);
 }
 
-std::string text(const Color& c) {
-    std::ostringstream out;
-    out << "(" << c.r << ", " << c.g << ", " << c.b << ")";
-    return out.str();
-}
-
-// Compares two colours channel by channel. `what` names the case so that each failure says which
-// one it was; the trace line gives the line of the call.
-void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
-                        std::source_location where = std::source_location::current()) {
-    const float tol = 1e-5f;
-    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
-                                       "the check that failed");
-    const std::string both = ": got " + text(actual) + ", expected " + text(expected);
-    EXPECT_NEAR(actual.r, expected.r, tol) << what << ", red" << both;
-    EXPECT_NEAR(actual.g, expected.g, tol) << what << ", green" << both;
-    EXPECT_NEAR(actual.b, expected.b, tol) << what << ", blue" << both;
-}
+using rt::testing::expect_colour_near;
 
 // The origin is the framework's robust offset origin, the direction the light's, and the range
 // ends at the light (point) or never (directional).

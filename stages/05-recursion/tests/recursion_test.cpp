@@ -8,6 +8,7 @@
 
 #include "render/shade.h"
 #include "student/stage05.h"
+#include "testing/expect_near.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -21,24 +22,7 @@ RT_TEST_SUITE(Recursion);
 
 constexpr Real kTol = Real(1e-5);
 
-std::string text(const Vec3& v) {
-    std::ostringstream out;
-    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return out.str();
-}
-
-// Compares two vectors component by component. `what` names the case so that each failure says
-// which one it was; the trace line gives the line of the call.
-void expect_vec_near(const Vec3& a, const Vec3& b, const std::string& what,
-                     std::source_location where = std::source_location::current()) {
-    const Real tol = kTol;
-    const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
-                                       "the check that failed");
-    const std::string both = ": got " + text(a) + ", expected " + text(b);
-    EXPECT_NEAR(a.x, b.x, tol) << what << ", x component" << both;
-    EXPECT_NEAR(a.y, b.y, tol) << what << ", y component" << both;
-    EXPECT_NEAR(a.z, b.z, tol) << what << ", z component" << both;
-}
+using rt::testing::expect_vec_near;
 
 TEST_F(Reflect, ClosedForm) {
     expect_vec_near(reflect(Vec3(1, -1, 0), Vec3(0, 1, 0)), Vec3(1, 1, 0),

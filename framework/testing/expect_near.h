@@ -1,0 +1,28 @@
+// Component-wise checks for the stage tests that say which case failed: `what` names the case
+// (which corner, face, light), the values are printed in full, and a trace names the line of
+// the call (failures inside a helper otherwise all point at the helper).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <source_location>
+#include <string>
+
+#include "core/ray.h"
+#include "scene/scene.h"
+
+namespace rt::testing {
+
+std::string text(const Vec3& v);  // Color is the same type: "(r, g, b)"
+
+void expect_vec_near(const Vec3& actual, const Vec3& expected, const std::string& what,
+                     Real tol = Real(1e-5),
+                     std::source_location where = std::source_location::current());
+
+// Relative: the tolerance scales with the expected value's magnitude (when above 1).
+enum class Scale { Absolute, Relative };
+void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
+                        float tol = 1e-5f, Scale scale = Scale::Absolute,
+                        std::source_location where = std::source_location::current());
+
+}  // namespace rt::testing
