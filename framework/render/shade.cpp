@@ -1,5 +1,7 @@
 #include "render/shade.h"
 
+#include <algorithm>
+
 #include "render/accelerate.h"
 #include "student/stage02.h"
 #include "student/stage03.h"
@@ -27,20 +29,40 @@ const char* to_string(RayNode::Kind kind) {
     return "?";
 }
 
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight) {
-    if (node) node->depth = depth, node->ray = ray, node->weight = weight;
+namespace {
+
+// One ray of the loop's stack: what recursion kept in its locals.
+struct Frame {
+    Ray ray;
+    int depth = 0;
+    Color weight{1};   // in the pixel (the debugger's; light transport never reads it)
+    Color colour{0};   // local light, then each branch's weighted colour as it completes
+    bool recurse = false;
+    SecondaryRays branches;
+    int next = 0;      // the branch to trace next: 0 reflected, 1 refracted, 2 done
+};
+
+const SecondaryRay& branch(const Frame& f, int i) {
+    return i == 0 ? f.branches.reflected : f.branches.refracted;
+}
+
+// A frame's own work: the nearest hit, direct light (with stage 04's shadows when the scene has
+// them), and the secondary rays (stage 05) when the material reflects or transmits.
+void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
     Hit hit;
-    if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) {
-        if (node) node->local = scene.background, node->contribution = weight * scene.background;
-        return scene.background;
+    if (!nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit)) {
+        f.colour = scene.background;
+        f.recurse = false;
+        if (observer) observer->miss(scene.background);
+        return;
     }
     // A scene built in code may lack materials; an out-of-range index must not crash.
     static const Material kDefaultMaterial;
     const bool known = hit.material >= 0 && std::size_t(hit.material) < scene.materials.size();
     const Material& material =
         known ? scene.materials[std::size_t(hit.material)] : kDefaultMaterial;
-    const SurfacePoint at = surface_point(scene, ray, hit);
-    const Vec3 to_viewer = -glm::normalize(ray.direction);
+    const SurfacePoint at = surface_point(scene, f.ray, hit);
+    const Vec3 to_viewer = -glm::normalize(f.ray.direction);
     // Meshes with vertex normals are lit with the interpolated normal (smooth shading); ray
     // origins and mirror directions keep the geometric one, which the offsets are built on.
     Vec3 lighting_normal = at.normal;
@@ -65,18 +87,7 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
             } else {
                 transmittance = light_transmittance(scene, at, sample);
             }
-            if (node) {
-                // The debugger also names the first surface in the way (framework's own query).
-                ShadowRecord record;
-                record.light = light;
-                const ShadowRay shadow = shadow_ray(at, sample);
-                record.ray = shadow.ray, record.t_range = shadow.t_range;
-                record.transmittance = transmittance;
-                Hit blocker;
-                if (nearest_hit(scene, shadow.ray, shadow.t_range, blocker))
-                    record.blocked_by = blocker.primitive, record.blocked_t = blocker.t;
-                node->shadows.push_back(record);
-            }
+            if (observer) observer->shadow(at, light, sample, transmittance);
             return transmittance;
         };
         local = direct_light(scene, material, at.point, lighting_normal, to_viewer,
@@ -84,31 +95,93 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
     } else {
         local = direct_light(scene, material, at.point, lighting_normal, to_viewer);
     }
-    if (node) {
-        node->hit = true, node->hit_record = hit, node->surface = at;
-        node->local = local, node->contribution = weight * local;
-    }
+    if (observer) observer->hit(hit, at, local);
+    f.colour = local;
+    f.recurse = f.depth < std::min(scene.max_depth, kMaxTraceDepth) &&
+                ((scene.features.reflection && nonzero(material.reflective)) ||
+                 (scene.features.refraction && nonzero(material.transmissive)));
+    f.next = 0;
+    if (f.recurse) f.branches = secondary_rays(f.ray, at, material, scene.fresnel);
+}
 
-    Color colour = local;
-    const bool recursive_material = (scene.features.reflection && nonzero(material.reflective)) ||
-                                    (scene.features.refraction && nonzero(material.transmissive));
-    if (depth < scene.max_depth && recursive_material) {
-        const SecondaryRays rays = secondary_rays(ray, at, material, scene.fresnel);
-        const std::pair<const SecondaryRay*, RayNode::Kind> branches[] = {
-            {&rays.reflected, RayNode::Kind::Reflection},
-            {&rays.refracted, RayNode::Kind::Refraction}};
-        for (const auto& [secondary, kind] : branches) {
-            if (!secondary->valid) continue;
-            RayNode* child = nullptr;
-            if (node) {
-                child = &node->children.emplace_back();
-                child->kind = kind, child->ray_weight = secondary->weight;
-            }
-            colour += secondary->weight * trace_ray(scene, secondary->ray, depth + 1, child,
-                                                    weight * secondary->weight);
-        }
+// Builds the debugger's ray tree from what the loop reports.
+class RayTreeRecorder : public TraceObserver {
+public:
+    RayTreeRecorder(const Scene& scene, RayNode& root) : scene_(scene), root_(root) {}
+    void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,
+                   const Color& weight) override {
+        RayNode* node = open_.empty() ? &root_ : &open_.back()->children.emplace_back();
+        node->kind = kind, node->depth = depth, node->ray = ray;
+        node->ray_weight = ray_weight, node->weight = weight;
+        open_.push_back(node);
     }
-    return colour;
+    void miss(const Color& background) override {
+        RayNode& n = *open_.back();
+        n.local = background, n.contribution = n.weight * background;
+    }
+    void shadow(const SurfacePoint& at, std::size_t light, const LightSample& sample,
+                const Color& transmittance) override {
+        // The debugger also names the first surface in the way (the framework's own query).
+        ShadowRecord record;
+        record.light = light;
+        const ShadowRay shadow = shadow_ray(at, sample);
+        record.ray = shadow.ray, record.t_range = shadow.t_range;
+        record.transmittance = transmittance;
+        Hit blocker;
+        if (nearest_hit(scene_, shadow.ray, shadow.t_range, blocker))
+            record.blocked_by = blocker.primitive, record.blocked_t = blocker.t;
+        open_.back()->shadows.push_back(record);
+    }
+    void hit(const Hit& hit, const SurfacePoint& at, const Color& local) override {
+        RayNode& n = *open_.back();
+        n.hit = true, n.hit_record = hit, n.surface = at;
+        n.local = local, n.contribution = n.weight * local;
+    }
+    void end_ray() override { open_.pop_back(); }
+
+private:
+    const Scene& scene_;
+    RayNode& root_;
+    std::vector<RayNode*> open_;  // the rays begun and not ended: a path from the root
+};
+
+}  // namespace
+
+Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+                TraceObserver* observer) {
+    // Once per thread: constructing 65 frames per pixel would cost more than most pixels do.
+    static thread_local Frame stack[kMaxTraceDepth + 1];
+    int top = 0;
+    stack[0].ray = ray, stack[0].depth = depth, stack[0].weight = weight;
+    if (observer) observer->begin_ray(RayNode::Kind::Camera, depth, ray, Color(1), weight);
+    start_frame(scene, stack[0], observer);
+    for (;;) {
+        Frame& f = stack[top];
+        while (f.recurse && f.next < 2 && !branch(f, f.next).valid) ++f.next;
+        if (f.recurse && f.next < 2 && top < kMaxTraceDepth) {
+            // Descend into the next branch, as a recursive call would.
+            const SecondaryRay& s = branch(f, f.next);
+            Frame& child = stack[++top];
+            child.ray = s.ray, child.depth = f.depth + 1, child.weight = f.weight * s.weight;
+            if (observer)
+                observer->begin_ray(f.next == 0 ? RayNode::Kind::Reflection : RayNode::Kind::Refraction,
+                                    child.depth, s.ray, s.weight, child.weight);
+            start_frame(scene, child, observer);
+            continue;
+        }
+        // This ray is complete: hand its colour to its parent, weighted, like a return would.
+        if (observer) observer->end_ray();
+        if (top == 0) return f.colour;
+        Frame& parent = stack[--top];
+        parent.colour += branch(parent, parent.next).weight * f.colour;
+        ++parent.next;
+    }
+}
+
+Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight) {
+    if (!node) return trace_ray(scene, ray, depth, weight, nullptr);
+    RayTreeRecorder recorder(scene, *node);
+    return trace_ray(scene, ray, depth, weight, &recorder);
 }
 
 Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {

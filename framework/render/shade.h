@@ -13,6 +13,7 @@
 
 #include "geometry/offset.h"
 #include "scene/scene.h"
+#include "student/stage03.h"
 
 namespace rt {
 
@@ -42,10 +43,36 @@ struct RayNode {
     std::vector<RayNode> children;
 };
 
-// The colour seen along `ray` at recursion depth `depth` (0 for camera rays). Fills `node` (if
-// given) with the ray tree below this ray, `weight` being the ray's weight in the pixel.
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node = nullptr,
+// Watches the shading loop (the ray-tree debugger). The loop calls it and never depends on what
+// it does, so light transport reads the same with or without it (and a shader has none).
+class TraceObserver {
+public:
+    virtual ~TraceObserver() = default;
+    // A ray starts: its weight at its parent (1 for the camera ray) and in the pixel.
+    virtual void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,
+                           const Color& weight) = 0;
+    virtual void miss(const Color& background) = 0;
+    // Stage 04's answer for one light at `at`, as direct light asked for it.
+    virtual void shadow(const SurfacePoint& at, std::size_t light, const LightSample& sample,
+                        const Color& transmittance) = 0;
+    virtual void hit(const Hit& hit, const SurfacePoint& at, const Color& local) = 0;
+    virtual void end_ray() = 0;
+};
+
+// The deepest bounce the loop's fixed stack holds (the scene loader's max_depth limit).
+inline constexpr int kMaxTraceDepth = 64;
+
+// The colour seen along `ray`, a camera ray at depth `depth` (0 for camera rays): an explicit
+// loop over a fixed stack of frames {ray, depth, weight, colour so far, next branch}, which adds
+// each reflected/refracted colour to its parent in the order recursion would (so images are
+// bit-identical to the recursive form) and which a GLSL shader can mirror line for line.
+// Fills `node` (if given) with the ray tree below this ray, `weight` being the ray's weight in
+// the pixel.
+Color trace_ray(const Scene& scene, const Ray& ray, int depth = 0, RayNode* node = nullptr,
                 const Color& weight = Color(1));
+// The same loop reporting to any observer.
+Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+                TraceObserver* observer);
 
 // The shaded colour of pixel (x, y) (one ray through its centre), linear RGB.
 Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree = nullptr);
