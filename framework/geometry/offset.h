@@ -20,6 +20,10 @@ struct SurfacePoint {
     bool front_face = true;
     int primitive = -1;
     int material = -1;
+    // Texture coordinates (stage 07): sphere longitude/latitude as stage 02 computes them,
+    // triangle vertex uvs interpolated ((0, 0) without any), (0, 0) for planes and boxes for now.
+    // Distinct from Hit::uv, which holds the barycentrics for triangles.
+    Vec2 texcoord{0};
 };
 
 // gamma(n) = n u / (1 - n u), u the unit roundoff of Real: the bound on the relative error of n

@@ -90,4 +90,39 @@ Image8 read_image8(const std::filesystem::path& file) {
     return out;
 }
 
+Image read_image(const std::filesystem::path& file, Encoding integer_encoding) {
+    if (!std::filesystem::is_regular_file(file))
+        throw ImageError(file.string() + ": error: no such image file; check the path");
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in)
+        throw ImageError(file.string() + ": error: cannot read image (" + one_line(OIIO::geterror()) +
+                         "); is it an EXR, HDR, PNG or JPEG?");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 ||
+        spec.nchannels < 1 || spec.nchannels > 4)
+        throw ImageError(file.string() + ": error: unsupported size or channel count");
+    const int channels = spec.nchannels;
+    std::vector<float> raw(std::size_t(spec.width) * spec.height * channels);
+    // OpenImageIO scales integer formats to [0, 1] when reading them as float.
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data()))
+        throw ImageError(file.string() + ": error: cannot decode image (" + one_line(in->geterror()) + ")");
+    const bool floating = spec.format.is_floating_point();
+    const bool decode = !floating && integer_encoding == Encoding::Srgb;
+    Image out(spec.width, spec.height);
+    std::size_t bad = 0;
+    for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+        float v[3];
+        for (int c = 0; c < 3; ++c) {
+            const float x = raw[i * channels + (channels >= 3 ? c : 0)];
+            v[c] = decode ? srgb_to_linear(x) : x;
+        }
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) ++bad;
+        out.pixels[i] = Color(v[0], v[1], v[2]);
+    }
+    if (bad > 0)
+        throw ImageError(file.string() + ": error: " + std::to_string(bad) +
+                         " pixels are NaN or infinite; re-export the image");
+    return out;
+}
+
 }  // namespace rt

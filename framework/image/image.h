@@ -54,4 +54,14 @@ void write_image8(const Image8& image, const std::filesystem::path& file);
 // Throws ImageError naming the file when it is missing, unreadable or not 8-bit.
 Image8 read_image8(const std::filesystem::path& file);
 
+// How stored values map to linear light. Float files (EXR, HDR) are linear already; integer
+// files (8- or 16-bit PNG, JPEG) hold sRGB-encoded colour (textures) or plain data (normal
+// maps, height maps): the caller says which (docs/conventions.md#colour).
+enum class Encoding { Srgb, Data };
+
+// Any image OpenImageIO reads (EXR, HDR, 8- or 16-bit PNG, JPEG), as linear float RGB (grey is
+// spread to three channels, alpha dropped). Throws ImageError naming the file for a missing or
+// unreadable file, an impossible size, or NaN/infinite pixels.
+Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb);
+
 }  // namespace rt

@@ -51,9 +51,9 @@ const SecondaryRay& branch(const Frame& f, int i) {
 void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
     Hit hit;
     if (!nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit)) {
-        f.colour = scene.background;
+        f.colour = background(scene, f.ray.direction);
         f.recurse = false;
-        if (observer) observer->miss(scene.background);
+        if (observer) observer->miss(f.colour);
         return;
     }
     // A scene built in code may lack materials; an out-of-range index must not crash.

@@ -103,4 +103,6 @@ const char* to_string(Accelerator accelerator) {
     return accelerator == Accelerator::Bvh ? "bvh" : "none";
 }
 
+Color background(const Scene& scene, const Vec3& /*direction*/) { return scene.background; }
+
 }  // namespace rt

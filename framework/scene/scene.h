@@ -146,6 +146,10 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
 // its vertex uvs interpolated, (0, 0) where the scene has none (docs/scene-format.md).
 Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv);
 
+// What a ray that hits nothing sees, looking along `direction` (unit or not): today the scene's
+// one background colour; the hook for stage 08's environment maps.
+Color background(const Scene& scene, const Vec3& direction);
+
 const char* to_string(RenderMode mode);
 const char* to_string(Accelerator accelerator);
 

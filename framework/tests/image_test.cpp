@@ -7,6 +7,8 @@
 #include "image/compare.h"
 #include "image/image.h"
 
+#include <OpenImageIO/imageio.h>
+
 namespace rt {
 namespace {
 
@@ -63,6 +65,58 @@ TEST(ImageFiles, ExrIsWritten) {
     const auto file = temp_file("linear.exr");
     write_image(img, file);
     EXPECT_GT(std::filesystem::file_size(file), 0u);
+}
+
+TEST(ImageFiles, ExrReadsBackLinearValuesExactly) {
+    Image img(3, 2, Color(0.25f, 2.0f, 0.0f));
+    img.at(2, 1) = Color(17.5f, 0.001f, 1e-6f);
+    const auto file = temp_file("linear-back.exr");
+    write_image(img, file);
+    const Image back = read_image(file);  // float data is never sRGB-decoded
+    ASSERT_EQ(back.width, 3);
+    ASSERT_EQ(back.height, 2);
+    EXPECT_EQ(back.at(0, 0), img.at(0, 0));
+    EXPECT_EQ(back.at(2, 1), img.at(2, 1));
+}
+
+TEST(ImageFiles, IntegerImagesDecodeAsColourOrData) {
+    // 8-bit: mid grey 188 is linear ~0.5 as colour, 188/255 as data.
+    Image8 img{2, 1, {188, 188, 188, 255, 0, 0}};
+    const auto file = temp_file("grey.png");
+    write_image8(img, file);
+    const Image colour = read_image(file, Encoding::Srgb);
+    const Image data = read_image(file, Encoding::Data);
+    EXPECT_NEAR(colour.at(0, 0).r, srgb_to_linear(188 / 255.0f), 1e-6f);
+    EXPECT_NEAR(data.at(0, 0).r, 188 / 255.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(data.at(1, 0).r, 1.0f);
+    EXPECT_FLOAT_EQ(data.at(1, 0).g, 0.0f);
+    // 16-bit PNG: read at full precision (a data texture keeps 1/65535 steps).
+    const auto wide = temp_file("wide.png");
+    {
+        auto out = OIIO::ImageOutput::create(wide.string());
+        ASSERT_TRUE(out);
+        OIIO::ImageSpec spec(2, 1, 1, OIIO::TypeDesc::UINT16);
+        const std::uint16_t px[2] = {1, 65535};
+        ASSERT_TRUE(out->open(wide.string(), spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, px));
+        out->close();
+    }
+    const Image grey = read_image(wide, Encoding::Data);
+    EXPECT_NEAR(grey.at(0, 0).r, 1 / 65535.0f, 1e-9f);
+    EXPECT_EQ(grey.at(0, 0).g, grey.at(0, 0).r);  // grey spread to three channels
+    EXPECT_FLOAT_EQ(grey.at(1, 0).b, 1.0f);
+}
+
+TEST(ImageFiles, ReadImageErrorsNameTheFile) {
+    const auto junk = temp_file("junk2.exr");
+    std::ofstream(junk) << "not an image";
+    try {
+        read_image(junk);
+        FAIL();
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("junk2.exr"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(read_image(temp_file("missing.exr")), ImageError);
 }
 
 TEST(ImageFiles, ClearErrors) {
