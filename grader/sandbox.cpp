@@ -424,9 +424,11 @@ RunResult run_sandboxed(const RunSpec& spec) {
     const auto start = std::chrono::steady_clock::now();
     const pid_t outer = fork();
     if (outer == 0) {
-        // Outer child: new process group, namespaces, the jail; then an init process that
-        // runs the program and reports its wait status, so every descendant dies with it.
-        setpgid(0, 0);
+        // Outer child: a session of its own (so the kernel's autogroup scheduling shares the
+        // CPU fairly between concurrent runs, whatever one of them forks), namespaces, the
+        // jail; then an init process that runs the program and reports its wait status, so
+        // every descendant dies with it.
+        if (setsid() < 0) setpgid(0, 0);
         close(status_pipe[0]);
         if (isolation == Isolation::Namespaces) {
             if (!have_root || !enter_namespaces() || !enter_jail(spec, root_dir)) _exit(124);

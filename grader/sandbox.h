@@ -12,8 +12,10 @@
 //   - keep alive: it is PID 1's child in a new PID namespace, and the namespace dies with it; a
 //     reaper then kills whatever still runs under its uid (the only processes that could);
 //   - share: it runs under a uid leased to this one run (distinct from every concurrent run),
-//     so RLIMIT_NPROC and signals never reach another grading; no network (new net namespace);
-//     only the descriptors of `pass_fds` are inherited.
+//     so RLIMIT_NPROC and signals never reach another grading; in a session of its own, so the
+//     kernel's autogroup scheduler shares the CPU between concurrent runs, not between their
+//     processes; no network (new net namespace); only the descriptors of `pass_fds` are
+//     inherited.
 // Without namespaces (the kernel or a container forbids them) only the uid lease, the limits
 // and the reaper remain; the report says so.
 #pragma once
@@ -34,7 +36,7 @@ struct Limits {
     long long address_space_mb = 4096;
     long long memory_mb = 512;  // RLIMIT_DATA: heap and anonymous memory
     long long file_size_mb = 16;  // also caps captured stdout/stderr
-    int processes = 64;           // RLIMIT_NPROC of the run's own uid (threads count)
+    int processes = 16;           // RLIMIT_NPROC of the run's own uid (threads count)
     long long output_bytes = 64 * 1024;  // what is kept of stdout+stderr for the report
 };
 

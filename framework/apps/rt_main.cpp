@@ -79,6 +79,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 int run_render(const RenderArgs& args) {
+    if (!args.output.empty()) check_image_output(args.output);
     Scene scene = load_scene(args.scene);
     if (args.width > 0) scene.image.width = args.width;
     if (args.height > 0) scene.image.height = args.height;

@@ -51,6 +51,18 @@ void write_pixels(const std::filesystem::path& file, int width, int height, OIIO
 
 }  // namespace
 
+void check_image_output(const std::filesystem::path& file) {
+    const std::string ext = file.extension().string();
+    if (ext != ".exr" && ext != ".png")
+        throw ImageError(file.string() + ": error: unknown image extension \"" + ext +
+                         "\"; use .png (sRGB, 8-bit) or .exr (linear float)");
+    std::error_code ec;
+    const auto folder = file.parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+        throw ImageError(file.string() + ": error: the folder " + folder.string() +
+                         " does not exist; create it first");
+}
+
 void write_image(const Image& image, const std::filesystem::path& file) {
     const std::string ext = file.extension().string();
     if (ext == ".exr") {

@@ -49,6 +49,9 @@ Image8 to_image8(const Image& image);
 // file on failure (unknown extension, unwritable folder, ...).
 void write_image(const Image& image, const std::filesystem::path& file);
 void write_image8(const Image8& image, const std::filesystem::path& file);
+// Throws the ImageError write_image would, for a bad extension or a missing folder, before any
+// work is done (a long render must not end in "cannot write").
+void check_image_output(const std::filesystem::path& file);
 
 // Reads any 8-bit RGB or RGBA image OpenImageIO can (alpha is dropped; grey is expanded).
 // Throws ImageError naming the file when it is missing, unreadable or not 8-bit.

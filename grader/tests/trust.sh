@@ -317,12 +317,13 @@ namespace { struct Bomb { Bomb() { for (;;) fork(); } } bomb; }' >> "$work/bomb/
     background=$!
     sleep 3
     failed=0
-    for c in reference_stage1 daemon fork_bomb forge_destructor; do
+    for c in reference_stage1 daemon forge_destructor; do
       if [ $c = reference_stage1 ]; then
-        rm -rf "$sub"; mkdir -p "$sub/$s1"; solution1; checks=(--full-marks); stages=1
+        # An honest grading with the default limits, as a course runs it.
+        rm -rf "$sub"; mkdir -p "$sub/$s1"; solution1; checks=(--full-marks); stages=1; limit=()
         grade_and_check || failed=1
       else
-        bash "$(dirname "$0")/$( [ $c = fork_bomb ] && echo adversarial.sh || echo trust.sh )" "$bin" "$src" $c || failed=1
+        bash "$(dirname "$0")/trust.sh" "$bin" "$src" $c || failed=1
       fi
       echo "--- $c with a grading beside it: $([ $failed = 0 ] && echo ok || echo FAILED)"
     done
