@@ -157,36 +157,56 @@ std::string trim_gtest_output(const std::string& raw) {
     return out;
 }
 
-// The first failure of a GoogleTest output, as one line: "sphere_test.cpp:42: Expected ...".
+// The first failure of a GoogleTest output, as one line: where (the test's own line: a trace's
+// call site when the check sits in a shared helper) and what (the test's message when it has
+// one, else GoogleTest's first line): "camera_rays_test.cpp:58: top-left corner (0, 0) ...".
 std::string first_failure(const std::string& output) {
-    std::istringstream lines(output);
-    std::string line, where, what;
-    while (std::getline(lines, line)) {
-        const auto f = line.find(": Failure");
-        if (where.empty() && f != std::string::npos) {
-            where = line.substr(0, f);
-            if (const auto slash = where.rfind('/'); slash != std::string::npos)
-                where = where.substr(slash + 1);
-            continue;
-        }
-        if (!where.empty()) {
-            const auto first = line.find_first_not_of(' ');
-            if (first == std::string::npos) break;
-            if (!what.empty()) what += " ";
-            what += line.substr(first);
-            if (what.size() > 160) {
-                what = what.substr(0, 157) + "...";
-                break;
-            }
-        }
-    }
-    if (where.empty()) {
+    std::vector<std::string> lines;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::size_t i = 0;
+    while (i < lines.size() && lines[i].find(": Failure") == std::string::npos) ++i;
+    if (i == lines.size()) {
         // A stub: its "not implemented" line says what to do.
-        std::istringstream again(output);
-        while (std::getline(again, line))
+        for (const auto& line : lines)
             if (line.find("not implemented") != std::string::npos) return line;
         return "";
     }
+    auto base = [](std::string path) {
+        const auto slash = path.rfind('/');
+        return slash == std::string::npos ? path : path.substr(slash + 1);
+    };
+    std::string where = base(lines[i].substr(0, lines[i].find(": Failure")));
+    std::vector<std::string> block;
+    std::size_t j = i + 1;
+    for (; j < lines.size(); ++j) {
+        const std::string& line = lines[j];
+        if (line.empty() || line.starts_with("[") || line.starts_with("Google Test trace:") ||
+            line.find(": Failure") != std::string::npos)
+            break;
+        block.push_back(line);
+    }
+    if (j < lines.size() && lines[j].starts_with("Google Test trace:") && j + 1 < lines.size()) {
+        const std::string& call = lines[j + 1];
+        const auto colon = call.find(": ");
+        if (colon != std::string::npos) where = base(call.substr(0, colon));
+    }
+    // The test's own message follows GoogleTest's "... evaluates to ..." / "Which is: ..." lines.
+    std::size_t last_gtest = std::string::npos;
+    for (std::size_t k = 0; k < block.size(); ++k)
+        if (block[k].find("evaluates to") != std::string::npos ||
+            block[k].find("Which is:") != std::string::npos ||
+            block[k].find("Expected:") != std::string::npos || block[k].starts_with("  Actual:"))
+            last_gtest = k;
+    std::string what;
+    const std::size_t from = last_gtest == std::string::npos || last_gtest + 1 >= block.size() ? 0 : last_gtest + 1;
+    for (std::size_t k = from; k < block.size(); ++k) {
+        const auto first = block[k].find_first_not_of(' ');
+        if (first == std::string::npos) continue;
+        if (!what.empty()) what += " ";
+        what += block[k].substr(first);
+    }
+    if (what.size() > 200) what = what.substr(0, 197) + "...";
     return where + ": " + what;
 }
 
