@@ -28,6 +28,7 @@
 #include "intake.h"
 #include "sandbox.h"
 #include "util.h"
+#include "test_output.h"
 #include "verdict_channel.h"
 #include "workspace.h"
 
@@ -37,84 +38,6 @@ using json = nlohmann::json;
 namespace rt::grader {
 
 std::atomic<bool> g_interrupted{false};
-
-namespace {
-
-// ---------------------------------------------------------------- grading specs
-
-ImageThresholds parse_thresholds(const json& j, ImageThresholds t) {
-    t.tolerance = j.value("tolerance", t.tolerance);
-    t.pass_percent = j.value("pass_percent", t.pass_percent);
-    t.fail_percent = j.value("fail_percent", t.fail_percent);
-    t.neighbourhood = j.value("neighbourhood", t.neighbourhood);
-    return t;
-}
-
-void check_visibility(const std::string& v, const fs::path& file) {
-    if (v != "visible" && v != "hidden" && v != "after_due_date" && v != "after_published")
-        throw std::runtime_error(file.string() + ": visibility \"" + v +
-                                 "\" is not one of visible, hidden, after_due_date, after_published");
-}
-
-}  // namespace
-
-std::vector<StageSpec> load_stage_specs(const fs::path& source) {
-    std::vector<StageSpec> specs;
-    std::vector<fs::path> folders;
-    for (const auto& entry : fs::directory_iterator(source / "stages"))
-        if (entry.is_directory() && fs::exists(entry.path() / "grading.json"))
-            folders.push_back(entry.path());
-    std::sort(folders.begin(), folders.end());
-    for (const auto& folder : folders) {
-        const fs::path file = folder / "grading.json";
-        try {
-            const json stage = json::parse(read_text(folder / "stage.json"));
-            const json g = json::parse(read_text(file));
-            StageSpec s;
-            s.number = stage.at("number").get<int>();
-            s.folder = "stages/" + folder.filename().string();
-            s.title = stage.value("title", folder.filename().string());
-            s.student_files = stage.at("student_files").get<std::vector<std::string>>();
-            s.test_seconds = g.value("test_seconds", s.test_seconds);
-            s.render_seconds = g.value("render_seconds", s.render_seconds);
-            const ImageThresholds defaults =
-                parse_thresholds(g.value("image_defaults", json::object()), ImageThresholds{});
-            for (const json& u : g.value("unit_tests", json::array())) {
-                UnitGroup group;
-                group.binary = u.at("binary").get<std::string>();
-                group.include = u.value("include", group.include);
-                group.exclude = u.value("exclude", group.exclude);
-                group.hidden_sources = u.value("hidden_sources", group.hidden_sources);
-                group.points = u.value("points", group.points);
-                group.visibility = u.value("visibility", group.visibility);
-                check_visibility(group.visibility, file);
-                bool present = true;
-                for (const auto& h : group.hidden_sources) {
-                    if (!h.starts_with("hidden/"))
-                        throw std::runtime_error(file.string() + ": hidden source " + h +
-                                                 " must lie in the stage's hidden/ folder");
-                    present = present && fs::is_regular_file(folder / h);
-                }
-                // A released starter tree has no hidden/ folder: students grading themselves
-                // simply do not get those tests.
-                if (present) s.groups.push_back(group);
-            }
-            for (const json& sc : g.value("scenes", json::array())) {
-                SceneSpec scene;
-                scene.name = sc.at("name").get<std::string>();
-                scene.points = sc.value("points", scene.points);
-                scene.visibility = sc.value("visibility", scene.visibility);
-                check_visibility(scene.visibility, file);
-                scene.thresholds = parse_thresholds(sc, defaults);
-                s.scenes.push_back(scene);
-            }
-            specs.push_back(std::move(s));
-        } catch (const json::exception& e) {
-            throw std::runtime_error(file.string() + ": " + e.what());
-        }
-    }
-    return specs;
-}
 
 namespace {
 
@@ -130,107 +53,6 @@ struct TestOutcome {
     std::string student_png, reference_png, diff_png;
     std::string metrics;
 };
-
-std::vector<std::string> handout_hints(const std::string& output) {
-    std::vector<std::string> hints;
-    static const std::regex read(R"(read (stages/[^\s;]+\.md#[A-Za-z0-9_-]+))");
-    for (auto it = std::sregex_iterator(output.begin(), output.end(), read);
-         it != std::sregex_iterator(); ++it)
-        if (std::find(hints.begin(), hints.end(), (*it)[1].str()) == hints.end())
-            hints.push_back((*it)[1].str());
-    return hints;
-}
-
-std::string trim_gtest_output(const std::string& raw) {
-    std::string out;
-    std::istringstream lines(clean_output(raw));
-    std::string line;
-    while (std::getline(lines, line)) {
-        if (line.starts_with("Running main()") || line.starts_with("Note: Google Test filter") ||
-            line.starts_with("[==========]") || line.starts_with("[----------]") ||
-            line.starts_with("[  PASSED  ]") || line.starts_with(" 1 FAILED TEST") ||
-            line.starts_with("[ RUN      ]") || line.starts_with("[       OK ]"))
-            continue;
-        out += line + "\n";
-    }
-    if (out.size() > 4000) out = out.substr(0, 4000) + "\n[... output truncated]\n";
-    return out;
-}
-
-// The first failure of a GoogleTest output, as one line: where (the test's own line: a trace's
-// call site when the check sits in a shared helper) and what (the test's message when it has
-// one, else GoogleTest's first line): "camera_rays_test.cpp:58: top-left corner (0, 0) ...".
-std::string first_failure(const std::string& output) {
-    std::vector<std::string> lines;
-    std::istringstream in(output);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    std::size_t i = 0;
-    while (i < lines.size() && lines[i].find(": Failure") == std::string::npos) ++i;
-    if (i == lines.size()) {
-        // A stub: its "not implemented" line says what to do.
-        for (const auto& line : lines)
-            if (line.find("not implemented") != std::string::npos) return line;
-        return "";
-    }
-    auto base = [](std::string path) {
-        const auto slash = path.rfind('/');
-        return slash == std::string::npos ? path : path.substr(slash + 1);
-    };
-    std::string where = base(lines[i].substr(0, lines[i].find(": Failure")));
-    std::vector<std::string> block;
-    std::size_t j = i + 1;
-    for (; j < lines.size(); ++j) {
-        const std::string& line = lines[j];
-        if (line.empty() || line.starts_with("[") || line.starts_with("Google Test trace:") ||
-            line.find(": Failure") != std::string::npos)
-            break;
-        block.push_back(line);
-    }
-    if (j < lines.size() && lines[j].starts_with("Google Test trace:") && j + 1 < lines.size()) {
-        const std::string& call = lines[j + 1];
-        const auto colon = call.find(": ");
-        if (colon != std::string::npos) where = base(call.substr(0, colon));
-    }
-    // The test's own message follows GoogleTest's "... evaluates to ..." / "Which is: ..." lines.
-    std::size_t last_gtest = std::string::npos;
-    for (std::size_t k = 0; k < block.size(); ++k)
-        if (block[k].find("evaluates to") != std::string::npos ||
-            block[k].find("Which is:") != std::string::npos ||
-            block[k].find("Expected:") != std::string::npos || block[k].starts_with("  Actual:"))
-            last_gtest = k;
-    std::string what;
-    const std::size_t from = last_gtest == std::string::npos || last_gtest + 1 >= block.size() ? 0 : last_gtest + 1;
-    for (std::size_t k = from; k < block.size(); ++k) {
-        const auto first = block[k].find_first_not_of(' ');
-        if (first == std::string::npos) continue;
-        if (!what.empty()) what += " ";
-        what += block[k].substr(first);
-    }
-    if (what.size() > 200) what = what.substr(0, 197) + "...";
-    return where + ": " + what;
-}
-
-// The compiler's output from its first error on (warnings before it would bury it), with the
-// "In function" line that names where it is.
-std::string first_errors(const std::string& log) {
-    std::vector<std::string> lines;
-    std::istringstream in(log);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    std::size_t first = 0;
-    while (first < lines.size() && lines[first].find("error") == std::string::npos) ++first;
-    if (first == lines.size()) first = 0;
-    std::size_t from = first;
-    for (std::size_t i = first; i-- > 0;)
-        if (lines[i].find("In function") != std::string::npos || lines[i].find("In member function") != std::string::npos) {
-            from = i;
-            break;
-        } else if (lines[i].find("warning:") != std::string::npos) {
-            break;
-        }
-    std::string out;
-    for (std::size_t i = from; i < lines.size() && i < from + 40; ++i) out += lines[i] + "\n";
-    return out;
-}
 
 // A file the child wrote, copied out through a descriptor that refuses symlinks, fifos and
 // devices: the child owned the folder and could have planted anything there.
@@ -296,60 +118,6 @@ double unseen_yaw(const std::string& secret, const std::string& digest, const st
 }
 
 }  // namespace
-
-
-// Reads the child's EXR after it has exited. NaN or Inf pixels fail the image.
-bool read_render(const fs::path& file, Image& image, std::string& why) {
-    std::error_code ec;
-    const auto st = fs::symlink_status(file, ec);
-    if (ec || !fs::is_regular_file(st)) {
-        why = "the renderer wrote no image";
-        return false;
-    }
-    try {
-        image = read_image(file, Encoding::Data);  // the renderer writes linear EXR
-    } catch (const ImageError& e) {
-        // The message names the grader's copy; the student needs only what is wrong with it.
-        const std::string text = e.what();
-        const auto at = text.find("error: ");
-        why = "the rendered image: " + (at == std::string::npos ? text : text.substr(at + 7));
-        return false;
-    }
-    if (image.width > 8192 || image.height > 8192) {
-        why = "the rendered image has an impossible size";
-        return false;
-    }
-    return true;
-}
-
-
-ImageScore score_image(const Image8& actual, const Image8& reference, const ImageThresholds& th) {
-    ImageScore score;
-    CompareOptions co;
-    co.tolerance = th.tolerance;
-    co.max_failing_percent = th.pass_percent;
-    co.neighbourhood = th.neighbourhood;
-    score.compare = compare_images(actual, reference, co);
-    if (!score.compare.size_matches) {
-        score.metrics = "the image is " + std::to_string(actual.width) + "x" +
-                        std::to_string(actual.height) + ", the reference " +
-                        std::to_string(reference.width) + "x" + std::to_string(reference.height);
-        return score;
-    }
-    const double failing = score.compare.failing_percent;
-    if (failing <= th.pass_percent) score.fraction = 1;
-    else if (failing < th.fail_percent)
-        score.fraction = (th.fail_percent - failing) / (th.fail_percent - th.pass_percent);
-    score.ssim = ssim_luminance(actual, reference);
-    char line[400];
-    std::snprintf(line, sizeof line,
-                  "%.3f%% of the pixels differ by more than %d (full points up to %.2f%%, none "
-                  "from %.2f%%); max difference %d; SSIM %.4f (reported, not graded)",
-                  failing, th.tolerance, th.pass_percent, th.fail_percent,
-                  score.compare.max_difference, score.ssim);
-    score.metrics = line;
-    return score;
-}
 
 
 namespace {
