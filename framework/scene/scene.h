@@ -1,6 +1,7 @@
 // A scene in flat arrays: one array per primitive kind, materials and lights referenced by index.
-// The layout maps one-to-one onto GLSL storage buffers for the GPU stage, so keep it flat:
-// no pointers, no virtual functions, no per-object heap allocations.
+// Keep it flat (no pointers, no virtual functions, no per-object heap allocations): the GPU stage
+// packs these arrays into std430 storage buffers with gpu::pack_scene (framework/gpu/gpu_scene.h,
+// the layout GLSL sees, checked against the driver by Framework.GpuLayout.*).
 // File format: docs/scene-format.md.
 #pragma once
 

@@ -1,0 +1,96 @@
+// The scene as the GPU stage binds it: one std430 storage buffer per array, every struct a
+// whole number of vec4s, floats even in the `double` preset. shaders/scene_layout.glsl declares
+// the same structs; Framework.GpuLayout.* compiles that file with the driver and compares its
+// offsets and strides with these, so the two sides cannot drift apart silently.
+//
+// Integers that share a vec4 with floats (material indices, light kinds) are stored as their
+// bit patterns (GLSL: floatBitsToInt). Host code writes them with int_bits.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace rt::gpu {
+
+// Storage-buffer bindings of the packed scene (the same numbers as in scene_layout.glsl).
+enum Binding : int {
+    kSpheres = 0, kPlanes = 1, kBoxes = 2, kTriangles = 3, kPositions = 4, kNormals = 5,
+    kUvs = 6, kMaterials = 7, kLights = 8, kBvhNodes = 9, kBvhPrimitives = 10,
+};
+
+struct alignas(16) GpuSphere {
+    glm::vec4 center_radius;  // xyz centre, w radius
+    glm::ivec4 material;      // x material index
+};
+struct alignas(16) GpuPlane {
+    glm::vec4 point_material;  // xyz a point, w material (int bits)
+    glm::vec4 normal;          // xyz unit normal
+};
+struct alignas(16) GpuBox {
+    glm::vec4 min_material;  // xyz corner, w material (int bits)
+    glm::vec4 max;
+};
+struct alignas(16) GpuTriangle {
+    glm::uvec4 vertices_material;  // xyz vertex indices, w material
+};
+struct alignas(16) GpuMaterial {
+    glm::vec4 ambient;
+    glm::vec4 diffuse;
+    glm::vec4 specular_shininess;  // xyz k_s, w n_s
+    glm::vec4 emissive;
+    glm::vec4 reflective;
+    glm::vec4 transmissive_ior;    // xyz k_t, w index of refraction
+};
+struct alignas(16) GpuLight {
+    glm::vec4 position_kind;  // xyz position, w kind (int bits: 0 point, 1 directional)
+    glm::vec4 direction;
+    glm::vec4 intensity;
+    glm::vec4 attenuation;
+};
+// BvhNode (accel/bvh.h) goes as it is: {vec3 min; uint first; vec3 max; uint count}.
+
+#define RT_GPU_CHECK(T, size)                                                      \
+    static_assert(sizeof(T) == (size), #T " must stay " #size " bytes (std430)"); \
+    static_assert(std::is_trivially_copyable_v<T>, #T " must be trivially copyable")
+RT_GPU_CHECK(GpuSphere, 32);
+RT_GPU_CHECK(GpuPlane, 32);
+RT_GPU_CHECK(GpuBox, 32);
+RT_GPU_CHECK(GpuTriangle, 16);
+RT_GPU_CHECK(GpuMaterial, 96);
+RT_GPU_CHECK(GpuLight, 64);
+RT_GPU_CHECK(BvhNode, 32);
+static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::vec2) == 8, "GLSL vec4 / vec2 sizes");
+static_assert(offsetof(BvhNode, first) == 12 && offsetof(BvhNode, max) == 16 &&
+                  offsetof(BvhNode, count) == 28,
+              "BvhNode must match GLSL {vec3 min; uint first; vec3 max; uint count}");
+#undef RT_GPU_CHECK
+
+inline float int_bits(int value) {
+    float f;
+    std::memcpy(&f, &value, sizeof f);
+    return f;
+}
+
+struct GpuScene {
+    std::vector<GpuSphere> spheres;
+    std::vector<GpuPlane> planes;
+    std::vector<GpuBox> boxes;
+    std::vector<GpuTriangle> triangles;
+    std::vector<glm::vec4> positions, normals;  // normals: w 0; empty when the scene has none
+    std::vector<glm::vec2> uvs;                 // empty when the scene has none
+    std::vector<GpuMaterial> materials;
+    std::vector<GpuLight> lights;
+    std::vector<BvhNode> bvh_nodes;
+    std::vector<std::uint32_t> bvh_primitives;
+};
+
+// Every array of `scene`, converted to float and packed as above.
+GpuScene pack_scene(const Scene& scene);
+
+}  // namespace rt::gpu

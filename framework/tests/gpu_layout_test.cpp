@@ -1,0 +1,148 @@
+// The packed scene's C++ structs (framework/gpu/gpu_scene.h) against the GLSL declarations in
+// shaders/scene_layout.glsl, as the driver lays them out: every member's offset and every
+// array's stride, read with glGetProgramResourceiv from a compiled compute shader.
+#include <gtest/gtest.h>
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gl/egl_context.h"
+#include "gpu/gpu_scene.h"
+
+namespace rt::gpu {
+namespace {
+
+struct Member {
+    const char* name;  // a buffer variable, as GL names it
+    std::size_t offset, stride;
+    const char* use;   // GLSL that reads it into `acc` (so the compiler keeps it)
+};
+
+#define RT_MEMBER(T, glsl_array, field, use) \
+    Member{glsl_array "[0]." #field, offsetof(T, field), sizeof(T), use}
+
+const std::vector<Member>& members() {
+    static const std::vector<Member> list = {
+        RT_MEMBER(GpuSphere, "spheres", center_radius, "acc += spheres[0].center_radius;"),
+        RT_MEMBER(GpuSphere, "spheres", material, "acc += vec4(spheres[0].material);"),
+        RT_MEMBER(GpuPlane, "planes", point_material, "acc += planes[0].point_material;"),
+        RT_MEMBER(GpuPlane, "planes", normal, "acc += planes[0].normal;"),
+        RT_MEMBER(GpuBox, "boxes", min_material, "acc += boxes[0].min_material;"),
+        RT_MEMBER(GpuBox, "boxes", max, "acc += boxes[0].max;"),
+        RT_MEMBER(GpuTriangle, "triangles", vertices_material, "acc += vec4(triangles[0].vertices_material);"),
+        RT_MEMBER(GpuMaterial, "materials", ambient, "acc += materials[0].ambient;"),
+        RT_MEMBER(GpuMaterial, "materials", diffuse, "acc += materials[0].diffuse;"),
+        RT_MEMBER(GpuMaterial, "materials", specular_shininess, "acc += materials[0].specular_shininess;"),
+        RT_MEMBER(GpuMaterial, "materials", emissive, "acc += materials[0].emissive;"),
+        RT_MEMBER(GpuMaterial, "materials", reflective, "acc += materials[0].reflective;"),
+        RT_MEMBER(GpuMaterial, "materials", transmissive_ior, "acc += materials[0].transmissive_ior;"),
+        RT_MEMBER(GpuLight, "lights", position_kind, "acc += lights[0].position_kind;"),
+        RT_MEMBER(GpuLight, "lights", direction, "acc += lights[0].direction;"),
+        RT_MEMBER(GpuLight, "lights", intensity, "acc += lights[0].intensity;"),
+        RT_MEMBER(GpuLight, "lights", attenuation, "acc += lights[0].attenuation;"),
+        RT_MEMBER(BvhNode, "bvh_nodes", min, "acc.xyz += bvh_nodes[0].min;"),
+        RT_MEMBER(BvhNode, "bvh_nodes", first, "acc.x += float(bvh_nodes[0].first);"),
+        RT_MEMBER(BvhNode, "bvh_nodes", max, "acc.xyz += bvh_nodes[0].max;"),
+        RT_MEMBER(BvhNode, "bvh_nodes", count, "acc.x += float(bvh_nodes[0].count);"),
+        Member{"positions[0]", 0, sizeof(glm::vec4), "acc += positions[0];"},
+        Member{"normals[0]", 0, sizeof(glm::vec4), "acc += normals[0];"},
+        Member{"uvs[0]", 0, sizeof(glm::vec2), "acc.xy += uvs[0];"},
+        Member{"bvh_primitives[0]", 0, sizeof(std::uint32_t), "acc.x += float(bvh_primitives[0]);"},
+    };
+    return list;
+}
+#undef RT_MEMBER
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Compiles and links the layout into a compute shader; "" on success, else the driver's log.
+std::string build_program(GLuint& program) {
+    std::string source = "#version 430\nlayout(local_size_x = 1) in;\n" +
+                         read_file(RT_SOURCE_DIR "/shaders/scene_layout.glsl") +
+                         "layout(std430, binding = 15) writeonly buffer Out { vec4 result; };\n"
+                         "void main() {\n    vec4 acc = vec4(0);\n";
+    for (const Member& m : members()) source += std::string("    ") + m.use + "\n";
+    source += "    result = acc;\n}\n";
+    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    char log[4096] = {};
+    if (!ok) {
+        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+        return std::string("compile: ") + log;
+    }
+    program = glCreateProgram();
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        glGetProgramInfoLog(program, sizeof log, nullptr, log);
+        return std::string("link: ") + log;
+    }
+    return "";
+}
+
+TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
+    EglContext gl;
+    ASSERT_TRUE(gl.ok()) << gl.error();
+    GLuint program = 0;
+    const std::string problem = build_program(program);
+    ASSERT_EQ(problem, "") << "shaders/scene_layout.glsl does not build";
+    for (const Member& m : members()) {
+        const GLuint index = glGetProgramResourceIndex(program, GL_BUFFER_VARIABLE, m.name);
+        ASSERT_NE(index, GL_INVALID_INDEX) << m.name << " is not an active buffer variable";
+        // Arrays of structs have a top-level stride; a plain array (positions[]) its own.
+        const GLenum properties[] = {GL_OFFSET, GL_TOP_LEVEL_ARRAY_STRIDE, GL_ARRAY_STRIDE};
+        GLint values[3] = {-1, -1, -1};
+        glGetProgramResourceiv(program, GL_BUFFER_VARIABLE, index, 3, properties, 3, nullptr, values);
+        if (values[1] == 0) values[1] = values[2];
+        EXPECT_EQ(std::size_t(values[0]), m.offset)
+            << m.name << ": GLSL puts it at byte " << values[0] << ", the C++ struct at " << m.offset
+            << " (change framework/gpu/gpu_scene.h and shaders/scene_layout.glsl together)";
+        EXPECT_EQ(std::size_t(values[1]), m.stride)
+            << m.name << ": GLSL's array stride is " << values[1] << ", sizeof in C++ " << m.stride;
+    }
+    glDeleteProgram(program);
+}
+
+TEST(GpuLayout, PackKeepsEveryValue) {
+    Scene scene;
+    scene.spheres.push_back(Sphere{Vec3(1, 2, 3), Real(0.5), 2});
+    scene.planes.push_back(Plane{Vec3(0, -1, 0), Vec3(0, 1, 0), 1});
+    scene.boxes.push_back(Box{Vec3(-1), Vec3(1), 3});
+    scene.vertices = {Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    scene.triangles.push_back(Triangle{{0, 1, 2}, 4});
+    Material m;
+    m.specular = Color(0.25f), m.shininess = 64, m.transmissive = Color(0.5f), m.ior = 1.33f;
+    scene.materials.push_back(m);
+    Light l;
+    l.kind = LightKind::Directional, l.direction = Vec3(0, -1, 0), l.intensity = Color(2);
+    scene.lights.push_back(l);
+    const GpuScene g = pack_scene(scene);
+    EXPECT_EQ(g.spheres[0].center_radius, glm::vec4(1, 2, 3, 0.5f));
+    EXPECT_EQ(g.spheres[0].material.x, 2);
+    EXPECT_EQ(g.planes[0].point_material.w, int_bits(1));
+    EXPECT_EQ(g.boxes[0].min_material.w, int_bits(3));
+    EXPECT_EQ(g.triangles[0].vertices_material, glm::uvec4(0, 1, 2, 4));
+    EXPECT_EQ(g.positions[2], glm::vec4(0, 1, 0, 1));
+    EXPECT_EQ(g.materials[0].specular_shininess, glm::vec4(0.25f, 0.25f, 0.25f, 64));
+    EXPECT_EQ(g.materials[0].transmissive_ior.w, 1.33f);
+    EXPECT_EQ(g.lights[0].position_kind.w, int_bits(1));
+    EXPECT_EQ(g.lights[0].intensity, glm::vec4(2, 2, 2, 0));
+}
+
+}  // namespace
+}  // namespace rt::gpu

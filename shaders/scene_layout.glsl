@@ -1,0 +1,31 @@
+// The packed scene's structs and storage buffers (std430). The C++ side is
+// framework/gpu/gpu_scene.h; Framework.GpuLayout.* checks the two against each other with the
+// driver's own offsets, so change both together.
+// Integers stored in a float's bits (materials, light kinds): floatBitsToInt(x).
+
+struct Sphere { vec4 center_radius; ivec4 material; };
+struct Plane { vec4 point_material; vec4 normal; };
+struct Box { vec4 min_material; vec4 max; };
+struct Triangle { uvec4 vertices_material; };
+struct Material {
+    vec4 ambient;
+    vec4 diffuse;
+    vec4 specular_shininess;
+    vec4 emissive;
+    vec4 reflective;
+    vec4 transmissive_ior;
+};
+struct Light { vec4 position_kind; vec4 direction; vec4 intensity; vec4 attenuation; };
+struct BvhNode { vec3 min; uint first; vec3 max; uint count; };
+
+layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres[]; };
+layout(std430, binding = 1) readonly buffer Planes { Plane planes[]; };
+layout(std430, binding = 2) readonly buffer Boxes { Box boxes[]; };
+layout(std430, binding = 3) readonly buffer Triangles { Triangle triangles[]; };
+layout(std430, binding = 4) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = 5) readonly buffer Normals { vec4 normals[]; };
+layout(std430, binding = 6) readonly buffer Uvs { vec2 uvs[]; };
+layout(std430, binding = 7) readonly buffer Materials { Material materials[]; };
+layout(std430, binding = 8) readonly buffer Lights { Light lights[]; };
+layout(std430, binding = 9) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+layout(std430, binding = 10) readonly buffer BvhPrimitives { uint bvh_primitives[]; };
