@@ -63,6 +63,9 @@ bool lease_uid(UidLease& lease) {
         const int k = (start + i) % kUidCount;
         const uid_t uid = kUidBase + uid_t(k);
         if (getpwuid(uid) != nullptr) continue;  // a real account: never
+        // Any task of the uid (zombies too: they count against RLIMIT_NPROC) means an earlier
+        // run left something behind that nobody reaped: a fresh uid is better.
+        if (count_processes_of(uid, true) > 0) continue;
         const std::string name = std::to_string(k) + ".lock";
         const int fd = openat(dfd, name.c_str(), O_CREAT | O_RDWR | O_NOFOLLOW | O_CLOEXEC, 0600);
         if (fd < 0) continue;
@@ -311,7 +314,7 @@ std::string read_capped(int fd, long long cap, bool& truncated) {
 
 }  // namespace
 
-int count_processes_of(uid_t uid) {
+int count_processes_of(uid_t uid, bool zombies_too) {
     int count = 0;
     DIR* proc = opendir("/proc");
     if (!proc) return 0;
@@ -325,7 +328,8 @@ int count_processes_of(uid_t uid) {
         std::string text;
         std::getline(stat_file, text);
         const auto close = text.rfind(')');
-        if (close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z') continue;
+        if (!zombies_too && close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z')
+            continue;
         ++count;
     }
     closedir(proc);
@@ -436,6 +440,10 @@ RunResult run_sandboxed(const RunSpec& spec) {
         const pid_t init = fork();
         if (init == 0) {
             prctl(PR_SET_PDEATHSIG, SIGKILL);
+            // Without a PID namespace, orphans (daemons) are adopted here rather than by the
+            // machine's init, which may never reap them: reaped zombies do not pile up against the
+            // uid's RLIMIT_NPROC.
+            if (isolation != Isolation::Namespaces) prctl(PR_SET_CHILD_SUBREAPER, 1);
             if (isolation == Isolation::Namespaces)
                 mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
             const pid_t program = fork();
@@ -451,6 +459,15 @@ RunResult run_sandboxed(const RunSpec& spec) {
             while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
             }
             if (write(status_pipe[1], &status, sizeof status) != sizeof status) _exit(1);
+            if (isolation != Isolation::Namespaces && lease.uid != 0) {
+                // Kill what the program left running (as its uid: nothing else can be hit), then
+                // reap every adopted orphan.
+                if (setresgid(lease.uid, lease.uid, lease.uid) == 0 &&
+                    setresuid(lease.uid, lease.uid, lease.uid) == 0)
+                    kill(-1, SIGKILL);
+                while (waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
+                }
+            }
             _exit(0);  // as PID 1 of the namespace, this kills every leftover process
         }
         int status = 0;

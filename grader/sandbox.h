@@ -83,7 +83,7 @@ Isolation probe_isolation();
 
 RunResult run_sandboxed(const RunSpec& spec);
 
-// Processes currently running under `uid` (from /proc).
-int count_processes_of(uid_t uid);
+// Processes currently running under `uid` (from /proc); zombies only when asked.
+int count_processes_of(uid_t uid, bool zombies_too = false);
 
 }  // namespace rt::grader
