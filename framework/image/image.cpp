@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <memory>
 
 namespace rt {
 
@@ -80,17 +81,28 @@ void write_image8(const Image8& image, const std::filesystem::path& file) {
     write_pixels(file, image.width, image.height, OIIO::TypeDesc::UINT8, image.data.data(), false);
 }
 
-Image8 read_image8(const std::filesystem::path& file) {
+namespace {
+
+// Opens an image for reading, or throws the ImageError naming the file and what to check.
+std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& file, const char* hint) {
     if (!std::filesystem::is_regular_file(file))
         throw ImageError(file.string() + ": error: no such image file; check the path");
     auto in = OIIO::ImageInput::open(file.string());
     if (!in)
         throw ImageError(file.string() + ": error: cannot read image (" + one_line(OIIO::geterror()) +
-                         "); is it a PNG?");
+                         "); " + hint);
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 ||
         spec.nchannels < 1 || spec.nchannels > 4)
         throw ImageError(file.string() + ": error: unsupported size or channel count");
+    return in;
+}
+
+}  // namespace
+
+Image8 read_image8(const std::filesystem::path& file) {
+    auto in = open_image(file, "is it a PNG?");
+    const OIIO::ImageSpec& spec = in->spec();
     const int channels = spec.nchannels;
     std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
@@ -103,16 +115,8 @@ Image8 read_image8(const std::filesystem::path& file) {
 }
 
 Image read_image(const std::filesystem::path& file, Encoding integer_encoding) {
-    if (!std::filesystem::is_regular_file(file))
-        throw ImageError(file.string() + ": error: no such image file; check the path");
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in)
-        throw ImageError(file.string() + ": error: cannot read image (" + one_line(OIIO::geterror()) +
-                         "); is it an EXR, HDR, PNG or JPEG?");
+    auto in = open_image(file, "is it an EXR, HDR, PNG or JPEG?");
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 ||
-        spec.nchannels < 1 || spec.nchannels > 4)
-        throw ImageError(file.string() + ": error: unsupported size or channel count");
     const int channels = spec.nchannels;
     std::vector<float> raw(std::size_t(spec.width) * spec.height * channels);
     // OpenImageIO scales integer formats to [0, 1] when reading them as float.
