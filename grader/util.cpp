@@ -1,5 +1,6 @@
 #include "util.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -43,6 +44,31 @@ std::string shell_quote(const std::string& word) {
         else out += c;
     }
     return out + "'";
+}
+
+// Runs argv without a shell; output and error in `output`.
+int run_argv(const std::vector<std::string>& argv, const fs::path& cwd, std::string& output) {
+    int p[2];
+    if (pipe2(p, O_CLOEXEC) != 0) return -1;
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(p[1], 1);
+        dup2(p[1], 2);
+        if (chdir(cwd.c_str()) != 0) _exit(126);
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    close(p[1]);
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(p[0], buffer, sizeof buffer)) > 0) output.append(buffer, std::size_t(n));
+    close(p[0]);
+    int status = 0;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 int run_trusted(const std::string& command, std::string* output) {

@@ -19,6 +19,9 @@ void write_atomically(const std::filesystem::path& file, std::string_view text);
 std::string shell_quote(const std::string& word);
 // Runs a trusted command line through /bin/sh; returns its exit code, output in `output`.
 int run_trusted(const std::string& command, std::string* output = nullptr);
+// Runs argv (argv[0] an absolute path) in `cwd` without a shell; stdout and stderr in `output`.
+int run_argv(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
+             std::string& output);
 
 std::uint64_t fnv1a(std::string_view data, std::uint64_t hash = 1469598103934665603ull);
 std::string hex(std::uint64_t value);
