@@ -6,7 +6,8 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake ninja-build pkg-config git
   libglm-dev                # vector math
-  libopenimageio-dev        # PNG / EXR in and out
+  libpng-dev libopenexr-dev # PNG and EXR in and out (fast process start)
+  libopenimageio-dev        # every other image format, loaded on first use
   nlohmann-json3-dev        # scene files
   libcli11-dev              # command lines
   libtinyobjloader-dev      # OBJ meshes
@@ -18,6 +19,7 @@ packages=(
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
   jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB
+  hyperfine                           # tools/bench_startup.sh: process start-up figures
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

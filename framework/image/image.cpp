@@ -1,9 +1,13 @@
 #include "image/image.h"
 
-#include <OpenImageIO/imageio.h>
-
+#include <algorithm>
 #include <cmath>
-#include <memory>
+#include <cstring>
+#include <fstream>
+
+#include "image/exr_file.h"
+#include "image/oiio_loader.h"
+#include "image/png_file.h"
 
 namespace rt {
 
@@ -29,28 +33,57 @@ Image8 to_image8(const Image& image) {
 
 namespace {
 
-// OpenImageIO's messages may span lines; errors here are one line.
-std::string one_line(std::string text) {
-    for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!text.empty() && text.back() == ' ') text.pop_back();
-    return text;
+namespace files = image_files;
+
+enum class Format { Png, Exr, Other };
+
+// By content, not by name: a renamed file is still read; a PNG or EXR name on other content is
+// reported as damaged rather than handed to OpenImageIO.
+Format format_of(const std::filesystem::path& file) {
+    if (!std::filesystem::is_regular_file(file))
+        throw ImageError(file.string() + ": error: no such image file; check the path");
+    unsigned char magic[8] = {};
+    std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(magic), sizeof magic);
+    static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static constexpr unsigned char kExr[4] = {0x76, 0x2f, 0x31, 0x01};
+    if (std::memcmp(magic, kPng, 8) == 0) return Format::Png;
+    if (std::memcmp(magic, kExr, 4) == 0) return Format::Exr;
+    const std::string ext = file.extension().string();
+    if (ext == ".png" || ext == ".exr")
+        throw ImageError(file.string() + ": error: not a " + ext.substr(1) +
+                         " file (its first bytes are wrong); the file is damaged or misnamed: "
+                         "re-export it");
+    return Format::Other;
 }
 
-void write_pixels(const std::filesystem::path& file, int width, int height, OIIO::TypeDesc type,
-                  const void* data, bool linear) {
-    auto out = OIIO::ImageOutput::create(file.string());
-    if (!out)
-        throw ImageError(file.string() + ": error: cannot write this image type (" +
-                         one_line(OIIO::geterror()) + "); use a .png or .exr file name");
-    OIIO::ImageSpec spec(width, height, 3, type);
-    spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
-    if (!out->open(file.string(), spec) || !out->write_image(type, data) || !out->close())
-        throw ImageError(file.string() + ": error: writing failed (" + one_line(out->geterror()) +
-                         "); check that the folder exists and is writable");
+files::DecodedImage decode(const std::filesystem::path& file) {
+    switch (format_of(file)) {
+        case Format::Png: return files::read_png(file);
+        case Format::Exr: return files::read_exr(file);
+        case Format::Other: break;
+    }
+    return files::read_with_oiio(file);
 }
 
 }  // namespace
+
+namespace image_files {
+
+std::string size_problem(const std::filesystem::path& file, std::int64_t width,
+                         std::int64_t height, int channels) {
+    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
+        width * height > kMaxPixels)
+        return file.string() + ": error: the image is " + std::to_string(width) + " x " +
+               std::to_string(height) + " pixels; images must be 1 to " +
+               std::to_string(kMaxSide) + " pixels a side and at most " +
+               std::to_string(kMaxPixels / 1'000'000) + " Mpixel: resize it";
+    if (channels < 1 || channels > 4)
+        return file.string() + ": error: the image has " + std::to_string(channels) +
+               " channels; use grey, grey + alpha, RGB or RGBA";
+    return "";
+}
+
+}  // namespace image_files
 
 void check_image_output(const std::filesystem::path& file) {
     const std::string ext = file.extension().string();
@@ -65,72 +98,42 @@ void check_image_output(const std::filesystem::path& file) {
 }
 
 void write_image(const Image& image, const std::filesystem::path& file) {
-    const std::string ext = file.extension().string();
-    if (ext == ".exr") {
-        write_pixels(file, image.width, image.height, OIIO::TypeDesc::FLOAT, image.pixels.data(),
-                     true);
-    } else if (ext == ".png") {
-        write_image8(to_image8(image), file);
-    } else {
-        throw ImageError(file.string() + ": error: unknown image extension \"" + ext +
-                         "\"; use .png (sRGB, 8-bit) or .exr (linear float)");
-    }
+    check_image_output(file);
+    if (file.extension() == ".exr")
+        files::write_exr(image, file);
+    else
+        files::write_png(to_image8(image), file);
 }
 
 void write_image8(const Image8& image, const std::filesystem::path& file) {
-    write_pixels(file, image.width, image.height, OIIO::TypeDesc::UINT8, image.data.data(), false);
+    files::write_png(image, file);
 }
-
-namespace {
-
-// Opens an image for reading, or throws the ImageError naming the file and what to check.
-std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& file, const char* hint) {
-    if (!std::filesystem::is_regular_file(file))
-        throw ImageError(file.string() + ": error: no such image file; check the path");
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in)
-        throw ImageError(file.string() + ": error: cannot read image (" + one_line(OIIO::geterror()) +
-                         "); " + hint);
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 ||
-        spec.nchannels < 1 || spec.nchannels > 4)
-        throw ImageError(file.string() + ": error: unsupported size or channel count");
-    return in;
-}
-
-}  // namespace
 
 Image8 read_image8(const std::filesystem::path& file) {
-    auto in = open_image(file, "is it a PNG?");
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
-        throw ImageError(file.string() + ": error: cannot decode image (" + one_line(in->geterror()) + ")");
-    Image8 out{spec.width, spec.height, std::vector<std::uint8_t>(std::size_t(spec.width) * spec.height * 3)};
-    for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
-        for (int c = 0; c < 3; ++c)
-            out.data[i * 3 + c] = raw[i * channels + (channels >= 3 ? c : 0)];
+    const files::DecodedImage in = decode(file);
+    const std::size_t count = std::size_t(in.width) * in.height;
+    Image8 out{in.width, in.height, std::vector<std::uint8_t>(count * 3)};
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const std::size_t at = i * std::size_t(in.channels) + (in.channels >= 3 ? c : 0);
+            // Exact for 8-bit files; other depths are rounded to the nearest 8-bit step.
+            out.data[i * 3 + c] = !in.bytes.empty()
+                                      ? in.bytes[at]
+                                      : std::uint8_t(std::lround(std::clamp(in.values[at], 0.0f, 1.0f) * 255));
+        }
     return out;
 }
 
 Image read_image(const std::filesystem::path& file, Encoding integer_encoding) {
-    auto in = open_image(file, "is it an EXR, HDR, PNG or JPEG?");
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    std::vector<float> raw(std::size_t(spec.width) * spec.height * channels);
-    // OpenImageIO scales integer formats to [0, 1] when reading them as float.
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data()))
-        throw ImageError(file.string() + ": error: cannot decode image (" + one_line(in->geterror()) + ")");
-    const bool floating = spec.format.is_floating_point();
-    const bool decode = !floating && integer_encoding == Encoding::Srgb;
-    Image out(spec.width, spec.height);
+    const files::DecodedImage in = decode(file);
+    const bool decode_srgb = !in.floating && integer_encoding == Encoding::Srgb;
+    Image out(in.width, in.height);
     std::size_t bad = 0;
     for (std::size_t i = 0; i < out.pixels.size(); ++i) {
         float v[3];
-        for (int c = 0; c < 3; ++c) {
-            const float x = raw[i * channels + (channels >= 3 ? c : 0)];
-            v[c] = decode ? srgb_to_linear(x) : x;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const float x = in.values[i * std::size_t(in.channels) + (in.channels >= 3 ? c : 0)];
+            v[c] = decode_srgb ? srgb_to_linear(x) : x;
         }
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) ++bad;
         out.pixels[i] = Color(v[0], v[1], v[2]);

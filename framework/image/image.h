@@ -1,5 +1,7 @@
 // Images: linear float RGB in memory; written as sRGB-encoded 8-bit PNG for viewing or as
-// linear EXR for data (docs/conventions.md#colour). Read back through OpenImageIO.
+// linear EXR for data (docs/conventions.md#colour). PNG and EXR are read and written by libpng
+// and OpenEXR; other formats are read by OpenImageIO, loaded only when one is met
+// (image/oiio_plugin.h says why).
 #pragma once
 
 #include <cstdint>
@@ -53,8 +55,9 @@ void write_image8(const Image8& image, const std::filesystem::path& file);
 // work is done (a long render must not end in "cannot write").
 void check_image_output(const std::filesystem::path& file);
 
-// Reads any 8-bit RGB or RGBA image OpenImageIO can (alpha is dropped; grey is expanded).
-// Throws ImageError naming the file when it is missing, unreadable or not 8-bit.
+// Reads any image read_image can, as 8-bit values: exact for 8-bit files, rounded from other
+// depths (alpha is dropped; grey is expanded). Throws ImageError naming the file when it is
+// missing or unreadable.
 Image8 read_image8(const std::filesystem::path& file);
 
 // How stored values map to linear light. Float files (EXR, HDR) are linear already; integer
@@ -62,7 +65,7 @@ Image8 read_image8(const std::filesystem::path& file);
 // maps, height maps): the caller says which (docs/conventions.md#colour).
 enum class Encoding { Srgb, Data };
 
-// Any image OpenImageIO reads (EXR, HDR, 8- or 16-bit PNG, JPEG), as linear float RGB (grey is
+// EXR, 8- or 16-bit PNG, and what OpenImageIO reads (HDR, JPEG, TIFF, ...), as linear float RGB (grey is
 // spread to three channels, alpha dropped). Throws ImageError naming the file for a missing or
 // unreadable file, an impossible size, or NaN/infinite pixels.
 Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb);

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/diagnostics.h"
+
 namespace rt {
 
 namespace {
@@ -21,13 +23,6 @@ namespace fs = std::filesystem;
 
 constexpr std::uintmax_t kMaxObjBytes = std::uintmax_t(2) << 30;  // 2 GiB
 constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;  // 64 MiB
-
-// Messages stay on one line whatever the file contained.
-std::string one_line(std::string message) {
-    for (char& c : message)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-    return message;
-}
 
 // Everything an ObjError says starts with the file and, where known, the line.
 [[noreturn]] void fail(const std::string& name, std::size_t line, const std::string& what,

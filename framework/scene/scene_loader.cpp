@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/diagnostics.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/json_positions.h"
 #include "scene/obj_loader.h"
@@ -36,13 +37,6 @@ constexpr std::size_t kMaxTriangles = 20'000'000;
 constexpr std::size_t kMaxSceneFileBytes = std::size_t(64) << 20;
 constexpr double kMaxCheckerTiles = 1024;  // per side of a "checkerboard"
 constexpr int kMaxNesting = 100;  // a scene needs 5 levels; this stops pathological input early
-
-// Messages stay on one line whatever the input contained.
-std::string one_line(std::string text) {
-    for (char& c : text)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-    return text;
-}
 
 // A string shown in a message: JSON-quoted (so odd characters are visible) and kept short.
 std::string quote(const std::string& s) {

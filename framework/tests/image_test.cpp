@@ -7,7 +7,8 @@
 #include "image/compare.h"
 #include "image/image.h"
 
-#include <OpenImageIO/imageio.h>
+#include <png.h>
+#include <zlib.h>
 
 namespace rt {
 namespace {
@@ -92,14 +93,14 @@ TEST(ImageFiles, IntegerImagesDecodeAsColourOrData) {
     EXPECT_FLOAT_EQ(data.at(1, 0).g, 0.0f);
     // 16-bit PNG: read at full precision (a data texture keeps 1/65535 steps).
     const auto wide = temp_file("wide.png");
-    {
-        auto out = OIIO::ImageOutput::create(wide.string());
-        ASSERT_TRUE(out);
-        OIIO::ImageSpec spec(2, 1, 1, OIIO::TypeDesc::UINT16);
-        const std::uint16_t px[2] = {1, 65535};
-        ASSERT_TRUE(out->open(wide.string(), spec));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, px));
-        out->close();
+    {  // written by libpng's own simplified API, independently of the reader under test
+        png_image out{};
+        out.version = PNG_IMAGE_VERSION;
+        out.width = 2;
+        out.height = 1;
+        out.format = PNG_FORMAT_LINEAR_Y;  // 16-bit grey
+        const png_uint_16 px[2] = {1, 65535};
+        ASSERT_TRUE(png_image_write_to_file(&out, wide.c_str(), 0, px, 0, nullptr)) << out.message;
     }
     const Image grey = read_image(wide, Encoding::Data);
     EXPECT_NEAR(grey.at(0, 0).r, 1 / 65535.0f, 1e-9f);
@@ -131,6 +132,69 @@ TEST(ImageFiles, ClearErrors) {
     } catch (const ImageError& e) {
         EXPECT_NE(std::string(e.what()).find("x.txt"), std::string::npos) << e.what();
     }
+}
+
+// A damaged or hostile header must not cost gigabytes: the size is refused before the pixels
+// are allocated, in one line naming the file.
+TEST(ImageFiles, HugePngHeaderIsRefusedBeforeDecoding) {
+    const auto file = temp_file("huge.png");
+    write_image8(gradient(4, 4), file);
+    std::string bytes;
+    {
+        std::ifstream in(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    // IHDR data starts at byte 16 (signature 8, length 4, type 4): width, height big-endian.
+    const std::uint32_t side = 100000;
+    for (int k = 0; k < 2; ++k)
+        for (int b = 0; b < 4; ++b) bytes[16 + 4 * k + b] = char((side >> (24 - 8 * b)) & 0xff);
+    const std::uint32_t crc = std::uint32_t(
+        crc32(0, reinterpret_cast<const unsigned char*>(bytes.data()) + 12, 4 + 13));
+    for (int b = 0; b < 4; ++b) bytes[29 + b] = char((crc >> (24 - 8 * b)) & 0xff);
+    std::ofstream(file, std::ios::binary) << bytes;
+    try {
+        read_image(file);
+        FAIL() << "a 100000 x 100000 header was accepted";
+    } catch (const ImageError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("huge.png: error: the image is 100000 x 100000 pixels"), std::string::npos)
+            << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+}
+
+TEST(ImageFiles, TruncatedPngNamesTheFile) {
+    const auto file = temp_file("truncated.png");
+    write_image8(gradient(64, 64), file);
+    std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+    try {
+        read_image8(file);
+        FAIL() << "a truncated PNG was read";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("truncated.png: error: cannot decode the PNG"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// Formats beyond PNG and EXR come through the OpenImageIO plug-in (image/oiio_plugin.h): here a
+// Radiance HDR file of two flat RGBE pixels, written byte by byte.
+TEST(ImageFiles, RadianceHdrIsReadThroughOpenImageIO) {
+    const auto file = temp_file("two.hdr");
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+        // RGBE: value = mantissa * 2^(exponent - 136).
+        const unsigned char pixels[8] = {128, 64, 32, 129, 128, 128, 128, 140};
+        out.write(reinterpret_cast<const char*>(pixels), sizeof pixels);
+    }
+    const Image image = read_image(file);  // float data: never sRGB-decoded
+    ASSERT_EQ(image.width, 2);
+    ASSERT_EQ(image.height, 1);
+    EXPECT_NEAR(image.at(0, 0).r, 1.0f, 0.01f);
+    EXPECT_NEAR(image.at(0, 0).g, 0.5f, 0.01f);
+    EXPECT_NEAR(image.at(0, 0).b, 0.25f, 0.01f);
+    EXPECT_NEAR(image.at(1, 0).g, 2048.0f, 20.0f);  // 128 * 2^4
 }
 
 TEST(Compare, IdenticalImagesMatch) {
