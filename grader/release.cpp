@@ -1,248 +1,22 @@
+// `rt-grade release`: writes a starter tree from the course tree (docs/release.md). The
+// marker logic it applies to each student file is in markers.cpp.
 #include "release.h"
 
 #include <algorithm>
-#include <cctype>
-#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
+
+#include "util.h"
 
 namespace fs = std::filesystem;
 
 namespace rt::grader {
 
 namespace {
-
-constexpr std::string_view kBegin = "// BEGIN SOLUTION";
-constexpr std::string_view kStub = "// STUB";
-constexpr std::string_view kEnd = "// END SOLUTION";
-
-bool is_blank(char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
-}
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-    while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-    return s;
-}
-
-// One line of a file: its content and its terminator ("\n", "\r\n" or "" on a last line
-// without newline), kept apart so rewriting a line never changes the file's line endings.
-struct Line {
-    std::string_view content;
-    std::string_view ending;
-};
-
-std::vector<Line> split_lines(std::string_view text) {
-    std::vector<Line> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t newline = text.find('\n', start);
-        std::size_t end = newline == std::string_view::npos ? text.size() : newline;
-        std::size_t content_end = end;
-        if (newline != std::string_view::npos && content_end > start &&
-            text[content_end - 1] == '\r')
-            --content_end;
-        std::size_t next = newline == std::string_view::npos ? text.size() : newline + 1;
-        lines.push_back({text.substr(start, content_end - start),
-                         text.substr(content_end, next - content_end)});
-        start = next;
-    }
-    return lines;
-}
-
-// "<indent>// code" -> "<indent>code": the stub was written as a comment so the solved tree
-// compiles; releasing it turns it back into code at the same indentation.
-std::string uncomment(std::string_view content) {
-    std::size_t indent = 0;
-    while (indent < content.size() && (content[indent] == ' ' || content[indent] == '\t')) ++indent;
-    std::string_view rest = content.substr(indent);
-    rest.remove_prefix(rest.starts_with("// ") ? 3 : 2);  // caller checked it starts with "//"
-    if (trim(rest).empty()) return {};                    // an empty comment line
-    std::string out(content.substr(0, indent));
-    out += rest;
-    return out;
-}
-
-// Appends rather than `"'" + string`, which trips a GCC 12 -Wrestrict false positive.
-std::string quote(std::string_view s) {
-    std::string out;
-    out += '\'';
-    out += s;
-    out += '\'';
-    return out;
-}
-
-}  // namespace
-
-Marker classify_marker(std::string_view line) {
-    const std::string_view t = trim(line);
-    if (t == kBegin) return Marker::Begin;
-    if (t == kStub) return Marker::Stub;
-    if (t == kEnd) return Marker::End;
-    return Marker::None;
-}
-
-MarkerResult process_markers(std::string_view text, RegionMode mode) {
-    MarkerResult result;
-    result.text.reserve(text.size());
-    enum class State { Outside, Solution, Stub } state = State::Outside;
-    int begin_line = 0;
-    int stub_line = 0;
-    auto error = [&](int line, std::string message) {
-        result.errors.push_back({line, "error: " + std::move(message)});
-    };
-    auto emit = [&](std::string_view content, std::string_view ending) {
-        result.text += content;
-        result.text += ending;
-    };
-
-    const std::vector<Line> lines = split_lines(text);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        const int number = static_cast<int>(i) + 1;
-        const Line& line = lines[i];
-        const Marker marker = classify_marker(line.content);
-        if (marker != Marker::None) {
-            result.has_markers = true;
-            if (result.first_marker_line == 0) result.first_marker_line = number;
-        }
-        switch (marker) {
-            case Marker::Begin:
-                if (state != State::Outside) {
-                    // Stay in the outer region: its END will close it, so one mistake gives one
-                    // error.
-                    error(number, quote(kBegin) + " inside the region opened at line " +
-                                      std::to_string(begin_line) +
-                                      " (regions cannot nest); close that region with " +
-                                      quote(kEnd) + " before opening another");
-                } else {
-                    state = State::Solution;
-                    begin_line = number;
-                    stub_line = 0;
-                }
-                break;
-            case Marker::Stub:
-                if (state == State::Outside) {
-                    error(number, quote(kStub) + " without " + quote(kBegin) + "; add " +
-                                      quote(kBegin) +
-                                      " above the solution lines, or delete this line");
-                } else if (state == State::Stub) {
-                    error(number, "second " + quote(kStub) + " in the region opened at line " +
-                                      std::to_string(begin_line) + " (first at line " +
-                                      std::to_string(stub_line) + "); keep only one");
-                } else {
-                    state = State::Stub;
-                    stub_line = number;
-                }
-                break;
-            case Marker::End:
-                if (state == State::Outside) {
-                    error(number, quote(kEnd) + " without " + quote(kBegin) + "; add " +
-                                      quote(kBegin) +
-                                      " where the solution starts, or delete this line");
-                } else if (state == State::Solution) {
-                    error(number, "the region opened at line " + std::to_string(begin_line) +
-                                      " has no " + quote(kStub) + " section; add " + quote(kStub) +
-                                      " followed by the commented stub (RT_NOT_IMPLEMENTED and a "
-                                      "return) before " +
-                                      quote(kEnd));
-                    state = State::Outside;
-                } else {
-                    ++result.regions;
-                    state = State::Outside;
-                }
-                break;
-            case Marker::None:
-                if (state == State::Outside) {
-                    emit(line.content, line.ending);
-                } else if (state == State::Solution) {
-                    if (mode == RegionMode::Keep) emit(line.content, line.ending);
-                } else if (trim(line.content).empty()) {
-                    if (mode == RegionMode::Strip)
-                        emit({}, line.ending);  // spacing inside the stub
-                } else if (!trim(line.content).starts_with("//")) {
-                    error(number, "stub line is not a comment (in the region opened at line " +
-                                      std::to_string(begin_line) + "); write it as '// " +
-                                      std::string(trim(line.content)) +
-                                      "' so the solved tree compiles -- release un-comments it");
-                } else if (mode == RegionMode::Strip) {
-                    emit(uncomment(line.content), line.ending);
-                }
-                break;
-        }
-    }
-    if (state != State::Outside) {
-        error(begin_line, "the region opened here is still open at the end of the file (line " +
-                              std::to_string(lines.size()) + "); add " + quote(kEnd) +
-                              " after its stub");
-    }
-    std::stable_sort(result.errors.begin(), result.errors.end(),
-                     [](const MarkerError& a, const MarkerError& b) { return a.line < b.line; });
-    return result;
-}
-
-std::string format_error(const std::string& path, const MarkerError& error) {
-    return path + ":" + std::to_string(error.line) + ": " + error.message;
-}
-
-std::optional<StageRef> stage_of(std::string_view relative_path) {
-    constexpr std::string_view prefix = "stages/";
-    if (!relative_path.starts_with(prefix)) return std::nullopt;
-    std::string_view rest = relative_path.substr(prefix.size());
-    const std::size_t slash = rest.find('/');
-    if (slash == std::string_view::npos) return std::nullopt;  // a file directly in stages/
-    const std::string_view folder = rest.substr(0, slash);
-    // Stage folders are "NN-name": two digits, a dash.
-    if (folder.size() < 4 || !std::isdigit(static_cast<unsigned char>(folder[0])) ||
-        !std::isdigit(static_cast<unsigned char>(folder[1])) || folder[2] != '-')
-        return std::nullopt;
-    StageRef ref;
-    ref.number = (folder[0] - '0') * 10 + (folder[1] - '0');
-    ref.folder = std::string(prefix) + std::string(folder);
-    ref.relative = std::string(rest.substr(slash + 1));
-    return ref;
-}
-
-namespace {
-
-// Single-quoted for /bin/sh, so any path survives popen.
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) {
-        if (c == '\'')
-            out += "'\\''";
-        else
-            out += c;
-    }
-    return out + "'";
-}
-
-// Runs a shell command, returns its stdout, or nullopt if it failed.
-std::optional<std::string> run_command(const std::string& command) {
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe == nullptr) return std::nullopt;
-    std::string output;
-    char buffer[65536];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
-    const int status = ::pclose(pipe);
-    if (status != 0) return std::nullopt;
-    return output;
-}
-
-bool read_file(const fs::path& path, std::string& content) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    content = std::move(buffer).str();
-    return !in.bad();
-}
 
 // Re-releasing with --force leaves identical files untouched, so their timestamps stay and an
 // existing build of the starter tree rebuilds only what changed.
@@ -251,7 +25,7 @@ bool same_content(const fs::path& a, const fs::path& b) {
     if (!fs::is_regular_file(b, ec) || fs::file_size(a, ec) != fs::file_size(b, ec) || ec)
         return false;
     std::string content_a, content_b;
-    return read_file(a, content_a) && read_file(b, content_b) && content_a == content_b;
+    return read_text_if(a, content_a) && read_text_if(b, content_b) && content_a == content_b;
 }
 
 // True if `inner` is `outer` or lies below it (both canonical).
@@ -272,12 +46,12 @@ struct FileList {
 std::optional<FileList> list_source_files(const ReleaseOptions& options, std::ostream& errors) {
     const std::string src = shell_quote(options.source.string());
     const auto inside =
-        run_command("git -C " + src + " rev-parse --is-inside-work-tree 2>/dev/null");
+        command_output("git -C " + src + " rev-parse --is-inside-work-tree 2>/dev/null");
     FileList list;
     if (inside && trim(*inside) == "true") {
         std::string command = "git -C " + src + " ls-files -z --cached";
         if (options.include_untracked) command += " --others --exclude-standard";
-        const auto output = run_command(command);
+        const auto output = command_output(command);
         if (!output) {
             errors << "rt-grade release: error: 'git ls-files' failed in "
                    << options.source.string() << "; check that git works there\n";
@@ -339,7 +113,7 @@ struct StageInfo {
 StageInfo load_stage_json(const fs::path& path) {
     StageInfo info;
     std::string text;
-    if (!read_file(path, text)) {
+    if (!read_text_if(path, text)) {
         info.problem = "missing or unreadable";
         return info;
     }
@@ -442,7 +216,7 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
             continue;  // directories here are git submodules: not part of a starter tree
         }
         std::string content;
-        if (!read_file(path, content)) {
+        if (!read_text_if(path, content)) {
             problems.push_back(relative + ":1: error: cannot read the file; check its permissions");
             continue;
         }
@@ -490,7 +264,7 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
     // The students' README replaces the instructor's (no instructor commands in a starter tree).
     {
         std::string readme;
-        if (read_file(options.source / "grader/templates/starter_README.md", readme)) {
+        if (read_text_if(options.source / "grader/templates/starter_README.md", readme)) {
             copied.erase("README.md");
             rewritten.push_back({"README.md", readme});
         }
@@ -525,7 +299,7 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
             const fs::path to = options.out / file.relative;
             fs::create_directories(to.parent_path());
             std::string existing;
-            if (fs::is_regular_file(to) && read_file(to, existing) && existing == file.text)
+            if (fs::is_regular_file(to) && read_text_if(to, existing) && existing == file.text)
                 continue;
             std::ofstream out(to, std::ios::binary | std::ios::trunc);
             out << file.text;

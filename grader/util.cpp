@@ -13,12 +13,30 @@ namespace fs = std::filesystem;
 
 namespace rt::grader {
 
+std::string_view trim(std::string_view s) {
+    const auto blank = [](char c) {
+        return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+    };
+    while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+
 std::string read_text(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw std::runtime_error("cannot read " + file.string());
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+bool read_text_if(const fs::path& file, std::string& content) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream s;
+    s << in.rdbuf();
+    content = std::move(s).str();
+    return !in.bad();
 }
 
 void write_text(const fs::path& file, std::string_view text) {
@@ -80,6 +98,17 @@ int run_trusted(const std::string& command, std::string* output) {
         if (output) output->append(buffer, n);
     const int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::optional<std::string> command_output(const std::string& command) {
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return std::nullopt;
+    std::string output;
+    char buffer[65536];
+    std::size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+    if (pclose(pipe) != 0) return std::nullopt;
+    return output;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

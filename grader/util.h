@@ -4,13 +4,19 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace rt::grader {
 
+// Without leading and trailing white space (' ', \t, \n, \r, \v, \f).
+std::string_view trim(std::string_view s);
+
 std::string read_text(const std::filesystem::path& file);
+// The whole file into `content`; false (and `content` unspecified) when it cannot be read.
+bool read_text_if(const std::filesystem::path& file, std::string& content);
 void write_text(const std::filesystem::path& file, std::string_view text);
 // Writes next to `file` and renames, so readers never see half a file and a symlink planted
 // at `file` is replaced rather than followed.
@@ -19,6 +25,9 @@ void write_atomically(const std::filesystem::path& file, std::string_view text);
 std::string shell_quote(const std::string& word);
 // Runs a trusted command line through /bin/sh; returns its exit code, output in `output`.
 int run_trusted(const std::string& command, std::string* output = nullptr);
+// A trusted shell command's standard output (standard error untouched), or nullopt when it
+// could not run or exited non-zero.
+std::optional<std::string> command_output(const std::string& command);
 // Runs argv (argv[0] an absolute path) in `cwd` without a shell; stdout and stderr in `output`.
 int run_argv(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
              std::string& output);
