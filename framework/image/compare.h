@@ -20,7 +20,7 @@ struct CompareOptions {
 
 struct CompareResult {
     bool size_matches = false;
-    int max_difference = 0;        // largest channel difference, 0..255
+    int max_difference = 0;  // largest channel difference, 0..255
     long long failing_pixels = 0;
     double failing_percent = 100;
     double mean_abs_difference = 0;  // per channel, in 8-bit steps

@@ -27,7 +27,7 @@ struct DecodedImage {
 };
 
 // The one-line error for a size that is zero, negative or over the limits above, or "".
-std::string size_problem(const std::filesystem::path& file, std::int64_t width,
-                         std::int64_t height, int channels);
+std::string size_problem(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
+                         int channels);
 
 }  // namespace rt::image_files

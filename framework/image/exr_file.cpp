@@ -16,10 +16,9 @@ namespace {
 
 // Where the channel of column 0, row 0 would be if the frame buffer started at the window's origin.
 char* origin(float* base, const Imath::Box2i& window, int width, int stride_values, int channel) {
-    const std::ptrdiff_t offset = -(std::ptrdiff_t(window.min.x) +
-                                    std::ptrdiff_t(window.min.y) * width) *
-                                      stride_values +
-                                  channel;
+    const std::ptrdiff_t offset =
+        -(std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * width) * stride_values +
+        channel;
     return reinterpret_cast<char*>(base + offset);
 }
 
@@ -29,7 +28,8 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
     try {
         Imf::Header header(image.width, image.height);
         header.compression() = Imf::ZIP_COMPRESSION;
-        for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        for (const char* name : {"R", "G", "B"})
+            header.channels().insert(name, Imf::Channel(Imf::FLOAT));
         // The image is rows of Color; in the double preset it is converted to float first.
         std::vector<float> values(image.pixels.size() * 3);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
@@ -37,8 +37,9 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
         Imf::FrameBuffer frame;
         const char* names[3] = {"R", "G", "B"};
         for (int c = 0; c < 3; ++c)
-            frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data() + c),
-                                              sizeof(float) * 3, sizeof(float) * 3 * image.width));
+            frame.insert(names[c],
+                         Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data() + c),
+                                    sizeof(float) * 3, sizeof(float) * 3 * image.width));
         Imf::OutputFile out(file.c_str(), header);
         out.setFrameBuffer(frame);
         out.writePixels(image.height);
@@ -56,15 +57,16 @@ DecodedImage read_exr(const std::filesystem::path& file) {
         const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
         const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
         const Imf::ChannelList& channels = in.header().channels();
-        const bool rgb = channels.findChannel("R") && channels.findChannel("G") &&
-                         channels.findChannel("B");
+        const bool rgb =
+            channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y");
         if (!rgb && !grey)
             throw ImageError(file.string() +
                              ": error: the EXR has neither R, G, B nor Y channels; re-export it "
                              "as RGB");
         out.channels = rgb ? 3 : 1;
-        if (const std::string problem = size_problem(file, width, height, out.channels); !problem.empty())
+        if (const std::string problem = size_problem(file, width, height, out.channels);
+            !problem.empty())
             throw ImageError(problem);
         out.width = int(width);
         out.height = int(height);
@@ -74,11 +76,12 @@ DecodedImage read_exr(const std::filesystem::path& file) {
         Imf::FrameBuffer frame;
         const char* names[3] = {"R", "G", "B"};
         for (int c = 0; c < out.channels; ++c)
-            frame.insert(rgb ? names[c] : "Y",
-                         Imf::Slice(Imf::FLOAT,
-                                    origin(out.values.data(), window, out.width, out.channels, c),
-                                    sizeof(float) * std::size_t(out.channels),
-                                    sizeof(float) * std::size_t(out.channels) * std::size_t(out.width)));
+            frame.insert(
+                rgb ? names[c] : "Y",
+                Imf::Slice(Imf::FLOAT,
+                           origin(out.values.data(), window, out.width, out.channels, c),
+                           sizeof(float) * std::size_t(out.channels),
+                           sizeof(float) * std::size_t(out.channels) * std::size_t(out.width)));
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);
     } catch (const ImageError&) {

@@ -20,7 +20,8 @@ struct Image {
     std::vector<Color> pixels;
 
     Image() = default;
-    Image(int w, int h, Color fill = Color(0)) : width(w), height(h), pixels(std::size_t(w) * h, fill) {}
+    Image(int w, int h, Color fill = Color(0))
+        : width(w), height(h), pixels(std::size_t(w) * h, fill) {}
     Color& at(int x, int y) { return pixels[std::size_t(y) * width + x]; }
     const Color& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
 };
@@ -36,7 +37,7 @@ struct Image8 {
 };
 
 class ImageError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -65,9 +66,9 @@ Image8 read_image8(const std::filesystem::path& file);
 // maps, height maps): the caller says which (docs/conventions.md#colour).
 enum class Encoding { Srgb, Data };
 
-// EXR, 8- or 16-bit PNG, and what OpenImageIO reads (HDR, JPEG, TIFF, ...), as linear float RGB (grey is
-// spread to three channels, alpha dropped). Throws ImageError naming the file for a missing or
-// unreadable file, an impossible size, or NaN/infinite pixels.
+// EXR, 8- or 16-bit PNG, and what OpenImageIO reads (HDR, JPEG, TIFF, ...), as linear float RGB
+// (grey is spread to three channels, alpha dropped). Throws ImageError naming the file for a
+// missing or unreadable file, an impossible size, or NaN/infinite pixels.
 Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb);
 
 }  // namespace rt

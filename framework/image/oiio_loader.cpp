@@ -37,17 +37,22 @@ const Plugin& plugin() {
         std::string tried;
         for (const fs::path& path : candidates) {
             if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-                loaded.read = reinterpret_cast<decltype(&rt_oiio_read)>(dlsym(module, "rt_oiio_read"));
-                loaded.free = reinterpret_cast<decltype(&rt_oiio_free)>(dlsym(module, "rt_oiio_free"));
+                loaded.read =
+                    reinterpret_cast<decltype(&rt_oiio_read)>(dlsym(module, "rt_oiio_read"));
+                loaded.free =
+                    reinterpret_cast<decltype(&rt_oiio_free)>(dlsym(module, "rt_oiio_free"));
                 if (loaded.read && loaded.free) return;
                 tried += (tried.empty() ? "" : ", ") + path.string() + " (not the plug-in)";
             } else {
                 tried += (tried.empty() ? "" : ", ") + path.string();
             }
         }
-        loaded.problem = "reading this format needs the OpenImageIO plug-in librt_oiio.so, which "
-                         "was not found (tried " + tried + "); build the target rt_oiio, set "
-                         "RT_OIIO_PLUGIN to its path, or convert the image to PNG or EXR";
+        loaded.problem =
+            "reading this format needs the OpenImageIO plug-in librt_oiio.so, which "
+            "was not found (tried " +
+            tried +
+            "); build the target rt_oiio, set "
+            "RT_OIIO_PLUGIN to its path, or convert the image to PNG or EXR";
     });
     return loaded;
 }

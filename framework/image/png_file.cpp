@@ -136,7 +136,8 @@ DecodedImage read_png(const std::filesystem::path& file) {
     };
     if (!read_header(r, f.get(), &h)) damaged();
     // Checked before anything is allocated for the pixels.
-    if (const std::string problem = size_problem(file, h.width, h.height, h.channels); !problem.empty())
+    if (const std::string problem = size_problem(file, h.width, h.height, h.channels);
+        !problem.empty())
         throw ImageError(problem);
     std::vector<png_byte> raw(h.row_bytes * h.height);
     std::vector<png_bytep> rows(h.height);
