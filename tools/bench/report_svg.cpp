@@ -1,0 +1,196 @@
+// The accuracy report's SVG plots: speed against wrong decisions (triangles, spheres) and
+// rendering time against image error, as small scatter plots with log axes.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "bench/accuracy.h"
+#include "bench/report_format.h"
+
+namespace rt::bench {
+namespace {
+
+using detail::fmt;
+
+// Method summaries for the plots: mean ns over the family's scenarios, wrong decisions over all
+// its rays.
+struct Summary {
+    std::string label;
+    double ns = 0, wrong_pct = 0, median_ulps = 0;
+    bool exact = false;
+};
+std::vector<Summary> summarize(const AccuracyResults& r, const std::string& family) {
+    std::vector<std::pair<std::string, std::string>> keys;
+    for (const Row& row : r.rows)
+        if (row.family == family &&
+            std::find(keys.begin(), keys.end(), std::make_pair(row.method, row.precision)) ==
+                keys.end())
+            keys.push_back({row.method, row.precision});
+    std::vector<Summary> out;
+    for (const auto& [method, precision] : keys) {
+        Summary s;
+        s.label = precision == "exact" ? method : method + " " + precision;
+        s.exact = precision == "exact";
+        long wrong = 0, rays = 0;
+        int n = 0;
+        std::vector<double> med;
+        for (const Row& row : r.rows) {
+            if (row.family != family || row.method != method || row.precision != precision)
+                continue;
+            s.ns += row.ns_per_test;
+            ++n;
+            wrong += row.counts.false_miss + row.counts.false_hit + row.counts.leak;
+            rays += row.counts.cases;
+            med.push_back(row.counts.median_ulps);
+        }
+        s.ns /= std::max(n, 1);
+        s.wrong_pct = rays ? 100.0 * double(wrong) / double(rays) : 0;
+        std::sort(med.begin(), med.end());
+        s.median_ulps = med.empty() ? 0 : med[med.size() / 2];
+        out.push_back(s);
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// A small SVG scatter plot with log axes.
+
+struct PlotPoint {
+    std::string label;
+    double x, y;
+    std::string group;  // points of one group (in order) are joined by a line
+    std::string colour;
+};
+
+std::string svg_plot(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                     std::vector<PlotPoint> pts, double y_floor, const std::string& note) {
+    const double W = 640, H = 400, L = 70, R = 20, T = 40, B = 55;
+    for (auto& p : pts) p.y = std::max(p.y, y_floor), p.x = std::max(p.x, 1e-3);  // log axes
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& p : pts) {
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    x0 = std::pow(10, std::floor(std::log10(x0))), x1 = std::pow(10, std::ceil(std::log10(x1)));
+    y0 = std::pow(10, std::floor(std::log10(y0))), y1 = std::pow(10, std::ceil(std::log10(y1)));
+    if (x1 <= x0) x1 = x0 * 10;
+    if (y1 <= y0) y1 = y0 * 10;
+    auto X = [&](double x) {
+        return L +
+               (W - L - R) * (std::log10(x) - std::log10(x0)) / (std::log10(x1) - std::log10(x0));
+    };
+    auto Y = [&](double y) {
+        return H - B -
+               (H - T - B) * (std::log10(y) - std::log10(y0)) / (std::log10(y1) - std::log10(y0));
+    };
+    std::ostringstream s;
+    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+      << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+    s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    s << "<text x=\"" << W / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << title
+      << "</text>\n";
+    for (double v = x0; v <= x1 * 1.0001; v *= 10) {
+        s << "<line x1=\"" << fmt("%.1f", X(v)) << "\" y1=\"" << T << "\" x2=\""
+          << fmt("%.1f", X(v)) << "\" y2=\"" << H - B << "\" stroke=\"#ddd\"/>\n";
+        s << "<text x=\"" << fmt("%.1f", X(v)) << "\" y=\"" << H - B + 15
+          << "\" text-anchor=\"middle\">" << fmt("%g", v) << "</text>\n";
+    }
+    for (double v = y0; v <= y1 * 1.0001; v *= 10) {
+        s << "<line x1=\"" << L << "\" y1=\"" << fmt("%.1f", Y(v)) << "\" x2=\"" << W - R
+          << "\" y2=\"" << fmt("%.1f", Y(v)) << "\" stroke=\"#ddd\"/>\n";
+        s << "<text x=\"" << L - 5 << "\" y=\"" << fmt("%.1f", Y(v) + 4)
+          << "\" text-anchor=\"end\">" << fmt("%g", v) << "</text>\n";
+    }
+    s << "<rect x=\"" << L << "\" y=\"" << T << "\" width=\"" << W - L - R << "\" height=\""
+      << H - T - B << "\" fill=\"none\" stroke=\"black\"/>\n";
+    s << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 22 << "\" text-anchor=\"middle\">"
+      << xlabel << "</text>\n";
+    s << "<text x=\"15\" y=\"" << (T + H - B) / 2
+      << "\" text-anchor=\"middle\" transform=\"rotate(-90 15 " << (T + H - B) / 2 << ")\">"
+      << ylabel << "</text>\n";
+    if (!note.empty())
+        s << "<text x=\"" << L << "\" y=\"" << H - 6 << "\" font-size=\"10\" fill=\"#555\">" << note
+          << "</text>\n";
+    std::map<std::string, std::string> lines;
+    for (const auto& p : pts) {
+        if (p.group.empty()) continue;
+        std::string& line = lines[p.group];
+        if (!line.empty()) line += ' ';
+        line += fmt("%.1f", X(p.x));
+        line += ',';
+        line += fmt("%.1f", Y(p.y));
+    }
+    for (const auto& [g, path] : lines)
+        s << "<polyline points=\"" << path << "\" fill=\"none\" stroke=\"#888\"/>\n";
+    // Points carry numbers; the names are in a legend in the top right corner (close points would
+    // otherwise write their names over each other).
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const PlotPoint& p = pts[i];
+        s << "<circle cx=\"" << fmt("%.1f", X(p.x)) << "\" cy=\"" << fmt("%.1f", Y(p.y))
+          << "\" r=\"4\" fill=\"" << p.colour << "\"/>\n";
+        s << "<text x=\"" << fmt("%.1f", X(p.x) + 5) << "\" y=\"" << fmt("%.1f", Y(p.y) - 5)
+          << "\" font-size=\"10\">" << i + 1 << "</text>\n";
+        const double lx = W - R - 175, ly = T + 14 + 13 * double(i);
+        s << "<circle cx=\"" << lx << "\" cy=\"" << fmt("%.1f", ly - 4) << "\" r=\"4\" fill=\""
+          << p.colour << "\"/>\n<text x=\"" << lx + 8 << "\" y=\"" << fmt("%.1f", ly) << "\">"
+          << i + 1 << "  " << p.label << "</text>\n";
+    }
+    s << "</svg>\n";
+    return s.str();
+}
+
+std::string colour_of(const std::string& label) {
+    if (label.find("CGAL") != std::string::npos) return "#000000";
+    if (label.find("float") != std::string::npos) return "#d62728";
+    return "#1f77b4";
+}
+
+std::vector<PlotPoint> family_points(const AccuracyResults& r, const std::string& family) {
+    std::vector<PlotPoint> pts;
+    for (const Summary& s : summarize(r, family))
+        pts.push_back({s.label, s.ns, s.wrong_pct, "", colour_of(s.label)});
+    return pts;
+}
+
+std::string render_svg(const AccuracyResults& r) {
+    std::vector<PlotPoint> pts;
+    for (const RenderPoint& p : r.render)
+        if (p.series == "supersampling")
+            pts.push_back({std::to_string(p.spp) + " spp", p.ms, p.rmse, "ss", "#2ca02c"});
+    for (const RenderPoint& p : r.render)
+        if (p.series == "watertight double")
+            pts.push_back({"double, 1 spp", p.ms, p.rmse, "", "#1f77b4"});
+    return svg_plot(
+        "Rendering: time against image error", "ms for all scenes (one thread)",
+        "RMSE vs 256 spp (8-bit units)", pts, 1e-3,
+        "green: watertight float with n x n samples per pixel; blue: the same in double, 1 spp");
+}
+
+constexpr double kFloor = 1e-3;  // 0 % is drawn here on the log axis
+
+}  // namespace
+
+void write_svgs(const AccuracyResults& r, const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    auto put = [&](const std::string& name, const std::string& text) {
+        std::ofstream out(std::filesystem::path(dir) / name);
+        if (!out) throw std::runtime_error("cannot write " + dir + "/" + name);
+        out << text;
+    };
+    put("triangles.svg",
+        svg_plot(
+            "Triangles: speed against wrong decisions", "ns per ray-triangle test",
+            "wrong decisions, % of rays", family_points(r, "triangle"), kFloor,
+            "wrong = false miss + false hit + leak over all triangle scenarios; 0 drawn at 0.001"));
+    put("spheres.svg",
+        svg_plot("Spheres: speed against wrong decisions", "ns per ray-sphere test",
+                 "wrong decisions, % of rays", family_points(r, "sphere"), kFloor,
+                 "wrong = false miss + false hit over all sphere scenarios; 0 drawn at 0.001"));
+    if (!r.render.empty()) put("render.svg", render_svg(r));
+}
+
+}  // namespace rt::bench
