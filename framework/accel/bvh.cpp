@@ -1,5 +1,6 @@
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "accel/bvh.h"
 #include "accel/bvh_input.h"
@@ -71,10 +72,10 @@ std::string validate_bvh(const Bvh& bvh, const std::vector<BvhPrimitive>& input)
                " primitives: some nodes are empty or unreachable";
 
     // Bounds of each input id, and how often each id appears in a leaf.
-    std::uint32_t max_id = 0;
-    for (const BvhPrimitive& p : input) max_id = std::max(max_id, p.id);
-    std::vector<int> index_of(std::size_t(max_id) + 1, -1);
-    for (std::size_t i = 0; i < input.size(); ++i) index_of[input[i].id] = int(i);
+    // Ids are sparse (the kind sits in the top bits), so a map rather than a table.
+    std::unordered_map<std::uint32_t, int> index_of;
+    index_of.reserve(input.size());
+    for (std::size_t i = 0; i < input.size(); ++i) index_of.emplace(input[i].id, int(i));
     std::vector<int> seen(input.size(), 0);
 
     std::vector<std::uint32_t> parent(n, std::numeric_limits<std::uint32_t>::max());
@@ -90,11 +91,12 @@ std::string validate_bvh(const Bvh& bvh, const std::vector<BvhPrimitive>& input)
                        std::to_string(node.first + node.count) + ") but there are only " +
                        std::to_string(bvh.primitives.size());
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-                std::uint32_t id = bvh.primitives[k];
-                if (id > max_id || index_of[id] < 0)
+                const std::uint32_t id = bvh.primitives[k];
+                const auto found = index_of.find(id);
+                if (found == index_of.end())
                     return node_name(i) + " holds primitive id " + std::to_string(id) + ", which was not in the input";
-                const BvhPrimitive& p = input[std::size_t(index_of[id])];
-                if (++seen[std::size_t(index_of[id])] > 1)
+                const BvhPrimitive& p = input[std::size_t(found->second)];
+                if (++seen[std::size_t(found->second)] > 1)
                     return "primitive id " + std::to_string(id) + " is in more than one leaf (again in " + node_name(i) + ")";
                 if (!box.contains(p.bounds))
                     return node_name(i) + "'s box does not contain its primitive id " + std::to_string(id);

@@ -26,7 +26,7 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     sp.front_face = hit.front_face;
     sp.primitive = hit.primitive;
     sp.material = hit.material;
-    if (hit.primitive < 0 || std::size_t(hit.primitive) >= scene.primitive_count()) {
+    if (!scene.is_primitive(hit.primitive)) {
         // Unknown primitive: the point as computed, with the error of o + t d.
         sp.error = gamma_bound(4) * (abs3(ray.origin) + abs3(hit.t * ray.direction));
         return sp;

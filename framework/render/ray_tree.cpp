@@ -31,7 +31,7 @@ const char* kind_name(Scene::Kind kind) {
 }
 
 std::string primitive_name(const Scene& scene, int id) {
-    if (id < 0 || std::size_t(id) >= scene.primitive_count()) return "none";
+    if (!scene.is_primitive(id)) return "none";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(id, index);
     return std::string(kind_name(kind)) + " " + std::to_string(index) + " (id " +

@@ -69,7 +69,11 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     switch (mode) {
         case RenderMode::Normals: out.colour = display_value(unit_vector_colour(hit.normal)); break;
         case RenderMode::Depth: out.depth = hit.t; break;
-        case RenderMode::PrimitiveId: out.colour = display_value(primitive_colour(hit.primitive)); break;
+        case RenderMode::PrimitiveId:
+            out.colour = display_value(primitive_colour(
+                scene.is_primitive(hit.primitive) ? int(scene.primitive_rank(hit.primitive))
+                                                  : hit.primitive));
+            break;
         default: break;
     }
     return out;

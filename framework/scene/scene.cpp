@@ -4,15 +4,28 @@
 
 namespace rt {
 
-int Scene::primitive_id(Kind kind, std::size_t index) const {
+bool Scene::is_primitive(int id) const {
+    if (id < 0) return false;
+    std::size_t index = 0;
+    switch (primitive_kind(id, index)) {
+        case Kind::Sphere: return index < spheres.size();
+        case Kind::Plane: return index < planes.size();
+        case Kind::Triangle: return index < triangles.size();
+        case Kind::Box: return index < boxes.size();
+    }
+    return false;  // a kind this scene does not know
+}
+
+std::size_t Scene::primitive_rank(int id) const {
+    std::size_t index = 0;
     std::size_t offset = 0;
-    switch (kind) {
+    switch (primitive_kind(id, index)) {
         case Kind::Box: offset += triangles.size(); [[fallthrough]];
         case Kind::Triangle: offset += planes.size(); [[fallthrough]];
         case Kind::Plane: offset += spheres.size(); [[fallthrough]];
         case Kind::Sphere: break;
     }
-    return int(offset + index);
+    return offset + index;
 }
 
 std::size_t Scene::primitive_count() const {

@@ -109,22 +109,27 @@ struct Scene {
     Features features;  // filled by update_features()
     Bvh bvh;            // built by build_acceleration when accelerator == Bvh
 
-    // Global primitive ids number spheres first, then planes, triangles and boxes.
+    // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding
+    // a kind renumbers nothing (and a shader decodes an id with a shift and a mask). Ids of one
+    // kind are ordered by index and kinds in this order, so sorting ids sorts as before.
     enum class Kind { Sphere, Plane, Triangle, Box };
-    int primitive_id(Kind kind, std::size_t index) const;
-    std::size_t primitive_count() const;
-    // The inverse of primitive_id: the kind of primitive `id` and its index in that array.
-    // Inline: every BVH leaf test goes through it.
-    Kind primitive_kind(int id, std::size_t& index) const {
-        std::size_t i = std::size_t(id);
-        if (i < spheres.size()) return index = i, Kind::Sphere;
-        i -= spheres.size();
-        if (i < planes.size()) return index = i, Kind::Plane;
-        i -= planes.size();
-        if (i < triangles.size()) return index = i, Kind::Triangle;
-        i -= triangles.size();
-        return index = i, Kind::Box;
+    static constexpr int kKindShift = 28;
+    static constexpr std::size_t kMaxPrimitivesOfAKind = std::size_t(1) << kKindShift;
+    static constexpr int primitive_id(Kind kind, std::size_t index) {
+        return int(kind) << kKindShift | int(index);
     }
+    // The inverse of primitive_id (no bounds check: see is_primitive). Inline: every BVH leaf
+    // test goes through it.
+    static Kind primitive_kind(int id, std::size_t& index) {
+        index = std::size_t(id) & (kMaxPrimitivesOfAKind - 1);
+        return Kind(id >> kKindShift);
+    }
+    // True when `id` names a primitive of this scene.
+    bool is_primitive(int id) const;
+    std::size_t primitive_count() const;
+    // The position of `id` when every primitive is listed spheres first, then planes, triangles
+    // and boxes: the number debug colours are made from (the primitive-id view).
+    std::size_t primitive_rank(int id) const;
 
     void triangle_vertices(std::size_t i, Vec3& a, Vec3& b, Vec3& c) const {
         a = vertices[triangles[i].v[0]];

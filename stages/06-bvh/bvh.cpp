@@ -232,9 +232,9 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
                            BvhStats* stats) {
     // BEGIN SOLUTION
     bool found = false;
-    const std::uint32_t first_plane = std::uint32_t(scene.spheres.size());
-    for (std::uint32_t i = 0; i < scene.planes.size(); ++i)
-        if (intersect_primitive(scene, first_plane + i, ray, t_range, hit)) {
+    for (std::size_t i = 0; i < scene.planes.size(); ++i)
+        if (intersect_primitive(scene, Scene::primitive_id(Scene::Kind::Plane, i), ray, t_range,
+                                hit)) {
             found = true;
             t_range.max = hit.t;
         }
@@ -297,9 +297,10 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
 bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, BvhStats* stats) {
     // BEGIN SOLUTION
     Hit scratch;
-    const std::uint32_t first_plane = std::uint32_t(scene.spheres.size());
-    for (std::uint32_t i = 0; i < scene.planes.size(); ++i)
-        if (intersect_primitive(scene, first_plane + i, ray, t_range, scratch)) return true;
+    for (std::size_t i = 0; i < scene.planes.size(); ++i)
+        if (intersect_primitive(scene, Scene::primitive_id(Scene::Kind::Plane, i), ray, t_range,
+                                scratch))
+            return true;
     if (!scene.bvh.built()) return false;
 
     const std::vector<BvhNode>& nodes = scene.bvh.nodes;

@@ -109,7 +109,6 @@ class EmbreeBackend final : public Backend {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         // Geometry 0 holds only triangles, so Embree's primID is the triangle's index.
-        const int first_triangle = scene_.primitive_id(Scene::Kind::Triangle, 0);
         for (std::size_t i = begin; i < end; ++i) {
             const Ray& ray = batch.rays[i];
             const Interval range = batch.ranges[i];
@@ -137,7 +136,7 @@ class EmbreeBackend final : public Backend {
                 rtcIntersect1(scene_handle_, &context, &query);
                 if (query.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
                     result.t = Real(query.ray.tfar);
-                    result.primitive = first_triangle + std::int32_t(query.hit.primID);
+                    result.primitive = Scene::primitive_id(Scene::Kind::Triangle, query.hit.primID);
                 }
             }
             results[i] = result;

@@ -199,8 +199,10 @@ TEST_F(NearestHit, FillsPrimitiveAndMaterial) {
     scene = built(scene);
     Hit hit;
     ASSERT_TRUE(bvh_intersect_nearest(scene, Ray{{0.1, 0.2, 5}, {0, 0, -1}}, Interval{0, kInfinity}, hit));
-    ASSERT_GE(hit.primitive, 0);
-    EXPECT_EQ(hit.material, scene.triangles[std::size_t(hit.primitive)].material);
+    ASSERT_TRUE(scene.is_primitive(hit.primitive)) << hit.primitive;
+    std::size_t index = 0;
+    ASSERT_EQ(Scene::primitive_kind(hit.primitive, index), Scene::Kind::Triangle);
+    EXPECT_EQ(hit.material, scene.triangles[index].material);
     EXPECT_NEAR(hit.t, 4, 0.05);
 }
 
