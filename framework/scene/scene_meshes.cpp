@@ -13,10 +13,25 @@ namespace rt::scene_internal {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Scene::normals and Scene::uvs stay empty until some mesh has them, then hold one entry per
+// scene vertex: zeros before `first` and for a mesh without, else the mesh's own.
+template <typename T>
+void append_per_vertex(std::vector<T>& all, std::size_t first, std::size_t vertex_count,
+                       const std::vector<T>& mesh) {
+    if (mesh.empty() && all.empty()) return;
+    all.resize(first, T(0));
+    if (mesh.empty())
+        all.resize(vertex_count, T(0));
+    else
+        all.insert(all.end(), mesh.begin(), mesh.end());
+}
+
+}  // namespace
+
 // Appends a mesh to the scene's flat arrays. `normals` and `uvs` are each empty or one per
-// vertex; Scene::normals and Scene::uvs stay empty until some mesh has them, and from then
-// on hold one entry per scene vertex, (0, 0, 0) and (0, 0) for vertices without (see
-// scene.h). pad_shading_data() fills in the vertices added after the last mesh.
+// vertex; pad_shading_data() fills in the vertices added after the last mesh.
 template <typename MaterialOf>
 void SceneSections::append_mesh(const std::vector<Vec3>& vertices, const std::vector<Vec3>& normals,
                                 const std::vector<Vec2>& uvs,
@@ -24,20 +39,8 @@ void SceneSections::append_mesh(const std::vector<Vec3>& vertices, const std::ve
                                 MaterialOf material_of_triangle) {
     const std::size_t first = scene_.vertices.size();
     scene_.vertices.insert(scene_.vertices.end(), vertices.begin(), vertices.end());
-    if (!normals.empty() || !scene_.normals.empty()) {
-        scene_.normals.resize(first, Vec3(0));
-        if (normals.empty())
-            scene_.normals.resize(scene_.vertices.size(), Vec3(0));
-        else
-            scene_.normals.insert(scene_.normals.end(), normals.begin(), normals.end());
-    }
-    if (!uvs.empty() || !scene_.uvs.empty()) {
-        scene_.uvs.resize(first, Vec2(0));
-        if (uvs.empty())
-            scene_.uvs.resize(scene_.vertices.size(), Vec2(0));
-        else
-            scene_.uvs.insert(scene_.uvs.end(), uvs.begin(), uvs.end());
-    }
+    append_per_vertex(scene_.normals, first, scene_.vertices.size(), normals);
+    append_per_vertex(scene_.uvs, first, scene_.vertices.size(), uvs);
     scene_.triangles.reserve(scene_.triangles.size() + triangles.size());
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         Triangle t;
@@ -55,9 +58,6 @@ void SceneSections::pad_shading_data() {
 // A "mesh" surface: exactly one of "file" (an OBJ file) and "procedural" (a generated mesh,
 // framework/geometry/procedural_mesh.h), each placed by "scale", then "translate".
 void SceneSections::read_mesh(const json& s, const std::string& pointer) {
-    check_keys(
-        s, pointer, "a mesh",
-        {"type", "file", "procedural", "triangles", "seed", "translate", "scale", "material"});
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     const json* file_value = member(s, "file");
     const json* shape_value = member(s, "procedural");

@@ -117,6 +117,19 @@ void SceneReader::require_array(const json& value, const std::string& pointer,
                    "write it as " + example);
 }
 
+void SceneReader::require_array_of(const json& value, const std::string& pointer, std::size_t size,
+                                   const std::string& entries, const std::string& counted,
+                                   const std::string& fix) const {
+    if (!value.is_array() || value.size() != size) {
+        std::string got =
+            value.is_array() ? std::to_string(value.size()) + " " + counted : describe(value);
+        fail_value(pointer,
+                   label(pointer) + " must be an array of " + std::to_string(size) + " " + entries +
+                       ", got " + got,
+                   fix);
+    }
+}
+
 const json& SceneReader::required(const json& object, const std::string& pointer, const char* key,
                                   const std::string& what, const std::string& example) const {
     const json* value = member(object, key);
@@ -166,12 +179,7 @@ Real SceneReader::real_in(const json& value, const std::string& pointer, bool ok
 }
 
 Vec3 SceneReader::vec3(const json& value, const std::string& pointer) const {
-    if (!value.is_array() || value.size() != 3) {
-        std::string got =
-            value.is_array() ? std::to_string(value.size()) + " numbers" : describe(value);
-        fail_value(pointer, label(pointer) + " must be an array of 3 numbers, got " + got,
-                   "write it as [x, y, z]");
-    }
+    require_array_of(value, pointer, 3, "numbers", "numbers", "write it as [x, y, z]");
     Vec3 v;
     for (int i = 0; i < 3; ++i)
         v[i] = real(value[std::size_t(i)], JsonPositions::child(pointer, std::size_t(i)));

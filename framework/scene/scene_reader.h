@@ -58,6 +58,11 @@ class SceneReader {
                         const std::string& example) const;
     void require_array(const json& value, const std::string& pointer,
                        const std::string& example) const;
+    // An array of exactly `size` `entries` ("numbers", "points"); a wrong count is told in
+    // `counted` ("got 2 points").
+    void require_array_of(const json& value, const std::string& pointer, std::size_t size,
+                          const std::string& entries, const std::string& counted,
+                          const std::string& fix) const;
     const json& required(const json& object, const std::string& pointer, const char* key,
                          const std::string& what, const std::string& example) const;
     double number(const json& value, const std::string& pointer) const;

@@ -25,18 +25,23 @@ void SceneSections::read_surfaces(const json& root) {
 }
 
 void SceneSections::read_surface(const json& s, const std::string& pointer) {
-    // Each "type" and its reader, in the order messages list them.
+    // Each "type", the keys it takes and its reader, in the order messages list them.
     struct Kind {
         const char* name;
+        std::vector<std::string> keys;
         void (SceneSections::*read)(const json& s, const std::string& pointer);
     };
     static const Kind kinds[] = {
-        {"sphere", &SceneSections::read_sphere},
-        {"plane", &SceneSections::read_plane},
-        {"triangle", &SceneSections::read_triangle},
-        {"box", &SceneSections::read_box},
-        {"mesh", &SceneSections::read_mesh},
-        {"checkerboard", &SceneSections::read_checkerboard},
+        {"sphere", {"type", "center", "radius", "material"}, &SceneSections::read_sphere},
+        {"plane", {"type", "point", "normal", "material"}, &SceneSections::read_plane},
+        {"triangle", {"type", "vertices", "material"}, &SceneSections::read_triangle},
+        {"box", {"type", "min", "max", "material"}, &SceneSections::read_box},
+        {"mesh",
+         {"type", "file", "procedural", "triangles", "seed", "translate", "scale", "material"},
+         &SceneSections::read_mesh},
+        {"checkerboard",
+         {"type", "min", "max", "tiles", "materials"},
+         &SceneSections::read_checkerboard},
     };
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names;
@@ -46,12 +51,12 @@ void SceneSections::read_surface(const json& s, const std::string& pointer) {
     require_object(s, pointer, "{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}");
     const json& type_value = required(s, pointer, "type", "a surface", list_of(types));
     const Kind& kind = kinds[choice(type_value, JsonPositions::child(pointer, "type"), types)];
+    check_keys(s, pointer, std::string("a ") + kind.name, kind.keys);
     (this->*kind.read)(s, pointer);
 }
 
 void SceneSections::read_sphere(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
-    check_keys(s, pointer, "a sphere", {"type", "center", "radius", "material"});
     Sphere sphere;
     sphere.center = vec3(required(s, pointer, "center", "a sphere", "[x, y, z]"), at("center"));
     sphere.radius = real_in(
@@ -63,7 +68,6 @@ void SceneSections::read_sphere(const json& s, const std::string& pointer) {
 
 void SceneSections::read_plane(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
-    check_keys(s, pointer, "a plane", {"type", "point", "normal", "material"});
     Plane plane;
     plane.point = vec3(required(s, pointer, "point", "a plane", "[x, y, z]"), at("point"));
     plane.normal = unit_direction(required(s, pointer, "normal", "a plane", "[0, 1, 0]"),
@@ -74,15 +78,10 @@ void SceneSections::read_plane(const json& s, const std::string& pointer) {
 
 void SceneSections::read_triangle(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
-    check_keys(s, pointer, "a triangle", {"type", "vertices", "material"});
     const json& corners =
         required(s, pointer, "vertices", "a triangle", "[[x, y, z], [x, y, z], [x, y, z]]");
-    if (!corners.is_array() || corners.size() != 3)
-        fail_value(at("vertices"),
-                   "\"vertices\" must be an array of 3 points, got " +
-                       (corners.is_array() ? std::to_string(corners.size()) + " points"
-                                           : describe(corners)),
-                   "write [[x, y, z], [x, y, z], [x, y, z]]");
+    require_array_of(corners, at("vertices"), 3, "points", "points",
+                     "write [[x, y, z], [x, y, z], [x, y, z]]");
     Triangle triangle;
     for (std::size_t k = 0; k < 3; ++k) {
         check_vertex_room(1, at("vertices"));
@@ -96,7 +95,6 @@ void SceneSections::read_triangle(const json& s, const std::string& pointer) {
 
 void SceneSections::read_box(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
-    check_keys(s, pointer, "a box", {"type", "min", "max", "material"});
     Box box;
     box.min = vec3(required(s, pointer, "min", "a box", "[x, y, z]"), at("min"));
     box.max = vec3(required(s, pointer, "max", "a box", "[x, y, z]"), at("max"));
@@ -116,7 +114,6 @@ void SceneSections::read_box(const json& s, const std::string& pointer) {
 // edge k = min + (max - min) * k / n in double (edge n is max itself), and all of min.y..max.y;
 // it gets materials[(i + j) % 2]. Boxes are appended with i outer, j inner.
 void SceneSections::read_checkerboard(const json& s, const std::string& pointer) {
-    check_keys(s, pointer, "a checkerboard", {"type", "min", "max", "tiles", "materials"});
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     const json& lo_value = required(s, pointer, "min", "a checkerboard", "[x, y, z]");
     const json& hi_value = required(s, pointer, "max", "a checkerboard", "[x, y, z]");
@@ -137,12 +134,8 @@ void SceneSections::read_checkerboard(const json& s, const std::string& pointer)
         }
     }
     const json& tiles = required(s, pointer, "tiles", "a checkerboard", "[8, 8]");
-    if (!tiles.is_array() || tiles.size() != 2)
-        fail_value(
-            at("tiles"),
-            "\"tiles\" must be an array of 2 whole numbers (along x, along z), got " +
-                (tiles.is_array() ? std::to_string(tiles.size()) + " numbers" : describe(tiles)),
-            "write it as [8, 8]");
+    require_array_of(tiles, at("tiles"), 2, "whole numbers (along x, along z)", "numbers",
+                     "write it as [8, 8]");
     std::size_t count[2];
     for (std::size_t k = 0; k < 2; ++k) {
         const std::string element = JsonPositions::child(at("tiles"), k);
@@ -156,12 +149,8 @@ void SceneSections::read_checkerboard(const json& s, const std::string& pointer)
     }
     const json& materials =
         required(s, pointer, "materials", "a checkerboard", "[\"dark\", \"light\"]");
-    if (!materials.is_array() || materials.size() != 2)
-        fail_value(at("materials"),
-                   "\"materials\" must be an array of 2 materials, got " +
-                       (materials.is_array() ? std::to_string(materials.size()) + " entries"
-                                             : describe(materials)),
-                   "write it as [\"dark\", \"light\"] (names or indices)");
+    require_array_of(materials, at("materials"), 2, "materials", "entries",
+                     "write it as [\"dark\", \"light\"] (names or indices)");
     const int material[2] = {
         material_ref(materials[0], JsonPositions::child(at("materials"), std::size_t(0))),
         material_ref(materials[1], JsonPositions::child(at("materials"), std::size_t(1)))};
