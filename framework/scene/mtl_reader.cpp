@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -131,7 +130,6 @@ Material to_scene_material(const tinyobj::material_t& m, const MtlKeys& keys) {
 
 void read_libraries(const fs::path& obj_file, const std::string& name, const ObjSummary& summary,
                     std::vector<ObjMaterial>& materials, const std::vector<bool>& wanted) {
-    std::set<std::string> found;
     for (const MaterialLibrary& library : summary.libraries) {
         fs::path path = fs::path(library.file);
         if (!path.is_absolute()) path = obj_file.parent_path() / path;

@@ -43,7 +43,6 @@ const json* member(const json& object, const char* key) {
     fail_at(offset, what + "; " + fix);
 }
 
-// At the value `pointer` names (the enclosing object for a missing field).
 [[noreturn]] void SceneReader::fail_value(const std::string& pointer, const std::string& what,
                                           const std::string& fix) const {
     fail_at(positions_ ? positions_->value_offset(pointer) : 0, what, fix);
@@ -54,7 +53,6 @@ const json* member(const json& object, const char* key) {
     fail_at(positions_ ? positions_->value_offset(pointer) : 0, what_and_fix);
 }
 
-// At the key of `pointer` (unknown and duplicate keys).
 [[noreturn]] void SceneReader::fail_key(const std::string& pointer, const std::string& what,
                                         const std::string& fix) const {
     std::size_t offset = positions_ ? positions_->key_offset(pointer) : 0;
@@ -62,7 +60,6 @@ const json* member(const json& object, const char* key) {
     fail_at(offset, what, fix);
 }
 
-// How a value is named in messages: "radius", "center"[1], "surfaces"[3].
 std::string SceneReader::label(const std::string& pointer) {
     std::string indices, token;
     std::size_t end = pointer.size();
@@ -78,7 +75,6 @@ std::string SceneReader::label(const std::string& pointer) {
     return "\"" + token + "\"" + indices;
 }
 
-// The text of a scalar value as written in the file (to show 1e999 rather than "inf").
 std::string SceneReader::source_text(const std::string& pointer) const {
     std::size_t start = positions_->value_offset(pointer);
     if (start == JsonPositions::npos) return "?";
@@ -151,7 +147,6 @@ double SceneReader::number(const json& value, const std::string& pointer) const 
     return d;
 }
 
-// A number that must also fit in Real (float by default).
 Real SceneReader::real(const json& value, const std::string& pointer) const {
     double d = number(value, pointer);
     if (!std::isfinite(static_cast<Real>(d)))
@@ -168,7 +163,6 @@ double SceneReader::whole_number(const json& value, const std::string& pointer) 
     return d;
 }
 
-// A number checked against a range; `rule` reads like "> 0" or "between 1 and 16384".
 Real SceneReader::real_in(const json& value, const std::string& pointer, bool ok_if(double),
                           const std::string& rule, const std::string& fix) const {
     Real r = real(value, pointer);
@@ -212,7 +206,6 @@ std::string SceneReader::string(const json& value, const std::string& pointer,
     return value.get<std::string>();
 }
 
-// One of a fixed set of words; returns its position in `options`.
 std::size_t SceneReader::choice(const json& value, const std::string& pointer,
                                 const std::vector<std::string>& options) const {
     std::string word = string(value, pointer, "\"" + options.front() + "\"");
