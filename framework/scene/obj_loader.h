@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/real.h"
+#include "scene/mesh_placement.h"  // scale_normal, used with meshes
 #include "scene/scene.h"
 
 namespace rt {
@@ -21,16 +22,16 @@ namespace rt {
 // the MTL file and line (`mesh "m.obj": "m.mtl" line 3: ...`). The scene loader prefixes it with
 // the scene file position of the mesh's "file" value.
 class ObjError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 // One `usemtl` name of an OBJ file.
 struct ObjMaterial {
-    std::string name;          // as written after usemtl
-    std::size_t line = 0;      // the OBJ line of its first usemtl
-    bool defined = false;      // found in one of the file's mtllib libraries (and then read)
-    Material material;         // its MTL definition when `defined` (`material.name` left empty)
+    std::string name;      // as written after usemtl
+    std::size_t line = 0;  // the OBJ line of its first usemtl
+    bool defined = false;  // found in one of the file's mtllib libraries (and then read)
+    Material material;     // its MTL definition when `defined` (`material.name` left empty)
 };
 
 struct ObjMesh {
@@ -45,7 +46,7 @@ struct ObjMesh {
     // Per triangle: index into `materials` of the usemtl in effect, or -1 for none.
     std::vector<int> triangle_material;
     std::vector<ObjMaterial> materials;  // distinct usemtl names, first use first
-    bool has_mtllib = false;              // the file names at least one material library
+    bool has_mtllib = false;             // the file names at least one material library
     // Harmless oddities that were worked around, one line each (`mesh "<name>" line N: ...`),
     // e.g. faces naming texture coordinates in a file with no "vt" line at all.
     std::vector<std::string> warnings;
@@ -55,9 +56,9 @@ struct ObjMesh {
 // definition is neither needed nor read).
 using SceneMaterialLookup = std::function<bool(const std::string& usemtl_name)>;
 
-// Loads `file` with tinyobjloader (polygons triangulated), then maps every vertex p to
-// p * scale + translate and every normal n to normalize(n / scale); a scale that mirrors (an odd
-// number of negative factors) also reverses each triangle's winding, so outward stays outward.
+// Loads `file` with tinyobjloader (polygons triangulated), then places it with place_mesh: every
+// vertex p becomes p * scale + translate and every normal n normalize(n / scale); a scale that
+// mirrors (an odd number of negative factors) also reverses each triangle's winding.
 // `display_name` is how messages name the file (as the scene wrote it).
 //
 // Materials: for every usemtl name that `scene_has` does not claim, the file's mtllib libraries
@@ -70,10 +71,7 @@ using SceneMaterialLookup = std::function<bool(const std::string& usemtl_name)>;
 // is needed, a usemtl name it does not define, no triangles at all, or more than `max_triangles`
 // triangles.
 ObjMesh load_obj(const std::filesystem::path& file, const std::string& display_name, Vec3 scale,
-                 Vec3 translate, std::size_t max_triangles, const SceneMaterialLookup& scene_has = {});
-
-// The normal `n` of a surface scaled by `scale` (per axis): normalize(n / scale), computed in
-// double; the zero vector stays zero (it marks "no vertex normal", see Scene::normals).
-Vec3 scale_normal(Vec3 n, Vec3 scale);
+                 Vec3 translate, std::size_t max_triangles,
+                 const SceneMaterialLookup& scene_has = {});
 
 }  // namespace rt

@@ -1,0 +1,77 @@
+// The sections of a scene file (camera, image, render, materials, surfaces, meshes, lights), each
+// read into a Scene on top of the typed reader. The readers live in scene_settings.cpp,
+// scene_materials.cpp, scene_surfaces.cpp and scene_meshes.cpp.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "scene/scene_reader.h"
+
+namespace rt::scene_internal {
+
+// Limits against absurd sizes (documented in docs/scene-format.md).
+constexpr std::size_t kMaxTriangles = 20'000'000;
+
+class SceneSections : public SceneReader {
+  public:
+    // Relative mesh paths are resolved against `base_dir`.
+    SceneSections(const std::string& text, const std::string& name,
+                  const std::filesystem::path& base_dir)
+        : SceneReader(text, name), base_dir_(base_dir) {}
+
+    // Parses and reads the whole scene (scene_loader.cpp). Throws SceneError.
+    Scene load();
+
+  private:
+    // scene_settings.cpp
+    void read_image(const json& root);
+    void read_render(const json& root);
+    void read_camera(const json& root);
+    void read_lights(const json& root);
+    void read_light(const json& object, const std::string& pointer);
+
+    // scene_materials.cpp
+    void read_materials(const json& root);
+    void read_material(const json& object, const std::string& pointer);
+    // "material": a name or an index; omitted means material 0.
+    int material_of(const json& surface, const std::string& pointer) const;
+    // A material name (string) or index (whole number) at `at`.
+    int material_ref(const json& value, const std::string& at) const;
+
+    // scene_surfaces.cpp
+    void read_surfaces(const json& root);
+    void read_surface(const json& s, const std::string& pointer);
+    void read_sphere(const json& s, const std::string& pointer);
+    void read_plane(const json& s, const std::string& pointer);
+    void read_triangle(const json& s, const std::string& pointer);
+    void read_box(const json& s, const std::string& pointer);
+    void read_checkerboard(const json& s, const std::string& pointer);
+    void check_vertex_room(std::size_t more, const std::string& pointer) const;
+    void check_triangle_room(std::size_t more, const std::string& pointer) const;
+
+    // scene_meshes.cpp
+    void read_mesh(const json& s, const std::string& pointer);
+    void read_procedural_mesh(const json& s, const std::string& pointer, Vec3 scale, Vec3 translate,
+                              int material);
+    void read_obj_mesh(const json& file_value, const std::string& file_pointer, Vec3 scale,
+                       Vec3 translate, int material);
+    template <typename MaterialOf>
+    void append_mesh(const std::vector<Vec3>& vertices, const std::vector<Vec3>& normals,
+                     const std::vector<Vec2>& uvs,
+                     const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                     MaterialOf material_of_triangle);
+    void pad_shading_data();
+
+    std::filesystem::path base_dir_;
+    Scene scene_;
+    std::map<std::string, int> material_ids_;
+};
+
+}  // namespace rt::scene_internal

@@ -1,0 +1,169 @@
+// The scene's settings: "image", "render", "camera" and "lights" (docs/scene-format.md).
+#include "scene/scene_sections.h"
+
+#include <cmath>
+
+#include "scene/message_text.h"
+
+namespace rt::scene_internal {
+
+namespace {
+
+// Limits against absurd sizes (documented in docs/scene-format.md).
+constexpr double kMaxImageSide = 16384;
+constexpr double kMaxPixels = 64.0 * 1024 * 1024;
+constexpr double kMaxRecursionDepth = 64;
+
+}  // namespace
+
+void SceneSections::read_image(const json& root) {
+    const json* image = member(root, "image");
+    if (!image) return;
+    require_object(*image, "/image", "{\"width\": 640, \"height\": 480}");
+    check_keys(*image, "/image", "\"image\"", {"width", "height"});
+    auto side = [&](const char* key, int& out) {
+        const json* v = member(*image, key);
+        if (!v) return;
+        std::string pointer = JsonPositions::child("/image", key);
+        double d = whole_number(*v, pointer);
+        if (d < 1 || d > kMaxImageSide)
+            fail_value(pointer,
+                       label(pointer) + " must be between 1 and 16384, got " + source_text(pointer),
+                       "choose a sensible image size");
+        out = int(d);
+    };
+    side("width", scene_.image.width);
+    side("height", scene_.image.height);
+    if (double(scene_.image.width) * double(scene_.image.height) > kMaxPixels)
+        fail_value("/image",
+                   "the image has " + std::to_string(scene_.image.width) + "x" +
+                       std::to_string(scene_.image.height) +
+                       " pixels, more than the 67108864 (64 Mi) allowed",
+                   "make it smaller");
+}
+
+void SceneSections::read_render(const json& root) {
+    const json* render = member(root, "render");
+    if (!render) return;
+    require_object(*render, "/render", "{\"mode\": \"shaded\", \"max_depth\": 5}");
+    check_keys(*render, "/render", "\"render\"",
+               {"mode", "max_depth", "shadows", "fresnel", "accelerator"});
+    if (const json* v = member(*render, "mode")) {
+        static const std::vector<std::string> modes{"directions", "normals", "depth",
+                                                    "primitive",  "shaded",  "bvh_visits"};
+        static const RenderMode values[] = {RenderMode::Directions, RenderMode::Normals,
+                                            RenderMode::Depth,      RenderMode::PrimitiveId,
+                                            RenderMode::Shaded,     RenderMode::BvhVisits};
+        scene_.mode = values[choice(*v, "/render/mode", modes)];
+    }
+    if (const json* v = member(*render, "max_depth")) {
+        double d = whole_number(*v, "/render/max_depth");
+        if (d < 0 || d > kMaxRecursionDepth)
+            fail_value(
+                "/render/max_depth",
+                "\"max_depth\" must be between 0 and 64, got " + source_text("/render/max_depth"),
+                "a few bounces are enough");
+        scene_.max_depth = int(d);
+    }
+    if (const json* v = member(*render, "shadows")) scene_.shadows = boolean(*v, "/render/shadows");
+    if (const json* v = member(*render, "fresnel")) scene_.fresnel = boolean(*v, "/render/fresnel");
+    if (const json* v = member(*render, "accelerator")) {
+        static const std::vector<std::string> names{"none", "bvh"};
+        scene_.accelerator =
+            choice(*v, "/render/accelerator", names) == 0 ? Accelerator::None : Accelerator::Bvh;
+    }
+    if (scene_.mode == RenderMode::BvhVisits && scene_.accelerator != Accelerator::Bvh)
+        fail_value(
+            "/render/mode",
+            "mode \"bvh_visits\" draws the BVH, but the scene has no \"accelerator\": \"bvh\"",
+            "add \"accelerator\": \"bvh\" to \"render\"");
+}
+
+void SceneSections::read_camera(const json& root) {
+    Projection projection = Projection::Perspective;
+    Vec3 eye{0, 0, 5}, look_at{0, 0, 0}, up{0, 1, 0};
+    Real fov = 45, view_height = 2;
+    const json* camera = member(root, "camera");
+    const json empty = json::object();
+    if (!camera) camera = &empty;
+    require_object(*camera, "/camera", "{\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]}");
+    check_keys(*camera, "/camera", "\"camera\"",
+               {"projection", "eye", "look_at", "up", "fov", "view_height"});
+    if (const json* v = member(*camera, "projection"))
+        projection = choice(*v, "/camera/projection", {"perspective", "orthographic"}) == 0
+                         ? Projection::Perspective
+                         : Projection::Orthographic;
+    if (const json* v = member(*camera, "eye")) eye = vec3(*v, "/camera/eye");
+    if (const json* v = member(*camera, "look_at")) look_at = vec3(*v, "/camera/look_at");
+    if (const json* v = member(*camera, "up")) up = vec3(*v, "/camera/up");
+    if (const json* v = member(*camera, "fov"))
+        fov = real_in(
+            *v, "/camera/fov", [](double d) { return d > 0 && d < 180; },
+            "between 0 and 180 degrees (exclusive)", "a typical vertical fov is 30 to 60");
+    if (const json* v = member(*camera, "view_height"))
+        view_height = real_in(
+            *v, "/camera/view_height", [](double d) { return d > 0; }, "> 0",
+            "give the height of the visible rectangle in world units");
+
+    // The frame is only defined for a real viewing direction and an up that is not along it.
+    auto where = [&](const char* key) {
+        return member(*camera, key) ? JsonPositions::child("/camera", key) : std::string("/camera");
+    };
+    glm::dvec3 direction = glm::dvec3(look_at) - glm::dvec3(eye);
+    glm::dvec3 upward(up);
+    if (glm::length(direction) == 0)
+        fail_value(where(member(*camera, "look_at") ? "look_at" : "eye"),
+                   "\"look_at\" equals \"eye\", so the camera has no viewing direction",
+                   "move the camera or its target");
+    double sine =
+        glm::length(glm::cross(upward, direction)) / (glm::length(upward) * glm::length(direction));
+    if (!(sine > 1e-4))
+        fail_value(
+            where("up"), "\"up\" is zero or parallel to the viewing direction",
+            "choose an up vector that is not along look_at - eye, e.g. [0, 1, 0] or [0, 0, 1]");
+    scene_.camera = make_look_at_camera(projection, eye, look_at, up, fov, view_height);
+    const Camera& c = scene_.camera;
+    if (!all_finite(c.u) || !all_finite(c.v) || !all_finite(c.w))
+        fail_value("/camera", "the camera frame cannot be computed (coordinates too large)",
+                   "use smaller camera coordinates");
+}
+
+void SceneSections::read_lights(const json& root) {
+    const json* list = member(root, "lights");
+    if (!list) return;
+    require_array(*list, "/lights", "[{\"type\": \"point\", \"position\": [0, 5, 0]}]");
+    for (std::size_t i = 0; i < list->size(); ++i)
+        read_light((*list)[i], JsonPositions::child("/lights", i));
+}
+
+void SceneSections::read_light(const json& object, const std::string& pointer) {
+    static const std::vector<std::string> types{"point", "directional"};
+    require_object(object, pointer, "{\"type\": \"point\", \"position\": [0, 5, 0]}");
+    const json& type_value = required(object, pointer, "type", "a light", list_of(types));
+    Light light;
+    auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    if (choice(type_value, at("type"), types) == 0) {
+        check_keys(object, pointer, "a point light",
+                   {"type", "position", "intensity", "attenuation"});
+        light.kind = LightKind::Point;
+        light.position = vec3(required(object, pointer, "position", "a point light", "[x, y, z]"),
+                              at("position"));
+        if (const json* v = member(object, "attenuation")) {
+            Color a = color(*v, at("attenuation"));
+            if (a.x == 0 && a.y == 0 && a.z == 0)
+                fail_value(at("attenuation"), "\"attenuation\" must not be all zero",
+                           "use [1, 0, 0] for no fall-off");
+            light.attenuation = Vec3(a);
+        }
+    } else {
+        check_keys(object, pointer, "a directional light", {"type", "direction", "intensity"});
+        light.kind = LightKind::Directional;
+        light.direction = unit_direction(
+            required(object, pointer, "direction", "a directional light", "[0, -1, 0]"),
+            at("direction"), "give the direction the light travels, e.g. [0, -1, 0]");
+    }
+    if (const json* v = member(object, "intensity")) light.intensity = color(*v, at("intensity"));
+    scene_.lights.push_back(light);
+}
+
+}  // namespace rt::scene_internal
