@@ -40,7 +40,7 @@ std::string primitive_name(const Scene& scene, int id) {
 
 std::string material_name(const Scene& scene, int m) {
     if (m < 0 || std::size_t(m) >= scene.materials.size()) return "?";
-    const std::string& name = scene.materials[std::size_t(m)].name;
+    const std::string& name = scene.material_name(m);
     return name.empty() ? "#" + std::to_string(m) : "\"" + name + "\"";
 }
 
@@ -75,9 +75,7 @@ json node_json(const Scene& scene, const RayNode& n) {
                     {"primitive", n.hit_record.primitive},
                     {"primitive_kind", kind_name(kind)},
                     {"material", m},
-                    {"material_name", m >= 0 && std::size_t(m) < scene.materials.size()
-                                          ? scene.materials[std::size_t(m)].name
-                                          : std::string()}};
+                    {"material_name", scene.material_name(m)}};
     } else {
         j["hit"] = nullptr;
     }

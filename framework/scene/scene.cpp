@@ -8,10 +8,14 @@ bool Scene::is_primitive(int id) const {
     if (id < 0) return false;
     std::size_t index = 0;
     switch (primitive_kind(id, index)) {
-        case Kind::Sphere: return index < spheres.size();
-        case Kind::Plane: return index < planes.size();
-        case Kind::Triangle: return index < triangles.size();
-        case Kind::Box: return index < boxes.size();
+        case Kind::Sphere:
+            return index < spheres.size();
+        case Kind::Plane:
+            return index < planes.size();
+        case Kind::Triangle:
+            return index < triangles.size();
+        case Kind::Box:
+            return index < boxes.size();
     }
     return false;  // a kind this scene does not know
 }
@@ -20,12 +24,32 @@ std::size_t Scene::primitive_rank(int id) const {
     std::size_t index = 0;
     std::size_t offset = 0;
     switch (primitive_kind(id, index)) {
-        case Kind::Box: offset += triangles.size(); [[fallthrough]];
-        case Kind::Triangle: offset += planes.size(); [[fallthrough]];
-        case Kind::Plane: offset += spheres.size(); [[fallthrough]];
-        case Kind::Sphere: break;
+        case Kind::Box:
+            offset += triangles.size();
+            [[fallthrough]];
+        case Kind::Triangle:
+            offset += planes.size();
+            [[fallthrough]];
+        case Kind::Plane:
+            offset += spheres.size();
+            [[fallthrough]];
+        case Kind::Sphere:
+            break;
     }
     return offset + index;
+}
+
+int Scene::add_material(const Material& material, std::string name) {
+    material_names.resize(materials.size());
+    materials.push_back(material);
+    material_names.push_back(std::move(name));
+    return int(materials.size()) - 1;
+}
+
+const std::string& Scene::material_name(int m) const {
+    static const std::string unnamed;
+    return m >= 0 && std::size_t(m) < material_names.size() ? material_names[std::size_t(m)]
+                                                            : unnamed;
 }
 
 std::size_t Scene::primitive_count() const {
@@ -62,7 +86,8 @@ std::string Features::describe() const {
         if (!s.empty() && s.back() != ' ') s += ' ';
         s += name;
     };
-    add(spheres, "spheres"), add(planes, "planes"), add(triangles, "triangles"), add(boxes, "boxes");
+    add(spheres, "spheres"), add(planes, "planes"), add(triangles, "triangles"),
+        add(boxes, "boxes");
     s += " |";
     add(ambient, "ambient"), add(diffuse, "diffuse"), add(specular, "specular");
     add(emissive, "emissive"), add(reflection, "reflection"), add(refraction, "refraction");
@@ -77,8 +102,10 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
     scene.triangle_vertices(triangle, a, b, c);
     Vec3 geometric = glm::cross(b - a, c - a);
     Real geometric_length = glm::length(geometric);
-    if (geometric_length > 0 && std::isfinite(geometric_length)) geometric /= geometric_length;
-    else geometric = Vec3(0);
+    if (geometric_length > 0 && std::isfinite(geometric_length))
+        geometric /= geometric_length;
+    else
+        geometric = Vec3(0);
     if (scene.normals.empty()) return geometric;
 
     const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;
@@ -102,12 +129,18 @@ Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv) {
 
 const char* to_string(RenderMode mode) {
     switch (mode) {
-        case RenderMode::Directions: return "directions";
-        case RenderMode::Normals: return "normals";
-        case RenderMode::Depth: return "depth";
-        case RenderMode::PrimitiveId: return "primitive";
-        case RenderMode::Shaded: return "shaded";
-        case RenderMode::BvhVisits: return "bvh_visits";
+        case RenderMode::Directions:
+            return "directions";
+        case RenderMode::Normals:
+            return "normals";
+        case RenderMode::Depth:
+            return "depth";
+        case RenderMode::PrimitiveId:
+            return "primitive";
+        case RenderMode::Shaded:
+            return "shaded";
+        case RenderMode::BvhVisits:
+            return "bvh_visits";
     }
     return "?";
 }
@@ -116,6 +149,8 @@ const char* to_string(Accelerator accelerator) {
     return accelerator == Accelerator::Bvh ? "bvh" : "none";
 }
 
-Color background(const Scene& scene, const Vec3& /*direction*/) { return scene.background; }
+Color background(const Scene& scene, const Vec3& /*direction*/) {
+    return scene.background;
+}
 
 }  // namespace rt

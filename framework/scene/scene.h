@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "accel/bvh.h"
@@ -40,8 +41,8 @@ struct Triangle {
     int material = 0;
 };
 
+// Plain data, as uploaded to the GPU; a material's name is in Scene::material_names.
 struct Material {
-    std::string name;
     Color ambient{0};      // k_a
     Color diffuse{0.8f};   // k_d
     Color specular{0};     // k_s
@@ -63,6 +64,12 @@ struct Light {
 };
 
 // What a scene actually contains, so the renderer (and later the shader) computes only that.
+// The per-primitive, material and light records are plain data: copied to the GPU as they are
+// (after packing, framework/gpu/gpu_scene.h), so no strings or pointers inside.
+static_assert(std::is_trivially_copyable_v<Sphere> && std::is_trivially_copyable_v<Plane> &&
+              std::is_trivially_copyable_v<Box> && std::is_trivially_copyable_v<Triangle> &&
+              std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Light>);
+
 struct Features {
     bool spheres = false, planes = false, triangles = false, boxes = false;
     bool ambient = false, diffuse = false, specular = false, emissive = false;
@@ -104,6 +111,10 @@ struct Scene {
     std::vector<Vec2> uvs;
     std::vector<Triangle> triangles;
     std::vector<Material> materials;
+    // Parallel to `materials` (may be shorter for scenes built in code): what the scene file or
+    // the MTL library called each material, "" when unnamed. Kept out of Material so that every
+    // struct the GPU receives is plain data.
+    std::vector<std::string> material_names;
     std::vector<Light> lights;
 
     Features features;  // filled by update_features()
@@ -127,6 +138,10 @@ struct Scene {
     // True when `id` names a primitive of this scene.
     bool is_primitive(int id) const;
     std::size_t primitive_count() const;
+    // Appends a material and its name; returns its index.
+    int add_material(const Material& material, std::string name = "");
+    // The name of material `m`, or "" (unnamed, or out of range).
+    const std::string& material_name(int m) const;
     // The position of `id` when every primitive is listed spheres first, then planes, triangles
     // and boxes: the number debug colours are made from (the primitive-id view).
     std::size_t primitive_rank(int id) const;

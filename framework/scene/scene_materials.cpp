@@ -12,10 +12,7 @@ void SceneSections::read_materials(const json& root) {
             read_material((*list)[i], JsonPositions::child("/materials", i));
     }
     if (scene_.materials.empty()) {
-        Material fallback;
-        fallback.name = "default";
-        scene_.materials.push_back(fallback);
-        material_ids_["default"] = 0;
+        material_ids_["default"] = scene_.add_material(Material{}, "default");
     }
 }
 
@@ -25,16 +22,17 @@ void SceneSections::read_material(const json& object, const std::string& pointer
                {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
                 "transmissive", "ior"});
     Material m;
+    std::string name;
     if (const json* v = member(object, "name")) {
         std::string name_pointer = JsonPositions::child(pointer, "name");
-        m.name = string(*v, name_pointer, "\"red\"");
-        if (m.name.empty())
+        name = string(*v, name_pointer, "\"red\"");
+        if (name.empty())
             fail_value(name_pointer, "a material name must not be empty",
                        "name it or leave \"name\" out");
-        auto [it, added] = material_ids_.emplace(m.name, int(scene_.materials.size()));
+        auto [it, added] = material_ids_.emplace(name, int(scene_.materials.size()));
         if (!added)
             fail_value(name_pointer,
-                       "duplicate material name " + quote(m.name) + " (material " +
+                       "duplicate material name " + quote(name) + " (material " +
                            std::to_string(it->second) + " has it too)",
                        "give each material its own name");
     }
@@ -58,7 +56,7 @@ void SceneSections::read_material(const json& object, const std::string& pointer
         m.ior = float(real_in(
             *v, JsonPositions::child(pointer, "ior"), [](double d) { return d > 0; }, "> 0",
             "glass is about 1.5, water 1.33"));
-    scene_.materials.push_back(m);
+    scene_.add_material(m, name);
 }
 
 int SceneSections::material_of(const json& surface, const std::string& pointer) const {
@@ -74,8 +72,8 @@ int SceneSections::material_ref(const json& value, const std::string& at) const 
         auto it = material_ids_.find(name);
         if (it == material_ids_.end()) {
             std::vector<std::string> names;
-            for (const Material& m : scene_.materials)
-                if (!m.name.empty()) names.push_back(m.name);
+            for (const std::string& known : scene_.material_names)
+                if (!known.empty()) names.push_back(known);
             std::string fix = names.empty() ? "define it under \"materials\""
                               : closest(name, names)
                                   ? suggestion(name, names)

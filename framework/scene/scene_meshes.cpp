@@ -162,11 +162,9 @@ void SceneSections::read_obj_mesh(const json& file_value, const std::string& fil
         if (const int* known = in_scene(m.name)) {
             id = *known;
         } else if (m.defined) {
-            Material made = m.material;
-            made.name = file + ":" + m.name;
-            id = int(scene_.materials.size());
-            material_ids_.emplace(made.name, id);
-            scene_.materials.push_back(made);
+            const std::string made = file + ":" + m.name;
+            id = scene_.add_material(m.material, made);
+            material_ids_.emplace(made, id);
         }
         by_obj_material.push_back(id);
     }

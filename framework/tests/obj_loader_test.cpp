@@ -220,9 +220,9 @@ TEST(ObjLoader, MtlMaterialsBecomeSceneMaterials) {
     rt::Scene scene = rt::load_scene(scene_file);
     // The scene's own "plain" wins; red, glass and mirror come from the library, once each.
     ASSERT_EQ(scene.materials.size(), 5u);
-    EXPECT_EQ(scene.materials[2].name, "models/m.obj:red");
-    EXPECT_EQ(scene.materials[3].name, "models/m.obj:glass");
-    EXPECT_EQ(scene.materials[4].name, "models/m.obj:mirror");
+    EXPECT_EQ(scene.material_names[2], "models/m.obj:red");
+    EXPECT_EQ(scene.material_names[3], "models/m.obj:glass");
+    EXPECT_EQ(scene.material_names[4], "models/m.obj:mirror");
     const rt::Material &red = scene.materials[2], &glass = scene.materials[3], &mirror = scene.materials[4];
     EXPECT_EQ(red.ambient, rt::Color(0.1f, 0, 0));
     EXPECT_EQ(red.diffuse, rt::Color(0.8f, 0.1f, 0.1f));

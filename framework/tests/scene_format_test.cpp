@@ -65,7 +65,7 @@ void expect_same_scene(const rt::Scene& a, const rt::Scene& b) {
     for (std::size_t i = 0; i < a.vertices.size(); ++i) EXPECT_TRUE(same(a.vertices[i], b.vertices[i])) << i;
     ASSERT_EQ(a.materials.size(), b.materials.size());
     for (std::size_t i = 0; i < a.materials.size(); ++i) {
-        EXPECT_EQ(a.materials[i].name, b.materials[i].name);
+        EXPECT_EQ(a.material_name(int(i)), b.material_name(int(i)));
         EXPECT_TRUE(same(a.materials[i].diffuse, b.materials[i].diffuse)) << i;
         EXPECT_TRUE(same(a.materials[i].specular, b.materials[i].specular)) << i;
         EXPECT_TRUE(same(a.materials[i].shininess, b.materials[i].shininess)) << i;

@@ -63,7 +63,7 @@ TEST(SceneLoader, EmptyObjectGivesTheDefaults) {
     EXPECT_EQ(scene.camera.vertical_fov_degrees, 45);
     EXPECT_EQ(scene.camera.view_height, 2);
     ASSERT_EQ(scene.materials.size(), 1u);  // the implicit "default" material
-    EXPECT_EQ(scene.materials[0].name, "default");
+    EXPECT_EQ(scene.material_names[0], "default");
     EXPECT_EQ(scene.materials[0].shininess, 32.0f);
     EXPECT_EQ(scene.materials[0].ior, 1.5f);
     EXPECT_TRUE(scene.spheres.empty() && scene.planes.empty() && scene.boxes.empty());
@@ -121,7 +121,7 @@ TEST(SceneLoader, FullSceneFillsTheFlatArrays) {
     EXPECT_FLOAT_EQ(scene.ambient_light.x, 0.5f);
 
     ASSERT_EQ(scene.materials.size(), 2u);
-    EXPECT_EQ(scene.materials[0].name, "red");
+    EXPECT_EQ(scene.material_names[0], "red");
     EXPECT_FLOAT_EQ(scene.materials[0].diffuse.x, 0.8f);
     EXPECT_FLOAT_EQ(scene.materials[0].shininess, 64);
     EXPECT_FLOAT_EQ(scene.materials[0].reflective.z, 0.2f);
