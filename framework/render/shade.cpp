@@ -1,6 +1,7 @@
 #include "render/shade.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "render/accelerate.h"
 #include "student/stage02.h"
@@ -46,6 +47,33 @@ const SecondaryRay& branch(const Frame& f, int i) {
     return i == 0 ? f.branches.reflected : f.branches.refracted;
 }
 
+// Stage 04's shadows into `visibility`, one entry per scene light, for direct_light. Only the
+// lights whose Blinn-Phong term is not zero get a shadow ray (a shader does the same); the
+// others get 0, which their zero term ignores. With a BVH and nothing transparent, a shadow ray
+// only asks whether anything is in the way: stage 06's any-hit query, which gives what
+// light_transmittance would, faster.
+void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& material,
+                   const Vec3& normal, const Vec3& to_viewer, std::vector<Color>& visibility,
+                   TraceObserver* observer) {
+    const bool any_hit_shadows = uses_bvh(scene) && !scene.features.refraction;
+    visibility.assign(scene.lights.size(), Color(0));
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const LightSample sample = illuminate(scene.lights[i], at.point);
+        if (blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity) == Color(0))
+            continue;
+        Color transmittance;
+        if (any_hit_shadows) {
+            const ShadowRay shadow = shadow_ray(at, sample);
+            transmittance =
+                Color(bvh_intersect_any(scene, shadow.ray, shadow.t_range) ? 0.0f : 1.0f);
+        } else {
+            transmittance = light_transmittance(scene, at, sample);
+        }
+        if (observer) observer->shadow(at, i, sample, transmittance);
+        visibility[i] = transmittance;
+    }
+}
+
 // A frame's own work: the nearest hit, direct light (with stage 04's shadows when the scene has
 // them), and the secondary rays (stage 05) when the material reflects or transmits.
 void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
@@ -76,22 +104,11 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
 
     Color local;
     if (scene.features.shadows) {
-        // With a BVH and nothing transparent, a shadow ray only asks whether anything is in the
-        // way: stage 06's any-hit query, which gives what light_transmittance would, faster.
-        const bool any_hit_shadows = uses_bvh(scene) && !scene.features.refraction;
-        auto visibility = [&](std::size_t light, const LightSample& sample) {
-            Color transmittance;
-            if (any_hit_shadows) {
-                const ShadowRay shadow = shadow_ray(at, sample);
-                transmittance = Color(bvh_intersect_any(scene, shadow.ray, shadow.t_range) ? 0.0f : 1.0f);
-            } else {
-                transmittance = light_transmittance(scene, at, sample);
-            }
-            if (observer) observer->shadow(at, light, sample, transmittance);
-            return transmittance;
-        };
+        // One scratch array a thread: no allocation per hit once it has grown.
+        thread_local std::vector<Color> visibility;
+        shadow_lights(scene, at, material, lighting_normal, to_viewer, visibility, observer);
         local = direct_light(scene, material, at.point, lighting_normal, to_viewer,
-                             LightFilter(visibility));
+                             LightVisibility{visibility});
     } else {
         local = direct_light(scene, material, at.point, lighting_normal, to_viewer);
     }

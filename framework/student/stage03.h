@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
 #include "scene/scene.h"
 
@@ -17,25 +18,16 @@ struct LightSample {
     Color intensity{0};  // I_L * A_dist: the light arriving at the point
 };
 
-// How much of a light gets through to the point: (1, 1, 1) unobstructed, (0, 0, 0) in shadow,
-// a colour behind glass. Given by the framework (stage 04 computes it); an empty filter lets
-// every light through. Call it as visibility(light_index, sample). It refers to the callable it
-// was made from, which must outlive it (a lambda in the caller's scope).
-class LightFilter {
-  public:
-    LightFilter() = default;
-    template <typename F>
-    explicit LightFilter(const F& f)
-        : object_(&f), call_([](const void* o, std::size_t i, const LightSample& s) {
-              return (*static_cast<const F*>(o))(i, s);
-          }) {}
-    Color operator()(std::size_t light_index, const LightSample& sample) const {
-        return call_ ? call_(object_, light_index, sample) : Color(1);
-    }
+// How much of each light gets through to the point: (1, 1, 1) unobstructed, (0, 0, 0) in
+// shadow, a colour behind glass; read it as visibility[light_index]. The framework fills it
+// before it calls direct_light (stage 04 computes the values); empty, every light gets through.
+// Plain data (a pointer and a count), so a shader has the same: an array of vec3, one per light.
+struct LightVisibility {
+    std::span<const Color> per_light;  // one per scene light, or empty
 
-  private:
-    const void* object_ = nullptr;
-    Color (*call_)(const void*, std::size_t, const LightSample&) = nullptr;
+    Color operator[](std::size_t light_index) const {
+        return light_index < per_light.size() ? per_light[light_index] : Color(1);
+    }
 };
 
 // The light `light` sends to `point`.
@@ -53,6 +45,6 @@ Color blinn_phong(const Material& material, const Vec3& normal, const Vec3& to_v
 // I_direct = k_e + k_a I_a + sum over the scene's lights of visibility * blinn_phong(...), at a
 // surface point with unit `normal` facing the viewer and unit `to_viewer`.
 Color direct_light(const Scene& scene, const Material& material, const Vec3& point,
-                   const Vec3& normal, const Vec3& to_viewer, const LightFilter& visibility = {});
+                   const Vec3& normal, const Vec3& to_viewer, LightVisibility visibility = {});
 
 }  // namespace rt

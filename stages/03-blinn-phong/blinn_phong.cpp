@@ -58,18 +58,17 @@ Color blinn_phong(const Material& material, const Vec3& normal, const Vec3& to_v
     // END SOLUTION
 }
 
-// I_direct = k_e + k_a I_a + sum over lights of visibility(i, sample) * blinn_phong(...).
-// Ask illuminate() for each light's sample; visibility(i, sample) is (1, 1, 1) until stage 04.
+// I_direct = k_e + k_a I_a + sum over lights of visibility[i] * blinn_phong(...).
+// Ask illuminate() for each light's sample; visibility[i] is (1, 1, 1) until stage 04.
 Color direct_light(const Scene& scene, const Material& material, const Vec3& point,
-                   const Vec3& normal, const Vec3& to_viewer, const LightFilter& visibility) {
+                   const Vec3& normal, const Vec3& to_viewer, LightVisibility visibility) {
     // BEGIN SOLUTION
     Color colour = material.emissive + material.ambient * scene.ambient_light;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const LightSample sample = illuminate(scene.lights[i], point);
         const Color shading =
             blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity);
-        if (shading == Color(0)) continue;  // no shadow ray for a light that cannot contribute
-        colour += visibility(i, sample) * shading;
+        colour += visibility[i] * shading;
     }
     return colour;
     // STUB

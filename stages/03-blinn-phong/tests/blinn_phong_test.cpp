@@ -141,10 +141,8 @@ TEST_F(DirectLight, SumsLightsThroughVisibility) {
     // Light 0: 1 * 0.5; light 1: 5 / (1 + 9) * 0.5.
     expect_colour_near(direct_light(scene, m, p, n, v), Color(0.5f + 0.25f),
                        "two lights, no filter: 1 * 0.5 + 5 / (1 + 9) * 0.5");
-    auto half_second = [](std::size_t i, const LightSample&) {
-        return i == 1 ? Color(0.5f, 0, 1) : Color(1);
-    };
-    expect_colour_near(direct_light(scene, m, p, n, v, LightFilter(half_second)),
+    const Color half_second[] = {Color(1), Color(0.5f, 0, 1)};
+    expect_colour_near(direct_light(scene, m, p, n, v, LightVisibility{half_second}),
                        Color(0.5f + 0.125f, 0.5f, 0.75f),
                        "two lights, visibility (1, 1, 1) for light 0 and (0.5, 0, 1) for light 1");
 }
