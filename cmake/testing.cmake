@@ -5,7 +5,6 @@
 # discovered when ctest runs (so a starter tree whose stubs crash still builds and lists them).
 function(rt_add_gtest target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "PREFIX" "LABELS")
-  target_compile_definitions(${target} PRIVATE RT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(${target}
     TEST_PREFIX "${arg_PREFIX}"
     PROPERTIES TIMEOUT 300
@@ -21,12 +20,20 @@ function(rt_add_gtest target)
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
 endfunction()
 
-# rt_stage_tests(<NN> <target> SOURCES <files...> [LABELS <extra labels...>] [LIBRARIES <libs...>])
+# rt_stage_tests(<NN> <target> SOURCES <files...> [SCENE_IMAGES] [LABELS <extra labels...>]
+#                [LIBRARIES <libs...>])
 # A GoogleTest executable for stage NN: CTest names StageNN.<Suite>.<Test>, label stageNN plus
-# any extra labels.
+# any extra labels. SCENE_IMAGES adds the image tests of the stage's graded scenes
+# (framework/testing/scene_image_test.cpp), for the folder this is called from.
 function(rt_stage_tests number target)
-  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "SOURCES;LABELS;LIBRARIES")
+  cmake_parse_arguments(PARSE_ARGV 2 arg "SCENE_IMAGES" "" "SOURCES;LABELS;LIBRARIES")
   add_executable(${target} ${arg_SOURCES})
   target_link_libraries(${target} PRIVATE rt_testing GTest::gtest_main ${arg_LIBRARIES})
+  if(arg_SCENE_IMAGES)
+    get_filename_component(stage_folder ${CMAKE_CURRENT_SOURCE_DIR} NAME)
+    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/framework/testing/scene_image_test.cpp)
+    target_compile_definitions(${target} PRIVATE RT_STAGE="${stage_folder}")
+    target_link_libraries(${target} PRIVATE nlohmann_json::nlohmann_json)
+  endif()
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
 endfunction()

@@ -11,10 +11,8 @@
 
 #include "grade.h"
 #include "release.h"
+#include "core/source_dir.h"
 
-#ifndef RT_SOURCE_DIR
-#error "RT_SOURCE_DIR must name the course source tree (set by grader/CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -42,7 +40,7 @@ int main(int argc, char** argv) {
                "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
 
     rt::grader::GradeOptions grade;
-    grade.source = RT_SOURCE_DIR;
+    grade.source = rt::source_dir();
     std::string submission, stages, cache;
     app.add_option("submission", submission, "folder or .zip to grade ('.' : the working tree)");
     app.add_option("--stages", stages,
@@ -63,7 +61,7 @@ int main(int argc, char** argv) {
 
     rt::grader::ReleaseOptions release;
     std::string out;
-    std::string source = RT_SOURCE_DIR;
+    std::string source = rt::source_dir().string();
     CLI::App* release_cmd = app.add_subcommand(
         "release",
         "Write a student starter tree: the source tree with solutions replaced by stubs");

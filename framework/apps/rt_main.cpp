@@ -29,6 +29,7 @@
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
+#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 using namespace rt;
@@ -265,7 +266,7 @@ int main(int argc, char** argv) {
     render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
 
     fs::path gallery_out = "gallery";
-    fs::path source = RT_SOURCE_DIR;
+    fs::path source = source_dir();
     int gallery_threads = 0;
     auto* gallery_cmd = app.add_subcommand("gallery", "render every scene of every stage");
     gallery_cmd->add_option("--out", gallery_out, "output folder (default: ./gallery)");

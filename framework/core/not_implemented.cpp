@@ -1,4 +1,5 @@
 #include "core/not_implemented.h"
+#include "core/source_dir.h"
 
 #include <cstdio>
 #include <string>
@@ -12,7 +13,7 @@ thread_local std::uint64_t t_this_thread = 0;
 // the same on every machine and names the path a student knows.
 std::string relative_to_source(const char* file) {
     std::string path(file);
-    const std::string root = RT_SOURCE_DIR "/";
+    const std::string root = source_dir().string() + "/";
     if (path.rfind(root, 0) == 0) path.erase(0, root.size());
     return path;
 }

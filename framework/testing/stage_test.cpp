@@ -5,6 +5,7 @@
 #include "render/accelerate.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
+#include "core/source_dir.h"
 
 namespace rt::testing {
 
@@ -17,7 +18,7 @@ void StageTest::TearDown() {
                          "section to read)";
 }
 
-std::filesystem::path source_dir() { return RT_SOURCE_DIR; }
+std::filesystem::path source_dir() { return rt::source_dir(); }
 
 void expect_matches_reference(const std::string& stage, const std::string& scene_name) {
     const auto scene_file = source_dir() / "stages" / stage / "scenes" / (scene_name + ".json");

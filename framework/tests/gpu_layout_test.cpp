@@ -13,6 +13,7 @@
 
 #include "gl/egl_context.h"
 #include "gpu/gpu_scene.h"
+#include "core/source_dir.h"
 
 namespace rt::gpu {
 namespace {
@@ -68,7 +69,7 @@ std::string read_file(const std::string& path) {
 // Compiles and links the layout into a compute shader; "" on success, else the driver's log.
 std::string build_program(GLuint& program) {
     std::string source = "#version 430\nlayout(local_size_x = 1) in;\n" +
-                         read_file(RT_SOURCE_DIR "/shaders/scene_layout.glsl") +
+                         read_file(source_dir() / "shaders/scene_layout.glsl") +
                          "layout(std430, binding = 15) writeonly buffer Out { vec4 result; };\n"
                          "void main() {\n    vec4 acc = vec4(0);\n";
     for (const Member& m : members()) source += std::string("    ") + m.use + "\n";

@@ -15,6 +15,7 @@
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
+#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -22,7 +23,7 @@ namespace {
 
 using rt::testing::TempDir;
 
-const fs::path kBadObjs = fs::path(RT_SOURCE_DIR) / "framework" / "tests" / "bad_objs";
+const fs::path kBadObjs = rt::source_dir() / "framework" / "tests" / "bad_objs";
 
 rt::ObjMesh load(const fs::path& file, rt::Vec3 scale = rt::Vec3(1), rt::Vec3 translate = rt::Vec3(0)) {
     return rt::load_obj(file, file.filename().string(), scale, translate, 1'000'000);

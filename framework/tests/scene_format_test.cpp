@@ -17,12 +17,13 @@
 
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
+#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kSource = fs::path(RT_SOURCE_DIR);
+const fs::path kSource = rt::source_dir();
 
 std::string canonical(const std::string& text) { return rt::canonical_scene_text(text, "test.json", fs::path()); }
 

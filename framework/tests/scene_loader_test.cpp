@@ -15,12 +15,13 @@
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
+#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kBadScenes = fs::path(RT_SOURCE_DIR) / "framework" / "tests" / "bad_scenes";
+const fs::path kBadScenes = rt::source_dir() / "framework" / "tests" / "bad_scenes";
 
 using rt::testing::TempDir;
 

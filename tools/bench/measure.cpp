@@ -10,6 +10,7 @@
 #include "bench/cases.h"
 #include "camera/camera.h"
 #include "scene/scene_loader.h"
+#include "core/source_dir.h"
 
 namespace rt::bench::detail {
 namespace {
@@ -381,7 +382,7 @@ void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
     for (std::size_t k = 0; k < series.size(); ++k)
         points[k] = {series[k].name, series[k].n * series[k].n, 0, 0, 0};
     for (const std::string& name : files) {
-        const Scene scene = load_scene(std::string(RT_SOURCE_DIR) +
+        const Scene scene = load_scene(rt::source_dir().string() +
                                        "/stages/02-intersections/scenes/" + name + ".json");
         const SceneT<float> sf = convert<float>(scene, cfg.render_divisor);
         const SceneT<double> sd = convert<double>(scene, cfg.render_divisor);

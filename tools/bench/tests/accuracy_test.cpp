@@ -14,6 +14,7 @@
 #include "bench/accuracy.h"
 #include "bench/methods.h"
 #include "geometry/offset.h"
+#include "core/source_dir.h"
 
 namespace rt::bench {
 namespace {
@@ -130,7 +131,7 @@ TEST(Report, CountsMatchAFreshRun) {
     // run with the same seed must reproduce them (times differ from run to run and are ignored).
     // RT_ACCURACY_REPORT names another file (to check by hand that a wrong count fails).
     const char* other = std::getenv("RT_ACCURACY_REPORT");
-    std::ifstream in(other && *other ? std::string(other) : std::string(RT_SOURCE_DIR) + "/docs/accuracy.md");
+    std::ifstream in(other && *other ? std::string(other) : (rt::source_dir() / "docs/accuracy.md").string());
     ASSERT_TRUE(in) << "docs/accuracy.md is missing; regenerate it (see its first lines)";
     std::stringstream text;
     text << in.rdbuf();
