@@ -5,8 +5,9 @@
 #include <CGAL/intersections.h>
 
 #include <algorithm>
-#include <map>
 #include <utility>
+
+#include "geometry/procedural_mesh.h"
 
 namespace rt::exact {
 
@@ -240,35 +241,10 @@ Mesh cube(Real s) {
 }
 
 Mesh icosphere(int levels, Real radius) {
+    const TriangleMesh ico = make_icosphere(levels, radius);
     Mesh m;
-    const Real g = (1 + std::sqrt(Real(5))) / 2;
-    const Vec3 base[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
-                           {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
-                           {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    for (const Vec3& v : base) m.vertices.push_back(glm::normalize(v) * radius);
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<int, int>, int> midpoint;
-        auto mid = [&](int u, int v) {
-            const auto key = std::minmax(u, v);
-            const auto it = midpoint.find(key);
-            if (it != midpoint.end()) return it->second;
-            m.vertices.push_back(glm::normalize(m.vertices[u] + m.vertices[v]) * radius);
-            return midpoint[key] = int(m.vertices.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> next;
-        for (const auto& t : m.triangles) {
-            const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-            next.push_back({t[0], ab, ca});
-            next.push_back({t[1], bc, ab});
-            next.push_back({t[2], ca, bc});
-            next.push_back({ab, bc, ca});
-        }
-        m.triangles = std::move(next);
-    }
+    m.vertices = ico.vertices;
+    for (const auto& t : ico.triangles) m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
     return m;
 }
 

@@ -223,9 +223,9 @@ Mesh octahedron(Real s = 1);
 // The cube [-s, s]^3 as 12 triangles (each face split along a diagonal).
 Mesh cube(Real s = 1);
 
-// An icosahedron subdivided `levels` times, vertices pushed onto the sphere of radius `radius`
-// (in Real arithmetic: the vertices are whatever floats that gives; shared vertices are shared
-// by index, so the mesh is closed exactly).
+// An icosahedron subdivided `levels` times on the sphere of radius `radius`: the framework's
+// make_icosphere (geometry/procedural_mesh.h; computed in double, rounded to Real). Shared
+// vertices are shared by index, so the mesh is closed exactly.
 Mesh icosphere(int levels, Real radius = 1);
 
 // True when the ray (t > 0) meets the closed mesh, exactly: some triangle is hit, or the ray
