@@ -1,6 +1,7 @@
 # Runs `rt render` on every malformed scene in DIR: each must exit with code 1 (not a crash) and
 # print exactly one line of the form "<file>:<line>:<col>: error: ...".
 # Usage: cmake -DRT=<rt> -DDIR=<bad_scenes> -DOUT=<dir> -P check_bad_scenes.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/render_one_line_error.cmake)
 file(GLOB scenes ${DIR}/*.json)
 list(LENGTH scenes count)
 if(count LESS 15)
@@ -9,14 +10,10 @@ endif()
 file(MAKE_DIRECTORY ${OUT})
 set(failures "")
 foreach(scene ${scenes})
-  execute_process(COMMAND ${RT} render ${scene} -o ${OUT}/bad.png -q
-                  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE out TIMEOUT 20)
-  string(STRIP "${err}" err)
+  render_one_line_error(${scene} err problem)
   get_filename_component(name ${scene} NAME)
-  if(NOT rc EQUAL 1)
-    string(APPEND failures "\n  ${name}: exit code '${rc}' (expected 1)")
-  elseif(err MATCHES "\n")
-    string(APPEND failures "\n  ${name}: more than one line:\n${err}")
+  if(NOT problem STREQUAL "")
+    string(APPEND failures "\n  ${name}: ${problem}")
   elseif(NOT err MATCHES "^[^\n]*${name}:[0-9]+:[0-9]+: error: ")
     string(APPEND failures "\n  ${name}: not of the form file:line:col: error: ...: ${err}")
   else()

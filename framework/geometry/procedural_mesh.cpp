@@ -9,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/split_mix64.h"
+
 namespace rt {
 
 namespace {
@@ -19,29 +21,10 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // ---- deterministic helpers ------------------------------------------------------------------
 
-// splitmix64 (Steele, Lea and Flood 2014): a tiny generator whose output is fixed by its seed.
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    // Uniform in [0, 1): the top 53 bits as a fraction.
-    double unit() { return double(next() >> 11) * 0x1.0p-53; }
-    double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-
-private:
-    std::uint64_t state_;
-};
-
 // A hash of (seed, i, j) for value noise: the first output of a generator seeded with all three.
 std::uint64_t hash3(std::uint64_t seed, std::int64_t i, std::int64_t j) {
-    SplitMix64 g(seed ^ (std::uint64_t(i) * 0xD1B54A32D192ED03ull) ^
-                 (std::uint64_t(j) * 0xABC98388FB8FAC03ull));
-    return g.next();
+    return SplitMix64::hash(seed ^ (std::uint64_t(i) * 0xD1B54A32D192ED03ull) ^
+                            (std::uint64_t(j) * 0xABC98388FB8FAC03ull));
 }
 
 // The Taylor coefficients (-1)^k / n! of sin (odd n) and cos (even n) up to n = 18, folded by

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/split_mix64.h"
 #include "geometry/offset.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/obj_loader.h"
@@ -107,13 +108,6 @@ Ray pixel_ray(const Camera& c, int i, int j, int width, int height) {
     return Ray{as_float(c.eye), as_float(glm::normalize(x * c.u + y * c.v - c.w))};
 }
 
-// SplitMix64: a counter-based generator, so ray i's random numbers depend on (seed, i) only.
-std::uint64_t mix(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
 Real uniform(std::uint64_t bits) {
     return Real(bits >> 40) * Real(1.0 / 16777216.0);
 }  // [0, 1)
@@ -171,8 +165,11 @@ BenchRays make_rays(const Scene& scene, const Framing& framing, const BvhBenchCo
         shadow.rays.push_back(Ray{shadow_origin, l});
         shadow.ranges.push_back(Interval{0, glm::length(framing.light - shadow_origin)});
 
-        const std::uint64_t key = mix(config.seed ^ mix(std::uint64_t(i)));
-        const Vec3 d = as_float(cosine_direction(sp.normal, uniform(key), uniform(mix(key))));
+        // SplitMix64 as a hash: ray i's random numbers depend on (seed, i) only.
+        const std::uint64_t key =
+            SplitMix64::hash(config.seed ^ SplitMix64::hash(std::uint64_t(i)));
+        const Vec3 d =
+            as_float(cosine_direction(sp.normal, uniform(key), uniform(SplitMix64::hash(key))));
         diffuse.rays.push_back(Ray{as_float(offset_ray_origin(sp.point, error, sp.normal, d)), d});
         diffuse.ranges.push_back(Interval{0, kInfinity});
     }

@@ -40,23 +40,19 @@ using TriFn = Result<T> (*)(const V3<T>&, const V3<T>&, const V3<T>&, const V3<T
 template <typename T>
 using SphFn = Result<T> (*)(const V3<T>&, const V3<T>&, const V3<T>&, T, T, T);
 
-template <typename T>
-struct TriMethod {
+// A method of methods.h under the name the report gives it.
+template <typename Fn>
+struct Method {
     const char* name;
-    TriFn<T> fn;
+    Fn fn;
 };
 template <typename T>
-std::array<TriMethod<T>, 4> tri_methods() {
+std::array<Method<TriFn<T>>, 4> tri_methods() {
     return {{{"Cramer", &cramer<T>}, {"Moeller-Trumbore", &moller_trumbore<T>},
              {"watertight", &watertight<T>}, {"watertight FMA", &watertight<T, true>}}};
 }
 template <typename T>
-struct SphMethod {
-    const char* name;
-    SphFn<T> fn;
-};
-template <typename T>
-std::array<SphMethod<T>, 3> sphere_methods() {
+std::array<Method<SphFn<T>>, 3> sphere_methods() {
     return {{{"textbook", &sphere_textbook<T>}, {"q-form", &sphere_qform<T>},
              {"RTG ch. 7", &sphere_rtg<T>}}};
 }

@@ -142,6 +142,17 @@ Result<T> pick_root(T t0, T t1, T tmin, T tmax) {
     return {};
 }
 
+// The roots of a t^2 + 2 hb t + c = 0, given its discriminant disc = hb^2 - a c however computed,
+// in the q-form: q = -(hb + sign(hb) sqrt(disc)), roots q / a and c / q, so that neither root is
+// a difference of nearly equal numbers. The smallest inside (tmin, tmax).
+template <typename T>
+Result<T> qform_root(T a, T hb, T c, T disc, T tmin, T tmax) {
+    if (disc < 0) return {};
+    const T q = -(hb + std::copysign(std::sqrt(disc), hb));
+    const T t0 = q / a;
+    return pick_root(t0, q != 0 ? c / q : t0, tmin, tmax);
+}
+
 // The textbook quadratic: b = 2 d.(o-c), disc = b^2 - 4ac, t = (-b -+ sqrt(disc)) / 2a.
 template <typename T>
 Result<T> sphere_textbook(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radius, T tmin,
@@ -157,8 +168,7 @@ Result<T> sphere_textbook(const V3<T>& o, const V3<T>& d, const V3<T>& center, T
     return pick_root((-b - s) / (2 * a), (-b + s) / (2 * a), tmin, tmax);
 }
 
-// The stable q-form: half b, disc = b^2 - a c as before, roots q / a and c / q with
-// q = -(b + sign(b) sqrt(disc)), so neither root is a difference of nearly equal numbers.
+// The stable q-form: half b (hb = d.(o-c)), disc = hb^2 - a c, roots by qform_root.
 template <typename T>
 Result<T> sphere_qform(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radius, T tmin,
                        T tmax) {
@@ -167,11 +177,7 @@ Result<T> sphere_qform(const V3<T>& o, const V3<T>& d, const V3<T>& center, T ra
     if (!(a > 0) || !std::isfinite(a)) return {};
     const T hb = glm::dot(oc, d);
     const T c = glm::dot(oc, oc) - radius * radius;
-    const T disc = hb * hb - a * c;
-    if (disc < 0) return {};
-    const T q = -(hb + std::copysign(std::sqrt(disc), hb));
-    const T t0 = q / a;
-    return pick_root(t0, q != 0 ? c / q : t0, tmin, tmax);
+    return qform_root(a, hb, c, hb * hb - a * c, tmin, tmax);
 }
 
 // Ray Tracing Gems, ch. 7 (Haines, Guenther, Akenine-Moeller): the discriminant as
@@ -187,11 +193,7 @@ Result<T> sphere_rtg(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radi
     const T hb = glm::dot(oc, d);
     const T c = glm::dot(oc, oc) - radius * radius;
     const V3<T> l = oc - (hb / a) * d;
-    const T disc = a * (radius * radius - glm::dot(l, l));
-    if (disc < 0) return {};
-    const T q = -(hb + std::copysign(std::sqrt(disc), hb));
-    const T t0 = q / a;
-    return pick_root(t0, q != 0 ? c / q : t0, tmin, tmax);
+    return qform_root(a, hb, c, a * (radius * radius - glm::dot(l, l)), tmin, tmax);
 }
 
 // ---------------------------------------------------------------------------------------------

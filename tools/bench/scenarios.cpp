@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <set>
+
+#include "geometry/procedural_mesh.h"
 
 namespace rt::bench::detail {
 
@@ -118,35 +119,13 @@ MeshData dyadic_box(Rng& rng, const V3d& offset) {
     out.tri = m.triangles;
     return out;
 }
-// An icosahedron subdivided once (80 faces) on the unit sphere, computed in double and stored in
-// float, whatever rt::Real is (so a double build makes the same cases).
+// An icosahedron subdivided once (80 faces) on the unit sphere (make_icosphere), rounded to float
+// before it is moved, whatever rt::Real is (so a double build makes the same cases).
 MeshData icosphere_mesh(const V3d& offset) {
-    const double g = (1 + std::sqrt(5.0)) / 2;
-    std::vector<V3d> v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
-                          {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
-                          {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    for (V3d& p : v) p = glm::normalize(p);
-    const std::vector<std::array<int, 3>> base = {
-        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-        const auto key = std::minmax(a, b);
-        const auto it = midpoint.find(key);
-        if (it != midpoint.end()) return it->second;
-        v.push_back(glm::normalize(v[a] + v[b]));
-        return midpoint[key] = int(v.size()) - 1;
-    };
+    const TriangleMesh ico = make_icosphere(1);
     MeshData out;
-    for (const auto& t : base) {
-        const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-        out.tri.push_back({t[0], ab, ca});
-        out.tri.push_back({t[1], bc, ab});
-        out.tri.push_back({t[2], ca, bc});
-        out.tri.push_back({ab, bc, ca});
-    }
-    for (const V3d& p : v) out.v.push_back(to_f(p + offset));
+    for (const Vec3& p : ico.vertices) out.v.push_back(to_f(to_d(V3f(p)) + offset));
+    for (const auto& t : ico.triangles) out.tri.push_back({int(t[0]), int(t[1]), int(t[2])});
     return out;
 }
 
