@@ -1,6 +1,6 @@
 // The data of a bounding volume hierarchy (stage 06), in flat arrays so that the GPU port can
 // upload it as two storage buffers unchanged. The builder and the traversal are student code
-// (stages/06-bvh/bvh.cpp, declared in student/stage06.h); this file holds only what the
+// (stages/06-bvh/bvh.cpp, declared in stage_api/stage06.h); this file holds only what the
 // framework needs to store, check and draw a tree.
 #pragma once
 

@@ -29,7 +29,6 @@ struct Camera {
 Camera make_look_at_camera(Projection projection, Vec3 eye, Vec3 target, Vec3 up,
                            Real vertical_fov_degrees, Real view_height);
 
-// The primary ray through image point `pixel` (stage 01): dispatches on camera.projection.
-Ray camera_ray(const Camera& camera, Vec2 pixel, ImageSize size);
+// The primary ray through a pixel calls stage 01's code: render/camera_ray.h.
 
 }  // namespace rt

@@ -8,7 +8,7 @@
 
 namespace rt {
 
-// Same contract as intersect_triangle in framework/student/stage02.h (uv = barycentrics of b, c).
+// Same contract as intersect_triangle in framework/stage_api/stage02.h (uv = barycentrics of b, c).
 // Backface hits are reported (no culling). Edges and vertices count as inside.
 bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
                                    Interval t_range, Hit& hit);

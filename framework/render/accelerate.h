@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "student/stage06.h"
+#include "stage_api/stage06.h"
 
 namespace rt {
 

@@ -9,9 +9,10 @@
 
 #include "core/not_implemented.h"
 #include "render/accelerate.h"
+#include "render/camera_ray.h"
 #include "render/progress.h"
 #include "render/shade.h"
-#include "student/stage02.h"
+#include "stage_api/stage02.h"
 
 namespace rt {
 namespace {

@@ -4,10 +4,11 @@
 #include <vector>
 
 #include "render/accelerate.h"
-#include "student/stage02.h"
-#include "student/stage03.h"
-#include "student/stage04.h"
-#include "student/stage05.h"
+#include "render/camera_ray.h"
+#include "stage_api/stage02.h"
+#include "stage_api/stage03.h"
+#include "stage_api/stage04.h"
+#include "stage_api/stage05.h"
 
 namespace rt {
 namespace {

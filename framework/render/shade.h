@@ -13,7 +13,7 @@
 
 #include "geometry/offset.h"
 #include "scene/scene.h"
-#include "student/stage03.h"
+#include "stage_api/stage03.h"
 
 namespace rt {
 

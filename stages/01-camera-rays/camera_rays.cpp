@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/not_implemented.h"
-#include "student/stage01.h"
+#include "stage_api/stage01.h"
 
 namespace rt {
 

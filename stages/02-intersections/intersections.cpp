@@ -3,13 +3,13 @@
 //
 // You edit only this file. Tests: ctest --test-dir build -L stage02 --output-on-failure
 // The contract shared by every function here is written at the top of
-// framework/student/stage02.h: open t-range, set_face_normal, leave `hit` alone on a miss, and
+// framework/stage_api/stage02.h: open t-range, set_face_normal, leave `hit` alone on a miss, and
 // never crash on a zero, NaN or infinite direction (report a miss).
 #include <algorithm>
 #include <cmath>
 
 #include "core/not_implemented.h"
-#include "student/stage02.h"
+#include "stage_api/stage02.h"
 
 namespace rt {
 

@@ -2,12 +2,12 @@
 // Conventions (colours are linear, light directions): docs/conventions.md
 //
 // You edit only this file. Tests: ctest --test-dir build -L stage03 --output-on-failure
-// The contracts are in framework/student/stage03.h.
+// The contracts are in framework/stage_api/stage03.h.
 #include <algorithm>
 #include <cmath>
 
 #include "core/not_implemented.h"
-#include "student/stage03.h"
+#include "stage_api/stage03.h"
 
 namespace rt {
 

@@ -3,10 +3,10 @@
 // docs/conventions.md#secondary-ray-origins. Never add an epsilon of your own.
 //
 // You edit only this file. Tests: ctest --test-dir build -L stage04 --output-on-failure
-// The contracts are in framework/student/stage04.h.
+// The contracts are in framework/stage_api/stage04.h.
 #include "core/not_implemented.h"
-#include "student/stage02.h"
-#include "student/stage04.h"
+#include "stage_api/stage02.h"
+#include "stage_api/stage04.h"
 
 namespace rt {
 

@@ -2,13 +2,13 @@
 // Conventions (front_face, nested objects, ray origins): docs/conventions.md
 //
 // You edit only this file. Tests: ctest --test-dir build -L stage05 --output-on-failure
-// The contracts are in framework/student/stage05.h. The framework's shading driver
+// The contracts are in framework/stage_api/stage05.h. The framework's shading driver
 // (framework/render/shade.cpp) does the recursion: it calls secondary_rays() at each hit.
 #include <algorithm>
 #include <cmath>
 
 #include "core/not_implemented.h"
-#include "student/stage05.h"
+#include "stage_api/stage05.h"
 
 namespace rt {
 

@@ -1,5 +1,5 @@
 // Stage 06: a bounding volume hierarchy. Handout: stages/06-bvh/README.md
-// The node layout is framework/accel/bvh.h; the contracts are in framework/student/stage06.h.
+// The node layout is framework/accel/bvh.h; the contracts are in framework/stage_api/stage06.h.
 //
 // You edit only this file. Tests: ctest --test-dir build -L stage06 --output-on-failure
 // Check a tree any time with validate_bvh (framework/accel/bvh.h): it names the first problem.
@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "core/not_implemented.h"
-#include "student/stage06.h"
+#include "stage_api/stage06.h"
 
 namespace rt {
 

@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "accel/bvh_input.h"
-#include "student/stage02.h"
-#include "student/stage06.h"
+#include "stage_api/stage02.h"
+#include "stage_api/stage06.h"
 
 namespace rt::bench {
 

@@ -18,8 +18,8 @@
 
 #include "accel/bvh_input.h"
 #include "bench/machine.h"
-#include "student/stage02.h"
-#include "student/stage06.h"
+#include "stage_api/stage02.h"
+#include "stage_api/stage06.h"
 
 namespace rt::bench {
 

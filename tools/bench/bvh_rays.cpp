@@ -11,7 +11,7 @@
 #include "geometry/offset.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/obj_loader.h"
-#include "student/stage06.h"
+#include "stage_api/stage06.h"
 
 namespace rt::bench {
 

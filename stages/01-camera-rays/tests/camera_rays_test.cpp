@@ -6,7 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "student/stage01.h"
+#include "render/camera_ray.h"
+#include "stage_api/stage01.h"
 #include "testing/expect_near.h"
 #include "testing/stage_test.h"
 

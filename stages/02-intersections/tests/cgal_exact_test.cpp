@@ -23,7 +23,7 @@
 
 #include "testing/exact_reference.h"
 #include "geometry/watertight.h"
-#include "student/stage02.h"
+#include "stage_api/stage02.h"
 #include "testing/stage_test.h"
 
 namespace rt {

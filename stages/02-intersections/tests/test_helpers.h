@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "student/stage02.h"
+#include "stage_api/stage02.h"
 #include "testing/expect_near.h"
 #include "testing/stage_test.h"
 

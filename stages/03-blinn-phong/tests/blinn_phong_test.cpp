@@ -7,7 +7,7 @@
 #include <string>
 
 #include "render/shade.h"
-#include "student/stage03.h"
+#include "stage_api/stage03.h"
 #include "testing/expect_near.h"
 #include "testing/stage_test.h"
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "render/render.h"
-#include "student/stage02.h"
-#include "student/stage04.h"
+#include "stage_api/stage02.h"
+#include "stage_api/stage04.h"
 #include "testing/expect_near.h"
 #include "testing/stage_test.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "render/shade.h"
-#include "student/stage05.h"
+#include "stage_api/stage05.h"
 #include "testing/expect_near.h"
 #include "testing/stage_test.h"
 

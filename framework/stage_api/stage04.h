@@ -4,7 +4,7 @@
 #pragma once
 
 #include "geometry/offset.h"
-#include "student/stage03.h"
+#include "stage_api/stage03.h"
 
 namespace rt {
 

@@ -1,6 +1,6 @@
-#include "camera/camera.h"
+#include "render/camera_ray.h"
 
-#include "student/stage01.h"
+#include "stage_api/stage01.h"
 
 namespace rt {
 

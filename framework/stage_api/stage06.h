@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
-#include "student/stage02.h"
+#include "stage_api/stage02.h"
 
 namespace rt {
 
