@@ -99,14 +99,16 @@ int run_package(const fs::path& source, const fs::path& out, std::ostream& log) 
     for (auto it = fs::recursive_directory_iterator(source, ec);
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         const std::string name = it->path().filename().string();
-        if (it.depth() == 0 && (name == ".git" || name.starts_with("build") || name == "gallery" ||
-                                name == "out")) {
+        if (it.depth() == 0 &&
+            (name == ".git" || name.starts_with("build") || name == "gallery" || name == "out")) {
             it.disable_recursion_pending();
             continue;
         }
         const fs::path rel = it->path().lexically_relative(source);
-        if (it->is_directory()) fs::create_directories(src / rel);
-        else if (it->is_regular_file()) fs::copy_file(it->path(), src / rel);
+        if (it->is_directory())
+            fs::create_directories(src / rel);
+        else if (it->is_regular_file())
+            fs::copy_file(it->path(), src / rel);
     }
     // RT_AUTOGRADER_ROOT (default /autograder) lets the tests run both scripts in a folder that
     // stands in for Gradescope's layout (grader/tests/adversarial.sh, case package_run).

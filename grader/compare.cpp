@@ -36,7 +36,8 @@ Scored score_file(const fs::path& image_file, const fs::path& reference, const S
     }
     const ImageScore score = score_image(actual, read_image8(reference), scene.thresholds);
     char head[64];
-    std::snprintf(head, sizeof head, "score %.2f of %g: ", score.fraction * scene.points, scene.points);
+    std::snprintf(head, sizeof head, "score %.2f of %g: ", score.fraction * scene.points,
+                  scene.points);
     s.ok = score.compare.size_matches && score.fraction >= 1;
     s.line = head + score.metrics;
     return s;
@@ -46,7 +47,8 @@ Scored score_file(const fs::path& image_file, const fs::path& reference, const S
 
 int run_compare(const CompareRequest& r, std::ostream& log) {
     const auto specs = load_stage_specs(r.source);
-    auto find_scene = [&](const std::string& stage_folder, const std::string& name) -> const SceneSpec* {
+    auto find_scene = [&](const std::string& stage_folder,
+                          const std::string& name) -> const SceneSpec* {
         for (const auto& s : specs)
             if (fs::path(s.folder).filename() == stage_folder)
                 for (const auto& sc : s.scenes)
@@ -55,14 +57,15 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
     };
     if (!r.image.empty()) {
         const auto slash = r.scene.find('/');
-        const SceneSpec* scene = slash == std::string::npos
-                                     ? nullptr
-                                     : find_scene(r.scene.substr(0, slash), r.scene.substr(slash + 1));
+        const SceneSpec* scene = slash == std::string::npos ? nullptr
+                                                            : find_scene(r.scene.substr(0, slash),
+                                                                         r.scene.substr(slash + 1));
         if (!scene) {
             log << "rt-grade compare: --scene must name a graded scene as NN-name/scene\n";
             return 2;
         }
-        const Scored s = score_file(r.image, r.source / "reference_images" / (r.scene + ".png"), *scene);
+        const Scored s =
+            score_file(r.image, r.source / "reference_images" / (r.scene + ".png"), *scene);
         log << r.scene << ": " << (s.ok ? "PASS " : "FAIL ") << s.line << "\n";
         return s.ok ? 0 : 1;
     }
@@ -77,7 +80,8 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
         r.threads > 0 ? r.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     int failed = 0, total = 0;
     for (const auto& s : specs) {
-        if (!r.stages.empty() && std::count(r.stages.begin(), r.stages.end(), s.number) == 0) continue;
+        if (!r.stages.empty() && std::count(r.stages.begin(), r.stages.end(), s.number) == 0)
+            continue;
         const std::string stage = fs::path(s.folder).filename().string();
         for (const auto& sc : s.scenes) {
             ++total;
@@ -93,8 +97,11 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             Scored result;
-            if (code != 0) result.line = "the renderer exited with code " + std::to_string(code) + ": " + out;
-            else result = score_file(exr, r.source / "reference_images" / stage / (sc.name + ".png"), sc);
+            if (code != 0)
+                result.line = "the renderer exited with code " + std::to_string(code) + ": " + out;
+            else
+                result =
+                    score_file(exr, r.source / "reference_images" / stage / (sc.name + ".png"), sc);
             failed += !result.ok;
             char timing[32];
             std::snprintf(timing, sizeof timing, " (%.1f s)", seconds);

@@ -15,10 +15,10 @@ namespace rt::grader {
 
 // stages/NN-name/grading.json
 struct ImageThresholds {
-    int tolerance = 2;            // 8-bit steps a channel may differ
-    double pass_percent = 0.1;    // failing pixels at or below this: full points
-    double fail_percent = 2.0;    // at or above this: no points; linear in between
-    bool neighbourhood = true;    // forgive anti-aliased edges (3x3 reference neighbourhood)
+    int tolerance = 2;          // 8-bit steps a channel may differ
+    double pass_percent = 0.1;  // failing pixels at or below this: full points
+    double fail_percent = 2.0;  // at or above this: no points; linear in between
+    bool neighbourhood = true;  // forgive anti-aliased edges (3x3 reference neighbourhood)
 };
 struct SceneSpec {
     std::string name;  // scenes/<name>.json, reference_images/<stage>/<name>.png
@@ -27,11 +27,11 @@ struct SceneSpec {
     ImageThresholds thresholds;
 };
 struct UnitGroup {
-    std::string binary;                        // a GoogleTest target of the instructor's build
-    std::vector<std::string> include{"*"};     // gtest-style patterns over Suite.Test
+    std::string binary;                     // a GoogleTest target of the instructor's build
+    std::vector<std::string> include{"*"};  // gtest-style patterns over Suite.Test
     std::vector<std::string> exclude;
-    std::vector<std::string> hidden_sources;   // relative to the stage folder; never released
-    double points = 1;                         // each test
+    std::vector<std::string> hidden_sources;  // relative to the stage folder; never released
+    double points = 1;                        // each test
     std::string visibility = "visible";
 };
 struct StageSpec {
@@ -49,17 +49,17 @@ struct StageSpec {
 std::vector<StageSpec> load_stage_specs(const std::filesystem::path& source);
 
 struct GradeOptions {
-    std::filesystem::path source;       // the instructor's tree
-    std::filesystem::path cache;        // grading workspaces (default: <source>/build/grader-cache)
-    std::filesystem::path submission;   // folder, .zip, or "." for the working tree
-    std::vector<int> stages;            // empty: every stage with a grading.json
-    std::filesystem::path results;      // Gradescope results.json (optional)
-    std::filesystem::path html;         // HTML report (optional)
-    int jobs = 0;                       // parallel test processes (0: hardware threads)
-    bool quiet = false;                 // no terminal summary
-    bool started_only = false;          // no --stages: grade the stages started (self-grading)
-    bool reveal_hidden = false;         // terminal summary shows hidden tests (instructor)
-    double time_limit = 0;              // > 0: overrides every test's and render's wall/CPU limit
+    std::filesystem::path source;      // the instructor's tree
+    std::filesystem::path cache;       // grading workspaces (default: <source>/build/grader-cache)
+    std::filesystem::path submission;  // folder, .zip, or "." for the working tree
+    std::vector<int> stages;           // empty: every stage with a grading.json
+    std::filesystem::path results;     // Gradescope results.json (optional)
+    std::filesystem::path html;        // HTML report (optional)
+    int jobs = 0;                      // parallel test processes (0: hardware threads)
+    bool quiet = false;                // no terminal summary
+    bool started_only = false;         // no --stages: grade the stages started (self-grading)
+    bool reveal_hidden = false;        // terminal summary shows hidden tests (instructor)
+    double time_limit = 0;             // > 0: overrides every test's and render's wall/CPU limit
 };
 
 struct GradeSummary {

@@ -34,7 +34,6 @@ bool read_render(const fs::path& file, Image& image, std::string& why) {
     return true;
 }
 
-
 ImageScore score_image(const Image8& actual, const Image8& reference, const ImageThresholds& th) {
     ImageScore score;
     CompareOptions co;
@@ -49,7 +48,8 @@ ImageScore score_image(const Image8& actual, const Image8& reference, const Imag
         return score;
     }
     const double failing = score.compare.failing_percent;
-    if (failing <= th.pass_percent) score.fraction = 1;
+    if (failing <= th.pass_percent)
+        score.fraction = 1;
     else if (failing < th.fail_percent)
         score.fraction = (th.fail_percent - failing) / (th.fail_percent - th.pass_percent);
     score.ssim = ssim_luminance(actual, reference);

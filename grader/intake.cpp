@@ -15,7 +15,6 @@ namespace {
 constexpr std::uintmax_t kMaxStudentFileBytes = 256 * 1024;
 constexpr std::uintmax_t kMaxZipBytes = 64ull << 20;
 
-
 bool odd_name(const std::string& name) {
     if (name.empty() || name[0] == '-' || name.size() > 100) return true;
     for (unsigned char c : name)
@@ -27,7 +26,8 @@ bool odd_name(const std::string& name) {
 // A quoted include must name a framework header or a file of the stage folder (not hidden/);
 // absolute paths, "..", macros and .incbin/#embed would let the compiler read files the
 // student must not see (hidden tests, references) into error messages or the binary.
-std::string check_source(const std::string& text, const fs::path& ws_src, const std::string& folder) {
+std::string check_source(const std::string& text, const fs::path& ws_src,
+                         const std::string& folder) {
     if (text.find('\0') != std::string::npos) return "contains NUL bytes (not a source file)";
     std::string joined;
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -130,8 +130,7 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
         const std::string stage_name = fs::path(s.folder).filename().string();
         for (const auto& f : s.student_files) {
             const std::string key = s.folder + "/" + f;
-            for (const std::string& candidate :
-                 {key, stage_name + "/" + f, f}) {
+            for (const std::string& candidate : {key, stage_name + "/" + f, f}) {
                 const fs::path p = sub / candidate;
                 const auto st = fs::symlink_status(p, ec);
                 if (ec || !fs::exists(st)) continue;
@@ -163,7 +162,8 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
     // Files of the stages not graded in this run, by every name they may be submitted under.
     std::map<std::string, int> other_stage_files;
     for (const auto& s : all) {
-        if (std::any_of(graded.begin(), graded.end(), [&](const StageSpec& g) { return g.number == s.number; }))
+        if (std::any_of(graded.begin(), graded.end(),
+                        [&](const StageSpec& g) { return g.number == s.number; }))
             continue;
         const std::string stage_name = fs::path(s.folder).filename().string();
         for (const auto& f : s.student_files)
@@ -183,10 +183,10 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
         const auto st = it->symlink_status();
         if (fs::is_directory(st)) continue;
         if (claimed.count(rel)) continue;
-        std::string reason = fs::is_symlink(st)      ? "symbolic link"
-                             : odd_name(name)        ? "odd file name"
+        std::string reason = fs::is_symlink(st)         ? "symbolic link"
+                             : odd_name(name)           ? "odd file name"
                              : !fs::is_regular_file(st) ? "not a regular file"
-                                                     : "not a student file of the graded stages";
+                                                        : "not a student file of the graded stages";
         if (reason.starts_with("not a student") && other_stage_files.count(rel)) {
             // In a whole tree, other stages' files are expected; loose ones are worth a word.
             if (rel.starts_with("stages/")) {

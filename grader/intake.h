@@ -16,9 +16,9 @@ struct Ignored {
 };
 
 struct Intake {
-    std::filesystem::path root;  // where the files are (extracted zip or the folder)
-    std::filesystem::path temp;  // to remove afterwards
-    std::map<std::string, std::string> files;     // "stages/NN/file" -> content (accepted)
+    std::filesystem::path root;                // where the files are (extracted zip or the folder)
+    std::filesystem::path temp;                // to remove afterwards
+    std::map<std::string, std::string> files;  // "stages/NN/file" -> content (accepted)
     std::map<std::string, std::string> rejected;  // "stages/NN/file" -> why
     std::vector<Ignored> ignored;
     int ignored_other = 0;  // files outside the whitelist beyond the listed ones

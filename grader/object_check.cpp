@@ -50,7 +50,8 @@ std::string check_and_localize(const fs::path& object, const std::set<std::strin
             problems += "  " + demangle(name) + " (an IFUNC resolver: runs before main)\n";
         } else if (name == "main") {
             problems += "  main (the test runner's main is the grader's)\n";
-        } else if (name.find("7testing") != std::string::npos || name.find("gtest") != std::string::npos) {
+        } else if (name.find("7testing") != std::string::npos ||
+                   name.find("gtest") != std::string::npos) {
             problems += "  " + demangle(name) + " (GoogleTest code)\n";
         } else if (strong(type) && plan.instructor_symbols.count(name)) {
             problems += "  " + demangle(name) + " (defined by the framework or the tests)\n";

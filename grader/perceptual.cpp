@@ -51,8 +51,8 @@ double ssim_luminance(const Image8& a, const Image8& b) {
             my /= wsum;
             const double vx = sxx / wsum - mx * mx, vy = syy / wsum - my * my;
             const double cov = sxy / wsum - mx * my;
-            total += ((2 * mx * my + c1) * (2 * cov + c2)) /
-                     ((mx * mx + my * my + c1) * (vx + vy + c2));
+            total +=
+                ((2 * mx * my + c1) * (2 * cov + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
             ++count;
         }
     }

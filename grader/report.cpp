@@ -74,8 +74,8 @@ void write_html_report(const Report& report, const fs::path& file) {
          "font-size:12px}.note{background:#fff3cd;padding:.5em;border:1px solid #e0c070}"
          "</style></head><body>\n";
     h += "<h1>rt-grade: " + points(score) + " / " + points(max_score) + " points</h1>\n";
-    h += "<p>Sandbox: " + html_escape(report.isolation) + ". Graded in " +
-         points(report.seconds) + " s.</p>\n";
+    h += "<p>Sandbox: " + html_escape(report.isolation) + ". Graded in " + points(report.seconds) +
+         " s.</p>\n";
     // Failures first: what to fix, each with its first line of reason and a link to its row.
     std::string fails;
     int failed = 0;
@@ -86,12 +86,15 @@ void write_html_report(const Report& report, const fs::path& file) {
         if (first.size() > 160) first = first.substr(0, 157) + "...";
         fails += "<tr><td><a href=\"#t" + html_escape(t.number) + "-" + std::to_string(failed) +
                  "\">" + html_escape(t.name) + "</a></td><td>" + points(t.score) + " / " +
-                 points(t.max_score) + "</td><td><code>" + html_escape(first) + "</code></td></tr>\n";
+                 points(t.max_score) + "</td><td><code>" + html_escape(first) +
+                 "</code></td></tr>\n";
     }
     if (failed > 0)
         h += "<h2 class=\"failed\">" + std::to_string(failed) + " failing test" +
-             (failed == 1 ? "" : "s") + "</h2>\n<table><tr><th>test</th><th>points</th>"
-             "<th>first line of the reason</th></tr>\n" + fails + "</table>\n";
+             (failed == 1 ? "" : "s") +
+             "</h2>\n<table><tr><th>test</th><th>points</th>"
+             "<th>first line of the reason</th></tr>\n" +
+             fails + "</table>\n";
     else
         h += "<h2 class=\"passed\">Every test passes.</h2>\n";
     if (!report.general.empty())
@@ -101,7 +104,8 @@ void write_html_report(const Report& report, const fs::path& file) {
     {
         int k = 0;
         for (const auto& t : report.tests)
-            if (t.status != "passed") anchors[&t] = "t" + html_escape(t.number) + "-" + std::to_string(++k);
+            if (t.status != "passed")
+                anchors[&t] = "t" + html_escape(t.number) + "-" + std::to_string(++k);
     }
     auto table = [&](int stage) {
         std::string rows;
@@ -109,7 +113,8 @@ void write_html_report(const Report& report, const fs::path& file) {
             if (t.stage != stage) continue;
             const std::string cls = t.status == "passed" ? "passed" : "failed";
             const auto anchor = anchors.find(&t);
-            rows += "<tr" + (anchor == anchors.end() ? std::string() : " id=\"" + anchor->second + "\"") +
+            rows += "<tr" +
+                    (anchor == anchors.end() ? std::string() : " id=\"" + anchor->second + "\"") +
                     "><td>" + html_escape(t.number) + "</td><td>" + html_escape(t.name) +
                     "</td><td class=\"" + cls + "\">" + cls + "</td><td>" + points(t.score) +
                     " / " + points(t.max_score) + "</td><td>" + html_escape(t.visibility) +
@@ -122,7 +127,8 @@ void write_html_report(const Report& report, const fs::path& file) {
         }
         if (rows.empty()) return std::string();
         return "<table><tr><th>#</th><th>test</th><th>status</th><th>points</th>"
-               "<th>visibility</th><th>output</th></tr>\n" + rows + "</table>\n";
+               "<th>visibility</th><th>output</th></tr>\n" +
+               rows + "</table>\n";
     };
     h += table(0);
     for (const auto& s : report.stages) {
@@ -139,13 +145,15 @@ void write_html_report(const Report& report, const fs::path& file) {
         for (const auto& t : report.tests) {
             if (t.stage != s.number || !t.is_scene) continue;
             h += "<div class=\"scene\"><b>" + html_escape(t.name) + "</b> <span class=\"" +
-                 std::string(t.status == "passed" ? "passed" : "failed") + "\">" +
-                 points(t.score) + " / " + points(t.max_score) + "</span><div class=\"trio\">";
+                 std::string(t.status == "passed" ? "passed" : "failed") + "\">" + points(t.score) +
+                 " / " + points(t.max_score) + "</span><div class=\"trio\">";
             auto img = [&](const std::string& png, const char* label) {
                 h += "<div>";
-                if (png.empty()) h += "<div style=\"width:256px;height:64px\">(no image)</div>";
-                else h += "<img alt=\"" + std::string(label) + "\" src=\"data:image/png;base64," +
-                          base64(png) + "\">";
+                if (png.empty())
+                    h += "<div style=\"width:256px;height:64px\">(no image)</div>";
+                else
+                    h += "<img alt=\"" + std::string(label) + "\" src=\"data:image/png;base64," +
+                         base64(png) + "\">";
                 h += "<br>" + std::string(label) + "</div>";
             };
             img(t.student_png, "your image");
@@ -189,7 +197,8 @@ void write_terminal_summary(const Report& report, std::ostream& out, bool reveal
             while ((p = t.output.find("Read the handout: ", p)) != std::string::npos) {
                 const auto end = t.output.find('\n', p);
                 const std::string hint = t.output.substr(p + 18, end - p - 18);
-                if (std::find(hints.begin(), hints.end(), hint) == hints.end()) hints.push_back(hint);
+                if (std::find(hints.begin(), hints.end(), hint) == hints.end())
+                    hints.push_back(hint);
                 p = end;
             }
         }

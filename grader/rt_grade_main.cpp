@@ -9,14 +9,15 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/source_dir.h"
 #include "grade.h"
 #include "release.h"
-#include "core/source_dir.h"
-
 
 namespace {
 
-void on_signal(int) { rt::grader::g_interrupted = true; }
+void on_signal(int) {
+    rt::grader::g_interrupted = true;
+}
 
 std::vector<int> parse_stages(const std::string& list) {
     std::vector<int> stages;
@@ -36,8 +37,9 @@ int main(int argc, char** argv) {
     // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
     prctl(PR_SET_DUMPABLE, 0);
     CLI::App app{"rt-grade: grade submissions and release starter trees"};
-    app.footer("Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
-               "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
+    app.footer(
+        "Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
+        "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
 
     rt::grader::GradeOptions grade;
     grade.source = rt::source_dir();
@@ -47,7 +49,8 @@ int main(int argc, char** argv) {
                    "comma-separated stage numbers (default: every graded stage; for '.', the "
                    "stages you have started)");
     app.add_option("--results", grade.results, "write Gradescope's results.json here");
-    app.add_option("--html", grade.html, "write the HTML report here (default for '.': report.html)");
+    app.add_option("--html", grade.html,
+                   "write the HTML report here (default for '.': report.html)");
     app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
         ->check(CLI::ExistingDirectory);
     if (const char* c = std::getenv("RT_GRADE_CACHE")) cache = c;
@@ -55,8 +58,9 @@ int main(int argc, char** argv) {
                    "grading workspaces (default: $RT_GRADE_CACHE, else SOURCE/build/grader-cache)");
     app.add_option("--jobs", grade.jobs, "test processes at a time (default: all cores)");
     app.add_flag("--quiet", grade.quiet, "no terminal summary");
-    app.add_option("--time-limit", grade.time_limit,
-                   "seconds for every test and render, overriding grading.json (tests of the grader)");
+    app.add_option(
+        "--time-limit", grade.time_limit,
+        "seconds for every test and render, overriding grading.json (tests of the grader)");
     app.add_flag("--reveal-hidden", grade.reveal_hidden, "summary also lists non-visible tests");
 
     rt::grader::ReleaseOptions release;
@@ -88,10 +92,14 @@ int main(int argc, char** argv) {
 
     std::string batch_dir, batch_out = "grades";
     int batch_jobs = 1;
-    CLI::App* batch_cmd = app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
-    batch_cmd->add_option("dir", batch_dir, "folder of submissions")->required()->check(CLI::ExistingDirectory);
+    CLI::App* batch_cmd =
+        app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
+    batch_cmd->add_option("dir", batch_dir, "folder of submissions")
+        ->required()
+        ->check(CLI::ExistingDirectory);
     batch_cmd->add_option("--out", batch_out, "where scores.csv and the reports go");
-    batch_cmd->add_option("--jobs", batch_jobs, "submissions graded at a time")->check(CLI::Range(1, 64));
+    batch_cmd->add_option("--jobs", batch_jobs, "submissions graded at a time")
+        ->check(CLI::Range(1, 64));
 
     std::string package_out = "autograder.zip";
     CLI::App* package_cmd = app.add_subcommand("package", "Build the Gradescope autograder zip");
@@ -99,12 +107,14 @@ int main(int argc, char** argv) {
 
     rt::grader::CompareRequest compare;
     CLI::App* compare_cmd = app.add_subcommand(
-        "compare", "Score images with the grader's comparison (calibration): every graded scene "
-                   "rendered by --renderer, or one --image as --scene NN-name/scene");
+        "compare",
+        "Score images with the grader's comparison (calibration): every graded scene "
+        "rendered by --renderer, or one --image as --scene NN-name/scene");
     compare_cmd->add_option("--renderer", compare.renderer, "an rt binary (trusted build)");
     compare_cmd->add_option("--threads", compare.threads, "render threads (default: all cores)");
     compare_cmd->add_option("--image", compare.image, "an image: .exr linear, .png display values");
-    compare_cmd->add_option("--scene", compare.scene, "the graded scene the image is, NN-name/scene");
+    compare_cmd->add_option("--scene", compare.scene,
+                            "the graded scene the image is, NN-name/scene");
 
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
     for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
@@ -123,7 +133,8 @@ int main(int argc, char** argv) {
         if (*prepare_cmd) {
             return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
         }
-        if (*batch_cmd) return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
+        if (*batch_cmd)
+            return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
         if (*compare_cmd) {
             compare.source = grade.source;
             compare.stages = grade.stages;

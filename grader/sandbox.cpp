@@ -210,7 +210,8 @@ int count_processes_of(uid_t uid, bool zombies_too) {
         std::string text;
         std::getline(stat_file, text);
         const auto close = text.rfind(')');
-        if (!zombies_too && close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z')
+        if (!zombies_too && close != std::string::npos && close + 2 < text.size() &&
+            text[close + 2] == 'Z')
             continue;
         ++count;
     }
@@ -283,7 +284,8 @@ RunResult run_sandboxed(const RunSpec& spec) {
     // Writable binds belong to the run's uid (it is not root and must write there).
     for (const auto& b : spec.binds)
         if (b.writable && lease.uid != 0 && chown(b.host.c_str(), lease.uid, lease.uid) != 0) {
-            result.output = "sandbox setup failed: cannot hand " + b.host.string() + " to the sandbox\n";
+            result.output =
+                "sandbox setup failed: cannot hand " + b.host.string() + " to the sandbox\n";
             return result;
         }
     // Captures live in a folder the child never sees; created exclusively, never followed.

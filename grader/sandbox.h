@@ -34,9 +34,9 @@ struct Limits {
     double wall_seconds = 10;
     int cpu_seconds = 10;
     long long address_space_mb = 4096;
-    long long memory_mb = 512;  // RLIMIT_DATA: heap and anonymous memory
-    long long file_size_mb = 16;  // also caps captured stdout/stderr
-    int processes = 16;           // RLIMIT_NPROC of the run's own uid (threads count)
+    long long memory_mb = 512;           // RLIMIT_DATA: heap and anonymous memory
+    long long file_size_mb = 16;         // also caps captured stdout/stderr
+    int processes = 16;                  // RLIMIT_NPROC of the run's own uid (threads count)
     long long output_bytes = 64 * 1024;  // what is kept of stdout+stderr for the report
 };
 
@@ -45,10 +45,10 @@ struct RunResult {
     int exit_code = -1;
     int signal = 0;
     double wall_seconds = 0;
-    std::string output;        // stdout then stderr, truncated to Limits::output_bytes
+    std::string output;  // stdout then stderr, truncated to Limits::output_bytes
     bool output_truncated = false;
-    int survivors = 0;         // processes of the run's uid still alive after the reaper
-    uid_t uid = 0;             // the leased uid the program ran as (0: none, e.g. not root)
+    int survivors = 0;  // processes of the run's uid still alive after the reaper
+    uid_t uid = 0;      // the leased uid the program ran as (0: none, e.g. not root)
     // "exited with code 3", "crashed: SIGSEGV", "timed out after 10 s", "file size limit hit"...
     std::string describe(const Limits& limits) const;
     bool ok() const { return end == End::Exited && exit_code == 0; }
@@ -62,12 +62,12 @@ struct Bind {
 };
 
 struct RunSpec {
-    std::vector<std::string> argv;    // argv[0]: an absolute path inside the jail
+    std::vector<std::string> argv;  // argv[0]: an absolute path inside the jail
     std::filesystem::path working_dir;
     std::filesystem::path capture_dir;  // trusted-only folder for stdout/stderr (never a bind)
     std::vector<Bind> binds;
     std::vector<std::filesystem::path> empty_dirs;  // inside binds: covered by an empty tmpfs
-    const std::atomic<bool>* cancel = nullptr;  // set: the child is killed as on a timeout
+    const std::atomic<bool>* cancel = nullptr;      // set: the child is killed as on a timeout
     std::vector<std::string> env;  // KEY=VALUE; the child gets only these (plus PATH, HOME)
     Limits limits;
     // Descriptors of the grader passed to the program: {grader fd, fd number in the program}.

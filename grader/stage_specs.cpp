@@ -26,8 +26,9 @@ ImageThresholds parse_thresholds(const json& j, ImageThresholds t) {
 
 void check_visibility(const std::string& v, const fs::path& file) {
     if (v != "visible" && v != "hidden" && v != "after_due_date" && v != "after_published")
-        throw std::runtime_error(file.string() + ": visibility \"" + v +
-                                 "\" is not one of visible, hidden, after_due_date, after_published");
+        throw std::runtime_error(
+            file.string() + ": visibility \"" + v +
+            "\" is not one of visible, hidden, after_due_date, after_published");
 }
 
 }  // namespace

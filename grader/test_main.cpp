@@ -57,11 +57,15 @@ long raw_syscall(long number, long a, long b, long c) {
 #endif
 }
 
-long raw_read(int fd, void* data, long size) { return raw_syscall(SYS_read, fd, long(data), size); }
+long raw_read(int fd, void* data, long size) {
+    return raw_syscall(SYS_read, fd, long(data), size);
+}
 long raw_write(int fd, const void* data, long size) {
     return raw_syscall(SYS_write, fd, long(data), size);
 }
-void raw_close(int fd) { raw_syscall(SYS_close, fd, 0, 0); }
+void raw_close(int fd) {
+    raw_syscall(SYS_close, fd, 0, 0);
+}
 
 int parse_fd(const char* text) {
     if (!text || !*text) return -1;
@@ -73,7 +77,9 @@ int parse_fd(const char* text) {
     return fd;
 }
 
-bool is_hex(unsigned char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); }
+bool is_hex(unsigned char c) {
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+}
 
 // Runs before every constructor of default priority, the student's included.
 __attribute__((constructor(101))) void take_channel() {
@@ -101,7 +107,7 @@ __attribute__((constructor(101))) void take_channel() {
 
 // A record: "RTG1 <nonce> <PASS|FAIL|END> <text>\n", built in a fixed buffer.
 class Record {
-public:
+  public:
     void add(const char* text) {
         while (*text && size_ < kCapacity - 1) data_[size_++] = *text++;
     }
@@ -129,7 +135,7 @@ public:
         for (int i = 0; i < size_; ++i) static_cast<volatile char*>(data_)[i] = 0;
     }
 
-private:
+  private:
     static constexpr int kCapacity = 1024;
     char data_[kCapacity];
     int size_ = 0;

@@ -76,7 +76,8 @@ std::string first_failure(const std::string& output) {
             block[k].find("Expected:") != std::string::npos || block[k].starts_with("  Actual:"))
             last_gtest = k;
     std::string what;
-    const std::size_t from = last_gtest == std::string::npos || last_gtest + 1 >= block.size() ? 0 : last_gtest + 1;
+    const std::size_t from =
+        last_gtest == std::string::npos || last_gtest + 1 >= block.size() ? 0 : last_gtest + 1;
     for (std::size_t k = from; k < block.size(); ++k) {
         const auto first = block[k].find_first_not_of(' ');
         if (first == std::string::npos) continue;
@@ -98,7 +99,8 @@ std::string first_errors(const std::string& log) {
     if (first == lines.size()) first = 0;
     std::size_t from = first;
     for (std::size_t i = first; i-- > 0;)
-        if (lines[i].find("In function") != std::string::npos || lines[i].find("In member function") != std::string::npos) {
+        if (lines[i].find("In function") != std::string::npos ||
+            lines[i].find("In member function") != std::string::npos) {
             from = i;
             break;
         } else if (lines[i].find("warning:") != std::string::npos) {

@@ -58,8 +58,10 @@ void write_atomically(const fs::path& file, std::string_view text) {
 std::string shell_quote(const std::string& word) {
     std::string out = "'";
     for (char c : word) {
-        if (c == '\'') out += "'\\''";
-        else out += c;
+        if (c == '\'')
+            out += "'\\''";
+        else
+            out += c;
     }
     return out + "'";
 }
@@ -183,11 +185,20 @@ std::string html_escape(std::string_view text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -202,7 +213,7 @@ std::string clean_output(std::string_view text) {
             ++i;
             continue;
         }
-        if (c == '\n' || c == '\t' || (c >= 0x20 && c != 0x7f) ) out += char(c);
+        if (c == '\n' || c == '\t' || (c >= 0x20 && c != 0x7f)) out += char(c);
     }
     // Invalid UTF-8 would make the JSON writer throw: keep ASCII only beyond this point.
     std::string ascii;

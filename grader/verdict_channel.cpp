@@ -61,8 +61,9 @@ bool channel_passed(const std::string& records, const std::string& nonce, const 
     bool end_ok = false;
     while (std::getline(lines, line)) {
         if (!line.starts_with(prefix)) {
-            why = "the test's result channel holds a record that did not come from the test "
-                  "runner (tampering?)";
+            why =
+                "the test's result channel holds a record that did not come from the test "
+                "runner (tampering?)";
             return false;
         }
         const std::string rest = line.substr(prefix.size());

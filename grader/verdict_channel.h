@@ -13,10 +13,10 @@
 namespace rt::grader {
 
 struct VerdictChannel {
-    std::string nonce;   // 32 hex digits
-    int nonce_read = -1; // the child's RT_GRADE_NONCE_FD
-    int child_end = -1;  // the child's RT_GRADE_RESULT_FD (send only, in effect)
-    int our_end = -1;    // read by the grader
+    std::string nonce;    // 32 hex digits
+    int nonce_read = -1;  // the child's RT_GRADE_NONCE_FD
+    int child_end = -1;   // the child's RT_GRADE_RESULT_FD (send only, in effect)
+    int our_end = -1;     // read by the grader
     bool ok = false;
     VerdictChannel();
     ~VerdictChannel();

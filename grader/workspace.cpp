@@ -14,9 +14,9 @@
 #include <cstring>
 #include <sstream>
 
+#include "object_check.h"
 #include "release.h"
 #include "sandbox.h"
-#include "object_check.h"
 #include "util.h"
 
 namespace fs = std::filesystem;
@@ -30,9 +30,10 @@ constexpr const char* kStagesArchive = "lib/librt_stages.a";
 // What the workspace copies of the tree: what a build reads. A student's renders, reports and
 // notes at the top of their tree must not count as a change of the framework.
 bool skipped_top_level(const std::string& name) {
-    static const std::set<std::string> kept = {"CMakeLists.txt", "CMakePresets.json", "cmake",
-                                               "framework", "stages", "grader", "shaders",
-                                               "tools", "scripts", "reference_images", ".rt-grade"};
+    static const std::set<std::string> kept = {
+        "CMakeLists.txt", "CMakePresets.json", "cmake", "framework", "stages",
+        "grader",         "shaders",           "tools", "scripts",   "reference_images",
+        ".rt-grade"};
     return !kept.count(name);
 }
 
@@ -90,11 +91,13 @@ std::vector<std::string> split_words(const std::string& command) {
 // A command of CMake's Ninja generator as argv; our paths never need shell quoting (checked).
 std::vector<std::string> command_argv(std::string command, const std::string& what) {
     if (command.starts_with(": && ")) command = command.substr(5);
-    if (const auto end = command.rfind(" && :"); end != std::string::npos && end + 5 == command.size())
+    if (const auto end = command.rfind(" && :");
+        end != std::string::npos && end + 5 == command.size())
         command.resize(end);
     if (command.find_first_of("'\"\\$`;|&<>") != std::string::npos)
-        throw std::runtime_error("rt-grade: the " + what +
-                                 " command needs a shell (a path with spaces or quotes?): " + command);
+        throw std::runtime_error(
+            "rt-grade: the " + what +
+            " command needs a shell (a path with spaces or quotes?): " + command);
     return split_words(command);
 }
 
@@ -107,16 +110,17 @@ int run_with_progress(const std::string& command, std::string& output, std::ostr
     while (std::fgets(line, sizeof line, pipe)) {
         output += line;
         int done = 0, total = 0;
-        if (std::sscanf(line, "[%d/%d]", &done, &total) == 2 && total > 0 && done * 10 / total > shown) {
+        if (std::sscanf(line, "[%d/%d]", &done, &total) == 2 && total > 0 &&
+            done * 10 / total > shown) {
             shown = done * 10 / total;
-            log << "rt-grade: building the grading workspace: " << done << " of " << total << " steps\n"
+            log << "rt-grade: building the grading workspace: " << done << " of " << total
+                << " steps\n"
                 << std::flush;
         }
     }
     const int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
-
 
 std::vector<std::string> build_targets(const std::vector<StageSpec>& specs) {
     std::set<std::string> targets{"rt"};
@@ -191,7 +195,8 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     const auto files = source_files(o.source, student_keys, hash);
     const std::string key = hex(hash);
     fs::create_directories(w.cache);
-    const int lock = open((w.cache / "workspace.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
+    const int lock =
+        open((w.cache / "workspace.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
     struct Unlock {
         int fd;
         ~Unlock() { close(fd); }
@@ -236,8 +241,10 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         if (student_keys.count(f)) {
             bool from_source = false;
             const std::string stub = stub_text(o.source, f, text, from_source);
-            if (from_source) solution_from_source.insert(f.string());
-            else write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
+            if (from_source)
+                solution_from_source.insert(f.string());
+            else
+                write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
             write_text(w.priv / "pristine" / (f.string() + ".stub"), stub);
             text = stub;
         }
@@ -257,14 +264,19 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     hidden_cmake += "# The trusted test main: verdicts through the nonce channel.\n";
     for (const auto& t : build_targets(specs)) {
         if (t == "rt") continue;
-        hidden_cmake += "get_target_property(rt_grade_libs " + t + " LINK_LIBRARIES)\n"
-                        "list(TRANSFORM rt_grade_libs REPLACE \"^GTest::gtest_main$\" \"GTest::gtest\")\n"
-                        "set_property(TARGET " + t +
-                        " PROPERTY LINK_LIBRARIES ${rt_grade_libs} rt_grade_test_main)\n"
-                        "target_link_options(" + t + " PRIVATE -s)\n";
+        hidden_cmake +=
+            "get_target_property(rt_grade_libs " + t +
+            " LINK_LIBRARIES)\n"
+            "list(TRANSFORM rt_grade_libs REPLACE \"^GTest::gtest_main$\" \"GTest::gtest\")\n"
+            "set_property(TARGET " +
+            t +
+            " PROPERTY LINK_LIBRARIES ${rt_grade_libs} rt_grade_test_main)\n"
+            "target_link_options(" +
+            t + " PRIVATE -s)\n";
     }
     sync("grader_hidden.cmake", hidden_cmake);
-    sync("CMakeLists.txt", read_text(o.source / "CMakeLists.txt") + "\ninclude(grader_hidden.cmake)\n");
+    sync("CMakeLists.txt",
+         read_text(o.source / "CMakeLists.txt") + "\ninclude(grader_hidden.cmake)\n");
     {
         std::vector<fs::path> stale;
         for (auto it = fs::recursive_directory_iterator(w.src, ec);
@@ -284,7 +296,8 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     }
     const auto targets = build_targets(specs);
     cmd = "ninja -C " + shell_quote(w.build.string());
-    if (const char* j = std::getenv("RT_GRADE_BUILD_JOBS")) cmd += " -j " + std::to_string(std::atoi(j));
+    if (const char* j = std::getenv("RT_GRADE_BUILD_JOBS"))
+        cmd += " -j " + std::to_string(std::atoi(j));
     for (const auto& t : targets) cmd += " " + t;
     out.clear();
     if (run_with_progress(cmd, out, log) != 0) {
@@ -312,7 +325,8 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         // Link commands, with the stage archive and the output as placeholders.
         for (const auto& t : targets) {
             std::string text;
-            run_argv({"/usr/bin/ninja", "-C", w.build.string(), "-t", "commands", "bin/" + t}, "/", text);
+            run_argv({"/usr/bin/ninja", "-C", w.build.string(), "-t", "commands", "bin/" + t}, "/",
+                     text);
             std::string last;
             std::istringstream lines(text);
             for (std::string line; std::getline(lines, line);)
@@ -363,8 +377,9 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
                 const fs::path raw = w.priv / "objects" / (object_name(k) + ".raw.o");
                 std::string compile_log;
                 if (!compile_in_jail(w, partial, k, text, w.root / "compile", raw, compile_log)) {
-                    log << "rt-grade: error: the " << (solution ? "solution" : "stub") << " of " << k
-                        << " does not compile in the sandbox:\n" << compile_log;
+                    log << "rt-grade: error: the " << (solution ? "solution" : "stub") << " of "
+                        << k << " does not compile in the sandbox:\n"
+                        << compile_log;
                     return false;
                 }
                 if (!solution) {

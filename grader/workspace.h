@@ -60,11 +60,13 @@ bool compile_in_jail(const Workspace& w, const BuildPlan& plan, const std::strin
 // Refuses what must not reach the link (main, test or framework symbols, code that runs before
 // main), then writes `out` with every global symbol but the API localized. Returns the problems,
 // one per line ("" when the object is fine).
-std::string check_and_localize(const std::filesystem::path& object, const std::set<std::string>& api,
-                               const BuildPlan& plan, const std::filesystem::path& out);
+std::string check_and_localize(const std::filesystem::path& object,
+                               const std::set<std::string>& api, const BuildPlan& plan,
+                               const std::filesystem::path& out);
 
 // Archives `objects` and links `targets` into `bin`. Returns false with the linker's output.
-bool link_stage(const Workspace& w, const BuildPlan& plan, const std::vector<std::filesystem::path>& objects,
+bool link_stage(const Workspace& w, const BuildPlan& plan,
+                const std::vector<std::filesystem::path>& objects,
                 const std::vector<std::string>& targets, const std::filesystem::path& bin,
                 std::string& log);
 

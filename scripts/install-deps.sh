@@ -5,6 +5,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake ninja-build pkg-config git
+  clang-format                        # Format.ClangFormat: the code style CI enforces
   libglm-dev                # vector math
   libpng-dev libopenexr-dev # PNG and EXR in and out (fast process start)
   libopenimageio-dev        # every other image format, loaded on first use

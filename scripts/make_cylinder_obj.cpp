@@ -7,10 +7,13 @@
 int main() {
     const int segments = 32;
     const double pi = 3.14159265358979323846;
-    std::printf("# closed cylinder: radius 1, y in [-1, 1], %d segments (scripts/make_cylinder_obj.cpp)\n", segments);
+    std::printf(
+        "# closed cylinder: radius 1, y in [-1, 1], %d segments (scripts/make_cylinder_obj.cpp)\n",
+        segments);
     for (int i = 0; i < segments; ++i) {  // vertices 1..2n: bottom and top rings, interleaved
         const double a = 2 * pi * i / segments;
-        std::printf("v %.6f -1 %.6f\nv %.6f 1 %.6f\n", std::cos(a), -std::sin(a), std::cos(a), -std::sin(a));
+        std::printf("v %.6f -1 %.6f\nv %.6f 1 %.6f\n", std::cos(a), -std::sin(a), std::cos(a),
+                    -std::sin(a));
     }
     std::printf("v 0 -1 0\nv 0 1 0\n");  // cap centres: 2n+1, 2n+2
     const int bottom_centre = 2 * segments + 1, top_centre = 2 * segments + 2;

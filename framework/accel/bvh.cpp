@@ -21,10 +21,16 @@ float float_up(Real x) {
     return Real(f) < x ? std::nextafter(f, kInf) : f;
 }
 
-Vec3f down(const Vec3& v) { return {float_down(v.x), float_down(v.y), float_down(v.z)}; }
-Vec3f up(const Vec3& v) { return {float_up(v.x), float_up(v.y), float_up(v.z)}; }
+Vec3f down(const Vec3& v) {
+    return {float_down(v.x), float_down(v.y), float_down(v.z)};
+}
+Vec3f up(const Vec3& v) {
+    return {float_up(v.x), float_up(v.y), float_up(v.z)};
+}
 
-std::string node_name(std::size_t i) { return "node " + std::to_string(i); }
+std::string node_name(std::size_t i) {
+    return "node " + std::to_string(i);
+}
 
 }  // namespace
 
@@ -64,12 +70,14 @@ std::vector<BvhPrimitive> bvh_primitives(const Scene& scene) {
 }
 
 std::string validate_bvh(const Bvh& bvh, const std::vector<BvhPrimitive>& input) {
-    if (input.empty()) return bvh.nodes.empty() ? "" : "the tree has nodes but there are no primitives";
-    if (bvh.nodes.empty()) return "the tree is empty but there are " + std::to_string(input.size()) + " primitives";
+    if (input.empty())
+        return bvh.nodes.empty() ? "" : "the tree has nodes but there are no primitives";
+    if (bvh.nodes.empty())
+        return "the tree is empty but there are " + std::to_string(input.size()) + " primitives";
     const std::size_t n = bvh.nodes.size();
     if (n > 2 * input.size())
-        return "the tree has " + std::to_string(n) + " nodes, more than 2 x " + std::to_string(input.size()) +
-               " primitives: some nodes are empty or unreachable";
+        return "the tree has " + std::to_string(n) + " nodes, more than 2 x " +
+               std::to_string(input.size()) + " primitives: some nodes are empty or unreachable";
 
     // Bounds of each input id, and how often each id appears in a leaf.
     // Ids are sparse (the kind sits in the top bits), so a map rather than a table.
@@ -87,39 +95,48 @@ std::string validate_bvh(const Bvh& bvh, const std::vector<BvhPrimitive>& input)
         const Aabb box = node.bounds();
         if (node.is_leaf()) {
             if (std::size_t(node.first) + node.count > bvh.primitives.size())
-                return node_name(i) + " (a leaf) lists primitives [" + std::to_string(node.first) + ", " +
-                       std::to_string(node.first + node.count) + ") but there are only " +
+                return node_name(i) + " (a leaf) lists primitives [" + std::to_string(node.first) +
+                       ", " + std::to_string(node.first + node.count) + ") but there are only " +
                        std::to_string(bvh.primitives.size());
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
                 const std::uint32_t id = bvh.primitives[k];
                 const auto found = index_of.find(id);
                 if (found == index_of.end())
-                    return node_name(i) + " holds primitive id " + std::to_string(id) + ", which was not in the input";
+                    return node_name(i) + " holds primitive id " + std::to_string(id) +
+                           ", which was not in the input";
                 const BvhPrimitive& p = input[std::size_t(found->second)];
                 if (++seen[std::size_t(found->second)] > 1)
-                    return "primitive id " + std::to_string(id) + " is in more than one leaf (again in " + node_name(i) + ")";
+                    return "primitive id " + std::to_string(id) +
+                           " is in more than one leaf (again in " + node_name(i) + ")";
                 if (!box.contains(p.bounds))
-                    return node_name(i) + "'s box does not contain its primitive id " + std::to_string(id);
+                    return node_name(i) + "'s box does not contain its primitive id " +
+                           std::to_string(id);
             }
         } else {
             std::size_t left = node.first;
             if (left <= i || left + 1 >= n)
-                return node_name(i) + " has children " + std::to_string(left) + " and " + std::to_string(left + 1) +
-                       ": children must come after their parent and exist (" + std::to_string(n) + " nodes)";
+                return node_name(i) + " has children " + std::to_string(left) + " and " +
+                       std::to_string(left + 1) +
+                       ": children must come after their parent and exist (" + std::to_string(n) +
+                       " nodes)";
             for (std::size_t c : {left, left + 1}) {
-                if (reached[c]) return node_name(c) + " has two parents (" + std::to_string(parent[c]) + " and " + std::to_string(i) + ")";
+                if (reached[c])
+                    return node_name(c) + " has two parents (" + std::to_string(parent[c]) +
+                           " and " + std::to_string(i) + ")";
                 reached[c] = 1;
                 parent[c] = std::uint32_t(i);
                 if (!box.contains(bvh.nodes[c].bounds()))
-                    return node_name(c) + "'s box is not inside its parent " + node_name(i) + "'s box";
+                    return node_name(c) + "'s box is not inside its parent " + node_name(i) +
+                           "'s box";
             }
         }
     }
     for (std::size_t i = 0; i < input.size(); ++i)
         if (seen[i] == 0) return "primitive id " + std::to_string(input[i].id) + " is in no leaf";
     if (int depth = bvh_depth(bvh); depth > kBvhMaxDepth)
-        return "the tree is " + std::to_string(depth) + " levels deep, more than kBvhMaxDepth = " +
-               std::to_string(kBvhMaxDepth) + ": make nodes at that depth leaves";
+        return "the tree is " + std::to_string(depth) +
+               " levels deep, more than kBvhMaxDepth = " + std::to_string(kBvhMaxDepth) +
+               ": make nodes at that depth leaves";
     return "";
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "apps/cli_parse.h"
+#include "core/source_dir.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "render/accelerate.h"
@@ -29,7 +30,6 @@
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
-#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 using namespace rt;
@@ -70,8 +70,9 @@ std::pair<int, int> parse_pixel(const std::string& text, const char* option, con
     if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &rest) != 2 || x < 0 || y < 0 ||
         x >= scene.image.width || y >= scene.image.height)
         throw std::runtime_error(std::string("rt: error: ") + option + " \"" + text +
-                                 "\" must be X,Y with 0 <= X < " + std::to_string(scene.image.width) +
-                                 " and 0 <= Y < " + std::to_string(scene.image.height));
+                                 "\" must be X,Y with 0 <= X < " +
+                                 std::to_string(scene.image.width) + " and 0 <= Y < " +
+                                 std::to_string(scene.image.height));
     return {x, y};
 }
 
@@ -90,8 +91,8 @@ int run_render(const RenderArgs& args) {
     const RenderMode mode = args.mode.value_or(scene.mode);
     const AccelerationReport accel = build_acceleration(scene);
     if (accel.built && !args.quiet)
-        std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n", accel.primitives,
-                    accel.nodes, accel.depth, accel.build_ms);
+        std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n",
+                    accel.primitives, accel.nodes, accel.depth, accel.build_ms);
     if (!args.debug_pixel.empty()) {
         const auto [x, y] = parse_pixel(args.debug_pixel, "--debug-pixel", scene);
         const PixelTree tree = debug_pixel(scene, x, y);
@@ -103,7 +104,8 @@ int run_render(const RenderArgs& args) {
     if (args.output.empty())
         throw std::runtime_error("rt: error: --output is required (unless --debug-pixel is given)");
     std::optional<std::pair<int, int>> overlay;
-    if (!args.overlay_pixel.empty()) overlay = parse_pixel(args.overlay_pixel, "--overlay-pixel", scene);
+    if (!args.overlay_pixel.empty())
+        overlay = parse_pixel(args.overlay_pixel, "--overlay-pixel", scene);
     const auto start = std::chrono::steady_clock::now();
     RenderOptions options;
     options.threads = args.threads;
@@ -153,12 +155,13 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
 int run_info(const std::string& file) {
     Scene scene = load_scene(file);
     const AccelerationReport accel = build_acceleration(scene);
-    std::printf("%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
-                "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
-                file.c_str(), scene.image.width, scene.image.height, to_string(scene.mode),
-                scene.spheres.size(), scene.planes.size(), scene.triangles.size(),
-                scene.vertices.size(), scene.boxes.size(), scene.materials.size(),
-                scene.lights.size(), scene.features.describe().c_str());
+    std::printf(
+        "%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
+        "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
+        file.c_str(), scene.image.width, scene.image.height, to_string(scene.mode),
+        scene.spheres.size(), scene.planes.size(), scene.triangles.size(), scene.vertices.size(),
+        scene.boxes.size(), scene.materials.size(), scene.lights.size(),
+        scene.features.describe().c_str());
     if (accel.built)
         std::printf("  BVH: %zu primitives, %zu nodes of %zu bytes, depth %d, built in %.1f ms\n",
                     accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
@@ -173,10 +176,10 @@ int run_gl_info(bool window) {
         std::fprintf(stderr, "rt: error: %s\n", info.error.c_str());
         return 1;
     }
-    std::printf("%s context\n  vendor:   %s\n  renderer: %s\n  version:  %s (%d.%d)\n  GLSL:     %s\n",
-                window ? "GLFW window" : "OSMesa headless", info.vendor.c_str(),
-                info.renderer.c_str(), info.version.c_str(), info.major, info.minor,
-                info.glsl_version.c_str());
+    std::printf(
+        "%s context\n  vendor:   %s\n  renderer: %s\n  version:  %s (%d.%d)\n  GLSL:     %s\n",
+        window ? "GLFW window" : "OSMesa headless", info.vendor.c_str(), info.renderer.c_str(),
+        info.version.c_str(), info.major, info.minor, info.glsl_version.c_str());
     return 0;
 }
 
@@ -192,7 +195,9 @@ void replace_file(const fs::path& file, const std::string& text) {
         if (!out) {
             std::error_code ignored;
             fs::remove(temporary, ignored);
-            throw std::runtime_error(file.string() + ":1:1: error: cannot write the file; check its folder's permissions");
+            throw std::runtime_error(
+                file.string() +
+                ":1:1: error: cannot write the file; check its folder's permissions");
         }
     }
     std::error_code ec;
@@ -201,7 +206,8 @@ void replace_file(const fs::path& file, const std::string& text) {
     if (ec) {
         std::error_code ignored;
         fs::remove(temporary, ignored);
-        throw std::runtime_error(file.string() + ":1:1: error: cannot replace the file (" + ec.message() + ")");
+        throw std::runtime_error(file.string() + ":1:1: error: cannot replace the file (" +
+                                 ec.message() + ")");
     }
 }
 
@@ -213,10 +219,12 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
     for (const std::string& file : files) {
         try {
             const std::string text = read_scene_text(file);
-            const std::string canonical = canonical_scene_text(text, file, fs::path(file).parent_path());
+            const std::string canonical =
+                canonical_scene_text(text, file, fs::path(file).parent_path());
             if (text == canonical) continue;
             if (check) {
-                std::fprintf(stderr, "%s: not in canonical form; run rt fmt %s\n", file.c_str(), file.c_str());
+                std::fprintf(stderr, "%s: not in canonical form; run rt fmt %s\n", file.c_str(),
+                             file.c_str());
                 status = 1;
             } else {
                 replace_file(file, canonical);
@@ -250,9 +258,11 @@ int main(int argc, char** argv) {
                            "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
                            "magenta, reflection blue, refraction yellow");
     render_cmd->add_option("--mode", mode_name, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
-    render_cmd->add_option("--accelerator", render_args.accelerator,
-                           "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
+        ->check(
+            CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
+    render_cmd
+        ->add_option("--accelerator", render_args.accelerator,
+                     "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
         ->check(CLI::IsMember({"none", "bvh"}));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
@@ -260,8 +270,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--threads", render_args.threads, "threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
-    render_cmd->add_option("--yaw", render_args.yaw_degrees,
-                           "turn the camera about its up axis by DEGREES (positive: to the right)")
+    render_cmd
+        ->add_option("--yaw", render_args.yaw_degrees,
+                     "turn the camera about its up axis by DEGREES (positive: to the right)")
         ->check(CLI::Range(-45.0, 45.0));
     render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
 
@@ -291,7 +302,8 @@ int main(int argc, char** argv) {
     fmt_cmd->add_flag("--check", fmt_check,
                       "change nothing; name each file not in canonical form and exit 1 if any");
 
-    if (const auto stop = parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
+    if (const auto stop =
+            parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
         return *stop;
 
     try {

@@ -21,7 +21,7 @@ struct Camera {
     // along -w), exactly as in Shirley & Marschner, "Fundamentals of Computer Graphics".
     Vec3 u{1, 0, 0}, v{0, 1, 0}, w{0, 0, 1};
     Real vertical_fov_degrees = 45;  // perspective: full vertical opening angle
-    Real view_height = 2;           // orthographic: height of the viewed rectangle, world units
+    Real view_height = 2;            // orthographic: height of the viewed rectangle, world units
 };
 
 // Builds a camera at `eye` looking at `target`, with `up` giving the upward direction.

@@ -6,13 +6,13 @@
 namespace rt {
 
 struct Hit {
-    Real t = kInfinity;  // ray parameter of the hit
-    Vec3 point{0};       // ray.at(t)
-    Vec3 normal{0};      // unit length, always facing the side the ray came from
+    Real t = kInfinity;      // ray parameter of the hit
+    Vec3 point{0};           // ray.at(t)
+    Vec3 normal{0};          // unit length, always facing the side the ray came from
     bool front_face = true;  // the ray arrived on the side the outward normal points to
-    Vec2 uv{0};           // surface coordinates; triangles: barycentrics (beta, gamma)
-    int primitive = -1;   // global primitive id (Scene::primitive_id), -1 if none
-    int material = -1;    // index into Scene::materials
+    Vec2 uv{0};              // surface coordinates; triangles: barycentrics (beta, gamma)
+    int primitive = -1;      // global primitive id (Scene::primitive_id), -1 if none
+    int material = -1;       // index into Scene::materials
 
     // Stores `outward_normal` (unit length, pointing out of the surface) turned to face the ray,
     // and records in front_face whether the ray hit the outside.

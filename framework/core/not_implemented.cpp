@@ -19,8 +19,8 @@ std::string relative_to_source(const char* file) {
 }
 }  // namespace
 
-void report_not_implemented(const char* function, const char* file, int line,
-                            const char* handout, std::atomic<bool>& reported) {
+void report_not_implemented(const char* function, const char* file, int line, const char* handout,
+                            std::atomic<bool>& reported) {
     g_total.fetch_add(1, std::memory_order_relaxed);
     ++t_this_thread;
     if (!reported.exchange(true)) {
@@ -30,7 +30,11 @@ void report_not_implemented(const char* function, const char* file, int line,
     }
 }
 
-std::uint64_t stub_calls_total() { return g_total.load(std::memory_order_relaxed); }
-std::uint64_t stub_calls_this_thread() { return t_this_thread; }
+std::uint64_t stub_calls_total() {
+    return g_total.load(std::memory_order_relaxed);
+}
+std::uint64_t stub_calls_this_thread() {
+    return t_this_thread;
+}
 
 }  // namespace rt

@@ -14,8 +14,8 @@
 
 namespace rt {
 
-void report_not_implemented(const char* function, const char* file, int line,
-                            const char* handout, std::atomic<bool>& reported);
+void report_not_implemented(const char* function, const char* file, int line, const char* handout,
+                            std::atomic<bool>& reported);
 
 // Stubs reached so far, by all threads / by the calling thread.
 std::uint64_t stub_calls_total();
@@ -23,8 +23,8 @@ std::uint64_t stub_calls_this_thread();
 
 }  // namespace rt
 
-#define RT_NOT_IMPLEMENTED(handout)                                                   \
-    do {                                                                              \
-        static std::atomic<bool> rt_reported_{false};                                 \
+#define RT_NOT_IMPLEMENTED(handout)                                                        \
+    do {                                                                                   \
+        static std::atomic<bool> rt_reported_{false};                                      \
         ::rt::report_not_implemented(__func__, __FILE__, __LINE__, handout, rt_reported_); \
     } while (0)

@@ -65,16 +65,28 @@ void sin_cos(double x, double& s, double& c) {
     double sr = sin_small(r), cr = cos_small(r);
     long quadrant = static_cast<long>(k) & 3;
     switch (quadrant) {
-        case 0: s = sr, c = cr; break;
-        case 1: s = cr, c = -sr; break;
-        case 2: s = -sr, c = -cr; break;
-        default: s = -cr, c = sr; break;
+        case 0:
+            s = sr, c = cr;
+            break;
+        case 1:
+            s = cr, c = -sr;
+            break;
+        case 2:
+            s = -sr, c = -cr;
+            break;
+        default:
+            s = -cr, c = sr;
+            break;
     }
 }
 
-D3 unit(const D3& v) { return v / std::sqrt(glm::dot(v, v)); }
+D3 unit(const D3& v) {
+    return v / std::sqrt(glm::dot(v, v));
+}
 
-Vec3 to_real(const D3& v) { return Vec3(Real(v.x), Real(v.y), Real(v.z)); }
+Vec3 to_real(const D3& v) {
+    return Vec3(Real(v.x), Real(v.y), Real(v.z));
+}
 
 void require(bool ok, const std::string& message) {
     if (!ok) throw std::invalid_argument(message);
@@ -86,9 +98,10 @@ void require_positive(double value, const char* what, const char* function) {
 }
 
 void require_count(double triangles, const char* function) {
-    require(triangles <= double(kMaxProceduralTriangles),
-            std::string(function) + ": " + std::to_string(static_cast<unsigned long long>(triangles)) +
-                " triangles, more than the " + std::to_string(kMaxProceduralTriangles) + " allowed");
+    require(
+        triangles <= double(kMaxProceduralTriangles),
+        std::string(function) + ": " + std::to_string(static_cast<unsigned long long>(triangles)) +
+            " triangles, more than the " + std::to_string(kMaxProceduralTriangles) + " allowed");
 }
 
 // ---- resolutions ----------------------------------------------------------------------------
@@ -101,15 +114,19 @@ std::size_t ceil_sqrt(std::size_t n) {
     return k;
 }
 
-std::size_t ceil_div(std::size_t a, std::size_t b) { return (a + b - 1) / b; }
+std::size_t ceil_div(std::size_t a, std::size_t b) {
+    return (a + b - 1) / b;
+}
 
 const char* const kShapeNames[] = {"icosphere", "torus", "terrain", "soup"};
 
 std::string known_shapes() {
     std::string out;
     for (std::size_t i = 0; i < std::size(kShapeNames); ++i)
-        out += std::string(i == 0 ? "" : i + 1 == std::size(kShapeNames) ? " or " : ", ") + "\"" +
-               kShapeNames[i] + "\"";
+        out += std::string(i == 0                            ? ""
+                           : i + 1 == std::size(kShapeNames) ? " or "
+                                                             : ", ") +
+               "\"" + kShapeNames[i] + "\"";
     return out;
 }
 
@@ -145,8 +162,10 @@ TriangleMesh make_icosphere(int subdivisions, Real radius) {
             for (std::uint32_t k = j + 1; k < 12; ++k) {
                 if (!is_edge(i, j) || !is_edge(j, k) || !is_edge(i, k)) continue;
                 D3 n = glm::cross(points[j] - points[i], points[k] - points[i]);
-                if (glm::dot(n, points[i] + points[j] + points[k]) > 0) faces.push_back({i, j, k});
-                else faces.push_back({i, k, j});
+                if (glm::dot(n, points[i] + points[j] + points[k]) > 0)
+                    faces.push_back({i, j, k});
+                else
+                    faces.push_back({i, k, j});
             }
     for (D3& p : points) p = unit(p);
 
@@ -210,11 +229,15 @@ TriangleMesh make_torus(int rings, int sides, Real major_radius, Real minor_radi
     // tube. Row i = rings and column j = sides repeat row and column 0 exactly (same bits), so the
     // uvs can run from 0 to 1 without wrapping while the surface stays closed.
     const std::size_t columns = std::size_t(sides) + 1;
-    auto index = [&](int i, int j) { return std::uint32_t(std::size_t(i) * columns + std::size_t(j)); };
+    auto index = [&](int i, int j) {
+        return std::uint32_t(std::size_t(i) * columns + std::size_t(j));
+    };
     std::vector<double> cos_theta(std::size_t(rings) + 1), sin_theta(std::size_t(rings) + 1);
     std::vector<double> cos_phi(columns), sin_phi(columns);
-    for (int i = 0; i < rings; ++i) sin_cos(kTwoPi * i / rings, sin_theta[std::size_t(i)], cos_theta[std::size_t(i)]);
-    for (int j = 0; j < sides; ++j) sin_cos(kTwoPi * j / sides, sin_phi[std::size_t(j)], cos_phi[std::size_t(j)]);
+    for (int i = 0; i < rings; ++i)
+        sin_cos(kTwoPi * i / rings, sin_theta[std::size_t(i)], cos_theta[std::size_t(i)]);
+    for (int j = 0; j < sides; ++j)
+        sin_cos(kTwoPi * j / sides, sin_phi[std::size_t(j)], cos_phi[std::size_t(j)]);
     cos_theta[std::size_t(rings)] = cos_theta[0], sin_theta[std::size_t(rings)] = sin_theta[0];
     cos_phi[std::size_t(sides)] = cos_phi[0], sin_phi[std::size_t(sides)] = sin_phi[0];
 
@@ -237,7 +260,8 @@ TriangleMesh make_torus(int rings, int sides, Real major_radius, Real minor_radi
     mesh.triangles.reserve(2 * std::size_t(rings) * std::size_t(sides));
     for (int i = 0; i < rings; ++i)
         for (int j = 0; j < sides; ++j) {
-            std::uint32_t a = index(i, j), b = index(i, j + 1), c = index(i + 1, j + 1), d = index(i + 1, j);
+            std::uint32_t a = index(i, j), b = index(i, j + 1), c = index(i + 1, j + 1),
+                          d = index(i + 1, j);
             mesh.triangles.push_back({a, b, c});
             mesh.triangles.push_back({a, c, d});
         }
@@ -251,7 +275,7 @@ namespace {
 // A height in [0, 1] at (x, z): the average of a few seeded plane waves and of smoothly
 // interpolated random values on an 8 x 8 lattice, each in [-1, 1], mapped to [0, 1].
 class HeightField {
-public:
+  public:
     explicit HeightField(std::uint64_t seed) : seed_(seed) {
         SplitMix64 random(seed);
         for (Wave& w : waves_) {
@@ -278,7 +302,7 @@ public:
         return std::clamp(f, 0.0, 1.0);
     }
 
-private:
+  private:
     struct Wave {
         double kx = 0, kz = 0, phase = 0, weight = 0;
     };
@@ -309,7 +333,8 @@ private:
 
 TriangleMesh make_terrain(int cells_x, int cells_z, std::uint64_t seed, Real height) {
     require(cells_x >= 1 && cells_z >= 1, "make_terrain: cells_x and cells_z must be >= 1, got " +
-                                              std::to_string(cells_x) + " and " + std::to_string(cells_z));
+                                              std::to_string(cells_x) + " and " +
+                                              std::to_string(cells_z));
     require_count(2.0 * cells_x * cells_z, "make_terrain");
     require(std::isfinite(double(height)) && height >= 0,
             "make_terrain: height must be a finite number >= 0");
@@ -331,7 +356,8 @@ TriangleMesh make_terrain(int cells_x, int cells_z, std::uint64_t seed, Real hei
     // (x1, z0) is counter-clockwise, so every triangle faces up.
     for (std::size_t k = 0; k < rows - 1; ++k)
         for (std::size_t i = 0; i < columns - 1; ++i) {
-            std::uint32_t a = index(i, k), b = index(i, k + 1), c = index(i + 1, k), d = index(i + 1, k + 1);
+            std::uint32_t a = index(i, k), b = index(i, k + 1), c = index(i + 1, k),
+                          d = index(i + 1, k + 1);
             mesh.triangles.push_back({a, b, c});
             mesh.triangles.push_back({c, b, d});
         }
@@ -398,10 +424,13 @@ const std::vector<std::string>& procedural_shapes() {
 
 ProceduralResolution procedural_resolution(std::string_view shape, std::size_t min_triangles) {
     std::size_t n = std::max<std::size_t>(min_triangles, 1);
-    require(std::find(std::begin(kShapeNames), std::end(kShapeNames), shape) != std::end(kShapeNames),
-            "unknown procedural mesh \"" + std::string(shape.substr(0, 40)) + "\"; use " + known_shapes());
+    require(
+        std::find(std::begin(kShapeNames), std::end(kShapeNames), shape) != std::end(kShapeNames),
+        "unknown procedural mesh \"" + std::string(shape.substr(0, 40)) + "\"; use " +
+            known_shapes());
     require(n <= kMaxProceduralTriangles, "a procedural " + std::string(shape) + " of " +
-                                              std::to_string(min_triangles) + " triangles is more than the " +
+                                              std::to_string(min_triangles) +
+                                              " triangles is more than the " +
                                               std::to_string(kMaxProceduralTriangles) + " allowed");
     ProceduralResolution r;
     if (shape == "icosphere") {
@@ -428,7 +457,8 @@ ProceduralResolution procedural_resolution(std::string_view shape, std::size_t m
     return r;
 }
 
-TriangleMesh make_procedural_mesh(std::string_view shape, std::size_t min_triangles, std::uint64_t seed) {
+TriangleMesh make_procedural_mesh(std::string_view shape, std::size_t min_triangles,
+                                  std::uint64_t seed) {
     ProceduralResolution r = procedural_resolution(shape, min_triangles);
     require(r.triangles <= kMaxProceduralTriangles,
             "a procedural " + std::string(shape) + " needs " + std::to_string(r.triangles) +

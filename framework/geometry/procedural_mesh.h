@@ -32,7 +32,8 @@ TriangleMesh make_icosphere(int subdivisions, Real radius = 1);
 // of radius r (0 < r < R), both >= 3: 2 * rings * sides triangles. Normals and uvs
 // (u = ring / rings, v = side / sides, both 0..1): the last ring and side repeat the first
 // with identical coordinates, so the mesh is closed by position though not by vertex index.
-TriangleMesh make_torus(int rings, int sides, Real major_radius = 1, Real minor_radius = Real(0.35));
+TriangleMesh make_torus(int rings, int sides, Real major_radius = 1,
+                        Real minor_radius = Real(0.35));
 
 // A height field over [-1, 1]^2 in x and z, cells_x by cells_z cells (2 triangles each), heights
 // from a seeded sum of sines and value noise, in [0, height]. Every triangle faces up (+y);

@@ -9,7 +9,8 @@ namespace {
 // Mesa's surfaceless platform first (no device needed), then the first EGL device.
 EGLDisplay open_display(std::string& platform) {
     if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        EGLDisplay d =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (d != EGL_NO_DISPLAY) {
             platform = "surfaceless";
             return d;
@@ -35,7 +36,9 @@ EGLDisplay open_display(std::string& platform) {
 EglContext::EglContext() {
     EGLDisplay display = open_display(platform_);
     if (display == EGL_NO_DISPLAY) {
-        error_ = "EGL: no surfaceless or device platform (install libegl-mesa0, or run where a GPU driver is)";
+        error_ =
+            "EGL: no surfaceless or device platform (install libegl-mesa0, or run where a GPU "
+            "driver is)";
         return;
     }
     EGLint major = 0, minor = 0;
@@ -51,10 +54,15 @@ EglContext::EglContext() {
     const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint configs = 0;
-    if (!eglChooseConfig(display, config_attributes, &config, 1, &configs) || configs < 1) config = nullptr;
-    const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+    if (!eglChooseConfig(display, config_attributes, &config, 1, &configs) || configs < 1)
+        config = nullptr;
+    const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                         4,
+                                         EGL_CONTEXT_MINOR_VERSION,
+                                         5,
                                          EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                         EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
     if (context == EGL_NO_CONTEXT) {
         error_ = "EGL: no OpenGL 4.5 core context (compute shaders need 4.3+; macOS stops at 4.1)";
@@ -62,7 +70,9 @@ EglContext::EglContext() {
     }
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         eglDestroyContext(display, context);
-        error_ = "EGL: the context cannot be made current without a surface (EGL_KHR_surfaceless_context)";
+        error_ =
+            "EGL: the context cannot be made current without a surface "
+            "(EGL_KHR_surfaceless_context)";
         return;
     }
     context_ = context;

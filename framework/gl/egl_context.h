@@ -8,7 +8,7 @@
 namespace rt {
 
 class EglContext {
-public:
+  public:
     // Creates the context and makes it current on this thread; ok() says whether it worked and
     // error() why not (one line naming what to install or set).
     EglContext();
@@ -20,7 +20,7 @@ public:
     const std::string& error() const { return error_; }
     const std::string& platform() const { return platform_; }  // "surfaceless" or "device"
 
-private:
+  private:
     void* display_ = nullptr;
     void* context_ = nullptr;
     std::string error_, platform_;

@@ -33,16 +33,24 @@ GlInfo query_headless_gl() {
     GlInfo info;
     OSMesaContext context = nullptr;
     for (int minor_version : {6, 5, 3}) {
-        const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                                  OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                                  OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                                  OSMESA_CONTEXT_MINOR_VERSION, minor_version, 0};
+        const int attributes[] = {OSMESA_FORMAT,
+                                  OSMESA_RGBA,
+                                  OSMESA_DEPTH_BITS,
+                                  24,
+                                  OSMESA_PROFILE,
+                                  OSMESA_CORE_PROFILE,
+                                  OSMESA_CONTEXT_MAJOR_VERSION,
+                                  4,
+                                  OSMESA_CONTEXT_MINOR_VERSION,
+                                  minor_version,
+                                  0};
         context = OSMesaCreateContextAttribs(attributes, nullptr);
         if (context) break;
     }
     if (!context) {
-        info.error = "OSMesa could not create a GL 4.3+ core context; install libosmesa6 "
-                     "(Mesa's llvmpipe) or set LIBGL_ALWAYS_SOFTWARE=1";
+        info.error =
+            "OSMesa could not create a GL 4.3+ core context; install libosmesa6 "
+            "(Mesa's llvmpipe) or set LIBGL_ALWAYS_SOFTWARE=1";
         return info;
     }
     constexpr int kSize = 16;

@@ -3,7 +3,9 @@
 namespace rt::gpu {
 namespace {
 
-glm::vec4 v4(const Vec3& v, float w = 0) { return glm::vec4(float(v.x), float(v.y), float(v.z), w); }
+glm::vec4 v4(const Vec3& v, float w = 0) {
+    return glm::vec4(float(v.x), float(v.y), float(v.z), w);
+}
 
 }  // namespace
 
@@ -13,15 +15,16 @@ GpuScene pack_scene(const Scene& scene) {
         g.spheres.push_back({v4(s.center, float(s.radius)), glm::ivec4(s.material, 0, 0, 0)});
     for (const Plane& p : scene.planes)
         g.planes.push_back({v4(p.point, int_bits(p.material)), v4(p.normal)});
-    for (const Box& b : scene.boxes) g.boxes.push_back({v4(b.min, int_bits(b.material)), v4(b.max)});
+    for (const Box& b : scene.boxes)
+        g.boxes.push_back({v4(b.min, int_bits(b.material)), v4(b.max)});
     for (const Triangle& t : scene.triangles)
         g.triangles.push_back({glm::uvec4(t.v[0], t.v[1], t.v[2], std::uint32_t(t.material))});
     for (const Vec3& p : scene.vertices) g.positions.push_back(v4(p, 1));
     for (const Vec3& n : scene.normals) g.normals.push_back(v4(n));
     for (const Vec2& uv : scene.uvs) g.uvs.push_back(glm::vec2(float(uv.x), float(uv.y)));
     for (const Material& m : scene.materials)
-        g.materials.push_back({v4(m.ambient), v4(m.diffuse), v4(m.specular, m.shininess), v4(m.emissive),
-                               v4(m.reflective), v4(m.transmissive, m.ior)});
+        g.materials.push_back({v4(m.ambient), v4(m.diffuse), v4(m.specular, m.shininess),
+                               v4(m.emissive), v4(m.reflective), v4(m.transmissive, m.ior)});
     for (const Light& l : scene.lights)
         g.lights.push_back({v4(l.position, int_bits(l.kind == LightKind::Point ? 0 : 1)),
                             v4(l.direction), v4(l.intensity), v4(l.attenuation)});

@@ -20,8 +20,17 @@ namespace rt::gpu {
 
 // Storage-buffer bindings of the packed scene (the same numbers as in scene_layout.glsl).
 enum Binding : int {
-    kSpheres = 0, kPlanes = 1, kBoxes = 2, kTriangles = 3, kPositions = 4, kNormals = 5,
-    kUvs = 6, kMaterials = 7, kLights = 8, kBvhNodes = 9, kBvhPrimitives = 10,
+    kSpheres = 0,
+    kPlanes = 1,
+    kBoxes = 2,
+    kTriangles = 3,
+    kPositions = 4,
+    kNormals = 5,
+    kUvs = 6,
+    kMaterials = 7,
+    kLights = 8,
+    kBvhNodes = 9,
+    kBvhPrimitives = 10,
 };
 
 struct alignas(16) GpuSphere {
@@ -45,7 +54,7 @@ struct alignas(16) GpuMaterial {
     glm::vec4 specular_shininess;  // xyz k_s, w n_s
     glm::vec4 emissive;
     glm::vec4 reflective;
-    glm::vec4 transmissive_ior;    // xyz k_t, w index of refraction
+    glm::vec4 transmissive_ior;  // xyz k_t, w index of refraction
 };
 struct alignas(16) GpuLight {
     glm::vec4 position_kind;  // xyz position, w kind (int bits: 0 point, 1 directional)
@@ -55,7 +64,7 @@ struct alignas(16) GpuLight {
 };
 // BvhNode (accel/bvh.h) goes as it is: {vec3 min; uint first; vec3 max; uint count}.
 
-#define RT_GPU_CHECK(T, size)                                                      \
+#define RT_GPU_CHECK(T, size)                                                     \
     static_assert(sizeof(T) == (size), #T " must stay " #size " bytes (std430)"); \
     static_assert(std::is_trivially_copyable_v<T>, #T " must be trivially copyable")
 RT_GPU_CHECK(GpuSphere, 32);

@@ -28,8 +28,8 @@ std::string CompareResult::summary() const {
 CompareResult compare_images(const Image8& actual, const Image8& reference,
                              const CompareOptions& options) {
     CompareResult result;
-    if (actual.width != reference.width || actual.height != reference.height ||
-        actual.width <= 0 || actual.height <= 0)
+    if (actual.width != reference.width || actual.height != reference.height || actual.width <= 0 ||
+        actual.height <= 0)
         return result;
     result.size_matches = true;
     const int w = actual.width, h = actual.height;

@@ -27,7 +27,8 @@ Image8 to_image8(const Image& image) {
     Image8 out{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size() * 3)};
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            out.data[i * 3 + c] = std::uint8_t(std::lround(linear_to_srgb(image.pixels[i][c]) * 255));
+            out.data[i * 3 + c] =
+                std::uint8_t(std::lround(linear_to_srgb(image.pixels[i][c]) * 255));
     return out;
 }
 
@@ -58,9 +59,12 @@ Format format_of(const std::filesystem::path& file) {
 
 files::DecodedImage decode(const std::filesystem::path& file) {
     switch (format_of(file)) {
-        case Format::Png: return files::read_png(file);
-        case Format::Exr: return files::read_exr(file);
-        case Format::Other: break;
+        case Format::Png:
+            return files::read_png(file);
+        case Format::Exr:
+            return files::read_exr(file);
+        case Format::Other:
+            break;
     }
     return files::read_with_oiio(file);
 }
@@ -69,14 +73,14 @@ files::DecodedImage decode(const std::filesystem::path& file) {
 
 namespace image_files {
 
-std::string size_problem(const std::filesystem::path& file, std::int64_t width,
-                         std::int64_t height, int channels) {
+std::string size_problem(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
+                         int channels) {
     if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
         width * height > kMaxPixels)
         return file.string() + ": error: the image is " + std::to_string(width) + " x " +
-               std::to_string(height) + " pixels; images must be 1 to " +
-               std::to_string(kMaxSide) + " pixels a side and at most " +
-               std::to_string(kMaxPixels / 1'000'000) + " Mpixel: resize it";
+               std::to_string(height) + " pixels; images must be 1 to " + std::to_string(kMaxSide) +
+               " pixels a side and at most " + std::to_string(kMaxPixels / 1'000'000) +
+               " Mpixel: resize it";
     if (channels < 1 || channels > 4)
         return file.string() + ": error: the image has " + std::to_string(channels) +
                " channels; use grey, grey + alpha, RGB or RGBA";
@@ -117,9 +121,10 @@ Image8 read_image8(const std::filesystem::path& file) {
         for (std::size_t c = 0; c < 3; ++c) {
             const std::size_t at = i * std::size_t(in.channels) + (in.channels >= 3 ? c : 0);
             // Exact for 8-bit files; other depths are rounded to the nearest 8-bit step.
-            out.data[i * 3 + c] = !in.bytes.empty()
-                                      ? in.bytes[at]
-                                      : std::uint8_t(std::lround(std::clamp(in.values[at], 0.0f, 1.0f) * 255));
+            out.data[i * 3 + c] =
+                !in.bytes.empty()
+                    ? in.bytes[at]
+                    : std::uint8_t(std::lround(std::clamp(in.values[at], 0.0f, 1.0f) * 255));
         }
     return out;
 }

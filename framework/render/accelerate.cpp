@@ -48,8 +48,8 @@ AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& optio
 
 void count_missing_bvh() {
     static std::atomic<bool> reported{true};  // build_bvh's own stub already printed where to read
-    report_not_implemented("build_bvh", __FILE__, __LINE__, "stages/06-bvh/README.md#building-the-tree",
-                           reported);
+    report_not_implemented("build_bvh", __FILE__, __LINE__,
+                           "stages/06-bvh/README.md#building-the-tree", reported);
 }
 
 bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit) {

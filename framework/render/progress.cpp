@@ -6,7 +6,9 @@
 
 namespace rt {
 
-bool stdout_is_terminal() { return isatty(STDOUT_FILENO) == 1; }
+bool stdout_is_terminal() {
+    return isatty(STDOUT_FILENO) == 1;
+}
 
 ProgressBar::ProgressBar(long long total, bool enabled)
     : total_(total > 0 ? total : 1), enabled_(enabled) {

@@ -8,12 +8,12 @@
 namespace rt {
 
 class ProgressBar {
-public:
+  public:
     ProgressBar(long long total, bool enabled);
-    ~ProgressBar();  // finishes the line
+    ~ProgressBar();                      // finishes the line
     void advance(long long amount = 1);  // thread-safe
 
-private:
+  private:
     void draw(long long done);
 
     long long total_;

@@ -25,7 +25,9 @@ Color display_value(Color value) {
     return Color(srgb_to_linear(value.r), srgb_to_linear(value.g), srgb_to_linear(value.b));
 }
 
-Color unit_vector_colour(const Vec3& v) { return Color(Real(0.5) * (v + Vec3(1))); }
+Color unit_vector_colour(const Vec3& v) {
+    return Color(Real(0.5) * (v + Vec3(1)));
+}
 
 // A stable, well-spread colour per primitive id (an integer hash, not a random generator, so
 // the image is identical on every machine).
@@ -50,14 +52,16 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
         out.colour = shade_pixel(scene, x, y);
         return out;
     }
-    const Ray ray = camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
+    const Ray ray =
+        camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
     if (mode == RenderMode::Directions) {
-        if (all_finite(ray.direction)) out.colour = display_value(unit_vector_colour(ray.direction));
+        if (all_finite(ray.direction))
+            out.colour = display_value(unit_vector_colour(ray.direction));
         return out;
     }
     Hit hit;
     if (mode == RenderMode::BvhVisits) {  // the count goes through `depth`, mapped at the end
-        if (!uses_bvh(scene)) {  // a stubbed build_bvh: magenta, like any stub
+        if (!uses_bvh(scene)) {           // a stubbed build_bvh: magenta, like any stub
             count_missing_bvh();
             return out;
         }
@@ -68,14 +72,19 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     }
     if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) return out;
     switch (mode) {
-        case RenderMode::Normals: out.colour = display_value(unit_vector_colour(hit.normal)); break;
-        case RenderMode::Depth: out.depth = hit.t; break;
+        case RenderMode::Normals:
+            out.colour = display_value(unit_vector_colour(hit.normal));
+            break;
+        case RenderMode::Depth:
+            out.depth = hit.t;
+            break;
         case RenderMode::PrimitiveId:
             out.colour = display_value(primitive_colour(
                 scene.is_primitive(hit.primitive) ? int(scene.primitive_rank(hit.primitive))
                                                   : hit.primitive));
             break;
-        default: break;
+        default:
+            break;
     }
     return out;
 }
@@ -97,8 +106,11 @@ void map_depth(const std::vector<Real>& depth, Image& image) {
 // A heat ramp from black through purple, red and orange to pale yellow (the shape of the
 // "inferno" colour map, in five hand-picked stops: dark is cheap, bright is expensive).
 Color heat_colour(float v) {
-    static const Color stops[] = {{0.0f, 0.0f, 0.02f}, {0.34f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f},
-                                  {0.97f, 0.56f, 0.04f}, {0.99f, 1.0f, 0.64f}};
+    static const Color stops[] = {{0.0f, 0.0f, 0.02f},
+                                  {0.34f, 0.06f, 0.43f},
+                                  {0.73f, 0.21f, 0.33f},
+                                  {0.97f, 0.56f, 0.04f},
+                                  {0.99f, 1.0f, 0.64f}};
     v = std::clamp(v, 0.0f, 1.0f) * 4.0f;
     const int i = std::min(3, int(v));
     return glm::mix(stops[i], stops[i + 1], v - float(i));
@@ -124,9 +136,11 @@ int resolve_thread_count(int threads) {
 
 Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
-        throw std::runtime_error(scene.source + ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
-                                 "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh (if it has that, the "
-                                 "message above says why its tree was dropped)");
+        throw std::runtime_error(
+            scene.source +
+            ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
+            "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh (if it has that, the "
+            "message above says why its tree was dropped)");
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     std::vector<Real> depth(std::size_t(width) * height, -1);

@@ -37,11 +37,11 @@ namespace {
 struct Frame {
     Ray ray;
     int depth = 0;
-    Color weight{1};   // in the pixel (the debugger's; light transport never reads it)
-    Color colour{0};   // local light, then each branch's weighted colour as it completes
+    Color weight{1};  // in the pixel (the debugger's; light transport never reads it)
+    Color colour{0};  // local light, then each branch's weighted colour as it completes
     bool recurse = false;
     SecondaryRays branches;
-    int next = 0;      // the branch to trace next: 0 reflected, 1 refracted, 2 done
+    int next = 0;  // the branch to trace next: 0 reflected, 1 refracted, 2 done
 };
 
 const SecondaryRay& branch(const Frame& f, int i) {
@@ -60,7 +60,8 @@ void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& m
     visibility.assign(scene.lights.size(), Color(0));
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const LightSample sample = illuminate(scene.lights[i], at.point);
-        if (blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity) == Color(0))
+        if (blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity) ==
+            Color(0))
             continue;
         Color transmittance;
         if (any_hit_shadows) {
@@ -124,7 +125,7 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
 
 // Builds the debugger's ray tree from what the loop reports.
 class RayTreeRecorder : public TraceObserver {
-public:
+  public:
     RayTreeRecorder(const Scene& scene, RayNode& root) : scene_(scene), root_(root) {}
     void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,
                    const Color& weight) override {
@@ -157,7 +158,7 @@ public:
     }
     void end_ray() override { open_.pop_back(); }
 
-private:
+  private:
     const Scene& scene_;
     RayNode& root_;
     std::vector<RayNode*> open_;  // the rays begun and not ended: a path from the root
@@ -182,8 +183,9 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weig
             Frame& child = stack[++top];
             child.ray = s.ray, child.depth = f.depth + 1, child.weight = f.weight * s.weight;
             if (observer)
-                observer->begin_ray(f.next == 0 ? RayNode::Kind::Reflection : RayNode::Kind::Refraction,
-                                    child.depth, s.ray, s.weight, child.weight);
+                observer->begin_ray(
+                    f.next == 0 ? RayNode::Kind::Reflection : RayNode::Kind::Refraction,
+                    child.depth, s.ray, s.weight, child.weight);
             start_frame(scene, child, observer);
             continue;
         }

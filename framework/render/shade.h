@@ -46,7 +46,7 @@ struct RayNode {
 // Watches the shading loop (the ray-tree debugger). The loop calls it and never depends on what
 // it does, so light transport reads the same with or without it (and a shader has none).
 class TraceObserver {
-public:
+  public:
     virtual ~TraceObserver() = default;
     // A ray starts: its weight at its parent (1 for the camera ray) and in the pixel.
     virtual void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,

@@ -23,9 +23,12 @@ TextPosition position_of_offset(const std::string& text, std::size_t offset) {
 std::string JsonPositions::child(const std::string& parent, const std::string& key) {
     std::string escaped;
     for (char c : key) {
-        if (c == '~') escaped += "~0";
-        else if (c == '/') escaped += "~1";
-        else escaped += c;
+        if (c == '~')
+            escaped += "~0";
+        else if (c == '/')
+            escaped += "~1";
+        else
+            escaped += c;
     }
     return parent + "/" + escaped;
 }
@@ -36,13 +39,17 @@ std::string JsonPositions::child(const std::string& parent, std::size_t index) {
 
 namespace {
 
-bool is_json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_json_space(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
 
 // Skips a string literal starting at the opening quote; returns the offset after its end.
 std::size_t skip_string(const std::string& text, std::size_t pos) {
     for (++pos; pos < text.size(); ++pos) {
-        if (text[pos] == '\\') ++pos;
-        else if (text[pos] == '"') return pos + 1;
+        if (text[pos] == '\\')
+            ++pos;
+        else if (text[pos] == '"')
+            return pos + 1;
     }
     return text.size();
 }
@@ -54,7 +61,7 @@ JsonPositions::JsonPositions(const std::string& text) {
     struct Frame {
         std::string pointer;
         bool object = false;
-        bool expect_key = false;  // objects: the next string is a key, not a value
+        bool expect_key = false;     // objects: the next string is a key, not a value
         std::size_t next_index = 0;  // arrays: index of the next element
     };
     std::vector<Frame> open;

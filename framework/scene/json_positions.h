@@ -23,7 +23,7 @@ struct TextPosition {
 TextPosition position_of_offset(const std::string& text, std::size_t offset);
 
 class JsonPositions {
-public:
+  public:
     static constexpr std::size_t npos = std::string::npos;
 
     // Scans `text`, which must already have been accepted by a JSON parser. Never throws on
@@ -47,7 +47,7 @@ public:
     static std::string child(const std::string& parent, const std::string& key);
     static std::string child(const std::string& parent, std::size_t index);
 
-private:
+  private:
     struct Where {
         std::size_t value = npos;
         std::size_t key = npos;

@@ -43,24 +43,24 @@ struct Triangle {
 
 // Plain data, as uploaded to the GPU; a material's name is in Scene::material_names.
 struct Material {
-    Color ambient{0};      // k_a
-    Color diffuse{0.8f};   // k_d
-    Color specular{0};     // k_s
-    Color emissive{0};     // k_e
-    float shininess = 32;  // n_s
-    Color reflective{0};   // k_r
-    Color transmissive{0}; // k_t
-    float ior = 1.5f;      // index of refraction of the inside
+    Color ambient{0};       // k_a
+    Color diffuse{0.8f};    // k_d
+    Color specular{0};      // k_s
+    Color emissive{0};      // k_e
+    float shininess = 32;   // n_s
+    Color reflective{0};    // k_r
+    Color transmissive{0};  // k_t
+    float ior = 1.5f;       // index of refraction of the inside
 };
 
 enum class LightKind { Point, Directional };
 
 struct Light {
     LightKind kind = LightKind::Point;
-    Vec3 position{0};            // point lights
-    Vec3 direction{0, -1, 0};    // directional lights: unit direction the light travels
-    Color intensity{1};          // I_L
-    Vec3 attenuation{1, 0, 1};   // point lights: 1 / (c + l r + q r^2)
+    Vec3 position{0};           // point lights
+    Vec3 direction{0, -1, 0};   // directional lights: unit direction the light travels
+    Color intensity{1};         // I_L
+    Vec3 attenuation{1, 0, 1};  // point lights: 1 / (c + l r + q r^2)
 };
 
 // What a scene actually contains, so the renderer (and later the shader) computes only that.

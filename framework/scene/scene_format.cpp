@@ -25,16 +25,16 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera", "image", "render", "background", "ambient_light",
-                      "materials", "surfaces", "lights"};
+const Order kTopLevel{"camera",        "image",     "render",   "background",
+                      "ambient_light", "materials", "surfaces", "lights"};
 const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
 const Order kImage{"width", "height"};
 const Order kRender{"mode", "max_depth", "shadows", "fresnel", "accelerator"};
-const Order kMaterial{"name", "ambient", "diffuse", "specular", "emissive", "shininess",
-                      "reflective", "transmissive", "ior"};
-const Order kSurface{"type", "center", "radius", "point", "normal", "vertices", "min", "max",
-                     "tiles", "file", "procedural", "triangles", "seed", "scale", "translate",
-                     "material", "materials"};
+const Order kMaterial{"name",      "ambient",    "diffuse",      "specular", "emissive",
+                      "shininess", "reflective", "transmissive", "ior"};
+const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
+                     "min",  "max",    "tiles",     "file",     "procedural", "triangles",
+                     "seed", "scale",  "translate", "material", "materials"};
 const Order kLight{"type", "position", "direction", "intensity", "attenuation"};
 const Order kNone{};
 
@@ -45,11 +45,14 @@ std::vector<std::string> ordered_keys(const json& object, const Order& order) {
     for (const std::string& key : order)
         if (object.contains(key)) keys.push_back(key);
     for (const auto& item : object.items())  // nlohmann keeps keys sorted
-        if (std::find(order.begin(), order.end(), item.key()) == order.end()) keys.push_back(item.key());
+        if (std::find(order.begin(), order.end(), item.key()) == order.end())
+            keys.push_back(item.key());
     return keys;
 }
 
-std::string string_text(const std::string& s) { return json(s).dump(); }
+std::string string_text(const std::string& s) {
+    return json(s).dump();
+}
 
 std::string number_text(const json& v) {
     if (v.is_number_unsigned()) return std::to_string(v.get<std::uint64_t>());
@@ -81,10 +84,18 @@ void write_inline(const json& v, const Order& order, std::string& out) {
             out += ']';
             break;
         }
-        case json::value_t::string: out += string_text(v.get<std::string>()); break;
-        case json::value_t::boolean: out += v.get<bool>() ? "true" : "false"; break;
-        case json::value_t::null: out += "null"; break;
-        default: out += number_text(v); break;
+        case json::value_t::string:
+            out += string_text(v.get<std::string>());
+            break;
+        case json::value_t::boolean:
+            out += v.get<bool>() ? "true" : "false";
+            break;
+        case json::value_t::null:
+            out += "null";
+            break;
+        default:
+            out += number_text(v);
+            break;
     }
 }
 
@@ -136,7 +147,8 @@ std::string write_canonical(const json& root) {
 // the loader reads as the same double (bit for bit, so -0 differs from 0).
 bool same_values(const json& a, const json& b) {
     if (a.is_number() && b.is_number()) {
-        if (a.is_number_integer() && b.is_number_integer() && a.is_number_unsigned() == b.is_number_unsigned())
+        if (a.is_number_integer() && b.is_number_integer() &&
+            a.is_number_unsigned() == b.is_number_unsigned())
             return a == b;
         const double x = a.get<double>(), y = b.get<double>();
         return std::memcmp(&x, &y, sizeof x) == 0;
@@ -145,7 +157,8 @@ bool same_values(const json& a, const json& b) {
     if (a.is_object()) {
         if (a.size() != b.size()) return false;
         for (const auto& item : a.items())
-            if (!b.contains(item.key()) || !same_values(item.value(), b.at(item.key()))) return false;
+            if (!b.contains(item.key()) || !same_values(item.value(), b.at(item.key())))
+                return false;
         return true;
     }
     if (a.is_array()) {
@@ -178,8 +191,9 @@ std::string canonical_scene_text(const std::string& text, const std::string& nam
     } catch (const json::exception&) {
     }
     if (!same)
-        throw SceneError(name + ":1:1: error: the canonical form would change a value of this scene; "
-                                "please report this file (it was left as it is)");
+        throw SceneError(name +
+                         ":1:1: error: the canonical form would change a value of this scene; "
+                         "please report this file (it was left as it is)");
     return canonical;
 }
 

@@ -12,7 +12,7 @@ namespace rt {
 // A mistake in a scene file. what() is one line in the compiler's shape:
 //   scenes/x.json:12:17: error: "radius" must be > 0, got -1 (hint: ...)
 class SceneError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

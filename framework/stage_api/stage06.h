@@ -15,10 +15,10 @@ namespace rt {
 inline constexpr int kMaxBins = 64;
 
 struct BvhBuildOptions {
-    int bins = 16;               // SAH bins per axis: bins - 1 candidate split planes per axis
-    int max_leaf_size = 4;       // a node with more primitives than this is split if it can be
-    float traversal_cost = 1.0f; // C_trav: the cost of visiting a node, in units of one
-                                 // primitive intersection test (C_isect = 1)
+    int bins = 16;                // SAH bins per axis: bins - 1 candidate split planes per axis
+    int max_leaf_size = 4;        // a node with more primitives than this is split if it can be
+    float traversal_cost = 1.0f;  // C_trav: the cost of visiting a node, in units of one
+                                  // primitive intersection test (C_isect = 1)
 };
 
 // A split chosen by the surface area heuristic. Primitives whose centroid falls in bins
@@ -44,8 +44,8 @@ inline int bin_of(float c, float lo, float scale, int bins) {
 // centroids do not spread are skipped), considering only splits with primitives on both sides.
 // A is the surface area of the box around all of them (when A = 0, use 1 / A = 0). Ties go to
 // the lower axis, then the lower bin. options.bins is between 2 and kMaxBins.
-SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin,
-                        std::size_t end, const BvhBuildOptions& options);
+SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
+                        const BvhBuildOptions& options);
 
 // Builds `bvh` over `prims` (which it may reorder) top-down: a node becomes a leaf when it holds
 // at most options.max_leaf_size primitives, when no split exists, or when the best split costs

@@ -1,15 +1,17 @@
 #include "testing/stage_test.h"
 
 #include "core/not_implemented.h"
+#include "core/source_dir.h"
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
-#include "core/source_dir.h"
 
 namespace rt::testing {
 
-void StageTest::SetUp() { stubs_before_ = stub_calls_total(); }
+void StageTest::SetUp() {
+    stubs_before_ = stub_calls_total();
+}
 
 void StageTest::TearDown() {
     if (stub_calls_total() != stubs_before_)
@@ -18,7 +20,9 @@ void StageTest::TearDown() {
                          "section to read)";
 }
 
-std::filesystem::path source_dir() { return rt::source_dir(); }
+std::filesystem::path source_dir() {
+    return rt::source_dir();
+}
 
 void expect_matches_reference(const std::string& stage, const std::string& scene_name) {
     const auto scene_file = source_dir() / "stages" / stage / "scenes" / (scene_name + ".json");
@@ -45,8 +49,8 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
     std::filesystem::create_directories(out_dir);
     write_image8(actual, out_dir / (scene_name + ".png"));
     if (result.size_matches) write_image8(result.heat_map, out_dir / (scene_name + ".diff.png"));
-    ADD_FAILURE() << scene_file.string() << ": " << result.summary() << "\n  your image: "
-                  << (out_dir / (scene_name + ".png")).string()
+    ADD_FAILURE() << scene_file.string() << ": " << result.summary()
+                  << "\n  your image: " << (out_dir / (scene_name + ".png")).string()
                   << "\n  reference:  " << reference_file.string()
                   << "\n  difference: " << (out_dir / (scene_name + ".diff.png")).string();
 }

@@ -16,11 +16,11 @@
 namespace rt::testing {
 
 class StageTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
     void TearDown() override;
 
-private:
+  private:
     std::uint64_t stubs_before_ = 0;
 };
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "core/source_dir.h"
 #include "gl/egl_context.h"
 #include "gpu/gpu_scene.h"
-#include "core/source_dir.h"
 
 namespace rt::gpu {
 namespace {
@@ -21,11 +21,13 @@ namespace {
 struct Member {
     const char* name;  // a buffer variable, as GL names it
     std::size_t offset, stride;
-    const char* use;   // GLSL that reads it into `acc` (so the compiler keeps it)
+    const char* use;  // GLSL that reads it into `acc` (so the compiler keeps it)
 };
 
-#define RT_MEMBER(T, glsl_array, field, use) \
-    Member{glsl_array "[0]." #field, offsetof(T, field), sizeof(T), use}
+#define RT_MEMBER(T, glsl_array, field, use)                         \
+    Member {                                                         \
+        glsl_array "[0]." #field, offsetof(T, field), sizeof(T), use \
+    }
 
 const std::vector<Member>& members() {
     static const std::vector<Member> list = {
@@ -35,13 +37,16 @@ const std::vector<Member>& members() {
         RT_MEMBER(GpuPlane, "planes", normal, "acc += planes[0].normal;"),
         RT_MEMBER(GpuBox, "boxes", min_material, "acc += boxes[0].min_material;"),
         RT_MEMBER(GpuBox, "boxes", max, "acc += boxes[0].max;"),
-        RT_MEMBER(GpuTriangle, "triangles", vertices_material, "acc += vec4(triangles[0].vertices_material);"),
+        RT_MEMBER(GpuTriangle, "triangles", vertices_material,
+                  "acc += vec4(triangles[0].vertices_material);"),
         RT_MEMBER(GpuMaterial, "materials", ambient, "acc += materials[0].ambient;"),
         RT_MEMBER(GpuMaterial, "materials", diffuse, "acc += materials[0].diffuse;"),
-        RT_MEMBER(GpuMaterial, "materials", specular_shininess, "acc += materials[0].specular_shininess;"),
+        RT_MEMBER(GpuMaterial, "materials", specular_shininess,
+                  "acc += materials[0].specular_shininess;"),
         RT_MEMBER(GpuMaterial, "materials", emissive, "acc += materials[0].emissive;"),
         RT_MEMBER(GpuMaterial, "materials", reflective, "acc += materials[0].reflective;"),
-        RT_MEMBER(GpuMaterial, "materials", transmissive_ior, "acc += materials[0].transmissive_ior;"),
+        RT_MEMBER(GpuMaterial, "materials", transmissive_ior,
+                  "acc += materials[0].transmissive_ior;"),
         RT_MEMBER(GpuLight, "lights", position_kind, "acc += lights[0].position_kind;"),
         RT_MEMBER(GpuLight, "lights", direction, "acc += lights[0].direction;"),
         RT_MEMBER(GpuLight, "lights", intensity, "acc += lights[0].intensity;"),
@@ -108,10 +113,12 @@ TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
         // Arrays of structs have a top-level stride; a plain array (positions[]) its own.
         const GLenum properties[] = {GL_OFFSET, GL_TOP_LEVEL_ARRAY_STRIDE, GL_ARRAY_STRIDE};
         GLint values[3] = {-1, -1, -1};
-        glGetProgramResourceiv(program, GL_BUFFER_VARIABLE, index, 3, properties, 3, nullptr, values);
+        glGetProgramResourceiv(program, GL_BUFFER_VARIABLE, index, 3, properties, 3, nullptr,
+                               values);
         if (values[1] == 0) values[1] = values[2];
         EXPECT_EQ(std::size_t(values[0]), m.offset)
-            << m.name << ": GLSL puts it at byte " << values[0] << ", the C++ struct at " << m.offset
+            << m.name << ": GLSL puts it at byte " << values[0] << ", the C++ struct at "
+            << m.offset
             << " (change framework/gpu/gpu_scene.h and shaders/scene_layout.glsl together)";
         EXPECT_EQ(std::size_t(values[1]), m.stride)
             << m.name << ": GLSL's array stride is " << values[1] << ", sizeof in C++ " << m.stride;

@@ -148,8 +148,8 @@ TEST(ImageFiles, HugePngHeaderIsRefusedBeforeDecoding) {
     const std::uint32_t side = 100000;
     for (int k = 0; k < 2; ++k)
         for (int b = 0; b < 4; ++b) bytes[16 + 4 * k + b] = char((side >> (24 - 8 * b)) & 0xff);
-    const std::uint32_t crc = std::uint32_t(
-        crc32(0, reinterpret_cast<const unsigned char*>(bytes.data()) + 12, 4 + 13));
+    const std::uint32_t crc =
+        std::uint32_t(crc32(0, reinterpret_cast<const unsigned char*>(bytes.data()) + 12, 4 + 13));
     for (int b = 0; b < 4; ++b) bytes[29 + b] = char((crc >> (24 - 8 * b)) & 0xff);
     std::ofstream(file, std::ios::binary) << bytes;
     try {
@@ -157,7 +157,8 @@ TEST(ImageFiles, HugePngHeaderIsRefusedBeforeDecoding) {
         FAIL() << "a 100000 x 100000 header was accepted";
     } catch (const ImageError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("huge.png: error: the image is 100000 x 100000 pixels"), std::string::npos)
+        EXPECT_NE(what.find("huge.png: error: the image is 100000 x 100000 pixels"),
+                  std::string::npos)
             << what;
         EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }

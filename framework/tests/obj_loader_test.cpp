@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "core/source_dir.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
-#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -25,7 +25,8 @@ using rt::testing::TempDir;
 
 const fs::path kBadObjs = rt::source_dir() / "framework" / "tests" / "bad_objs";
 
-rt::ObjMesh load(const fs::path& file, rt::Vec3 scale = rt::Vec3(1), rt::Vec3 translate = rt::Vec3(0)) {
+rt::ObjMesh load(const fs::path& file, rt::Vec3 scale = rt::Vec3(1),
+                 rt::Vec3 translate = rt::Vec3(0)) {
     return rt::load_obj(file, file.filename().string(), scale, translate, 1'000'000);
 }
 
@@ -41,7 +42,8 @@ std::string error_of(const fs::path& file) {
 
 rt::Vec3 geometric_normal(const rt::ObjMesh& mesh, std::size_t i) {
     const auto& t = mesh.triangles[i];
-    return glm::normalize(glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]));
+    return glm::normalize(glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
+                                     mesh.vertices[t[2]] - mesh.vertices[t[0]]));
 }
 
 // ---- damaged files ---------------------------------------------------------------------------
@@ -85,8 +87,10 @@ TEST(ObjLoader, DamagedFilesGiveOneLineErrorsNamingFileAndLine) {
         ASSERT_NE(message, "") << "loaded without an error";
         std::string start = "mesh \"" + damage.file + "\"" +
                             (damage.line > 0 ? " line " + std::to_string(damage.line) : "") + ": ";
-        EXPECT_EQ(message.rfind(start, 0), 0u) << "expected to start with: " << start << "\n got: " << message;
-        EXPECT_NE(message.find(damage.part), std::string::npos) << "expected: " << damage.part << "\n got: " << message;
+        EXPECT_EQ(message.rfind(start, 0), 0u)
+            << "expected to start with: " << start << "\n got: " << message;
+        EXPECT_NE(message.find(damage.part), std::string::npos)
+            << "expected: " << damage.part << "\n got: " << message;
         EXPECT_EQ(message.find_first_of("\r\n"), std::string::npos) << message;
         EXPECT_NE(message.find("; "), std::string::npos) << "no fix suggested: " << message;
     }
@@ -98,7 +102,8 @@ TEST(ObjLoader, EveryDamagedFileIsListed) {
     std::set<std::string> present;
     for (const auto& entry : fs::directory_iterator(kBadObjs))
         if (entry.path().extension() == ".obj") present.insert(entry.path().filename().string());
-    for (const std::string& file : present) EXPECT_TRUE(listed.count(file)) << file << " is not in expected.txt";
+    for (const std::string& file : present)
+        EXPECT_TRUE(listed.count(file)) << file << " is not in expected.txt";
     for (const std::string& file : listed) {
         if (file.find("missing-file") != std::string::npos) continue;  // missing on purpose
         EXPECT_TRUE(present.count(file)) << file << " is listed but not in bad_objs/";
@@ -143,24 +148,31 @@ TEST(ObjLoader, NormalsAndUvsGetOneVertexPerCombination) {
 // warning naming the first such line, rather than refusing the mesh.
 TEST(ObjLoader, IndicesIntoAbsentUvAndNormalListsAreDroppedWithAWarning) {
     TempDir dir("dangling");
-    const auto file = dir.write("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n# faces\nf 1/1/1 2/1/1 3/1/1\nf 2/1/1 4/1/1 3/1/1\n");
+    const auto file = dir.write(
+        "d.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n# faces\nf 1/1/1 2/1/1 3/1/1\nf 2/1/1 4/1/1 3/1/1\n");
     const rt::ObjMesh mesh = load(file);
     EXPECT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.vertices.size(), 4u) << "no uvs or normals: vertices stay one per position";
     EXPECT_TRUE(mesh.uvs.empty());
     EXPECT_TRUE(mesh.normals.empty());
     ASSERT_EQ(mesh.warnings.size(), 2u);
-    EXPECT_EQ(mesh.warnings[0].rfind("mesh \"d.obj\" line 6: faces name texture coordinates", 0), 0u) << mesh.warnings[0];
-    EXPECT_EQ(mesh.warnings[1].rfind("mesh \"d.obj\" line 6: faces name normals", 0), 0u) << mesh.warnings[1];
+    EXPECT_EQ(mesh.warnings[0].rfind("mesh \"d.obj\" line 6: faces name texture coordinates", 0),
+              0u)
+        << mesh.warnings[0];
+    EXPECT_EQ(mesh.warnings[1].rfind("mesh \"d.obj\" line 6: faces name normals", 0), 0u)
+        << mesh.warnings[1];
     // With one "vt" line the same index 2 is out of range: that stays an error.
     const auto bad = dir.write("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n");
-    EXPECT_NE(error_of(bad).find("texture coordinate index 2 out of range"), std::string::npos) << error_of(bad);
+    EXPECT_NE(error_of(bad).find("texture coordinate index 2 out of range"), std::string::npos)
+        << error_of(bad);
 }
 
 TEST(ObjLoader, CornersWithoutNormalsGetTheZeroSentinel) {
     TempDir dir("obj-partial-normals");
-    fs::path file = dir.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
-                                       "f 1//1 2//1 3//1\nf 2 4 3\n");
+    fs::path file = dir.write("m.obj",
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
+                              "f 1//1 2//1 3//1\nf 2 4 3\n");
     rt::ObjMesh mesh = load(file);
     ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
     EXPECT_TRUE(mesh.uvs.empty());
@@ -192,8 +204,9 @@ TEST(ObjLoader, DirectivesTheMeshDoesNotUseAreIgnored) {
     TempDir dir("obj-ignored");
     // tinyobjloader would size arrays from the tag's counts (-1 here); polylines and points name
     // vertices that do not exist. None of them is a surface, so none may matter.
-    fs::path file = dir.write("m.obj", "o thing\ng part\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                                       "t crease -1/0/0\nvw 0 -1 0.5\nl 1 2 99\np -50\nf 1 2 3\ns off\n");
+    fs::path file = dir.write("m.obj",
+                              "o thing\ng part\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                              "t crease -1/0/0\nvw 0 -1 0.5\nl 1 2 99\np -50\nf 1 2 3\ns off\n");
     rt::ObjMesh mesh = load(file);
     EXPECT_EQ(mesh.triangles.size(), 1u);
 }
@@ -209,9 +222,10 @@ TEST(ObjLoader, MtlMaterialsBecomeSceneMaterials) {
               "newmtl mirror\nKs 0.9 0.9 0.9\nillum 3\n"
               "newmtl plain\nKd 0.2 0.2 0.2\n"
               "newmtl unused\nKd 1 1 1\n");
-    dir.write("models/m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                              "usemtl red\nf 1 2 3\nusemtl glass\nf 1 2 3\nusemtl mirror\nf 1 2 3\n"
-                              "usemtl plain\nf 1 2 3\n");
+    dir.write("models/m.obj",
+              "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+              "usemtl red\nf 1 2 3\nusemtl glass\nf 1 2 3\nusemtl mirror\nf 1 2 3\n"
+              "usemtl plain\nf 1 2 3\n");
     fs::path scene_file = dir.write("scene.json", R"({
       "materials": [{"name": "plain", "diffuse": [0, 1, 0]}, {"name": "other"}],
       "surfaces": [
@@ -224,15 +238,16 @@ TEST(ObjLoader, MtlMaterialsBecomeSceneMaterials) {
     EXPECT_EQ(scene.material_names[2], "models/m.obj:red");
     EXPECT_EQ(scene.material_names[3], "models/m.obj:glass");
     EXPECT_EQ(scene.material_names[4], "models/m.obj:mirror");
-    const rt::Material &red = scene.materials[2], &glass = scene.materials[3], &mirror = scene.materials[4];
+    const rt::Material &red = scene.materials[2], &glass = scene.materials[3],
+                       &mirror = scene.materials[4];
     EXPECT_EQ(red.ambient, rt::Color(0.1f, 0, 0));
     EXPECT_EQ(red.diffuse, rt::Color(0.8f, 0.1f, 0.1f));
     EXPECT_EQ(red.specular, rt::Color(0.5f));
     EXPECT_EQ(red.shininess, 64);
     EXPECT_EQ(red.emissive, rt::Color(0, 0, 0.25f));
-    EXPECT_EQ(red.reflective, rt::Color(0));     // illum not 3..7
-    EXPECT_EQ(red.transmissive, rt::Color(0));   // no d
-    EXPECT_EQ(red.ior, 1.5f);                    // no Ni: the scene default
+    EXPECT_EQ(red.reflective, rt::Color(0));    // illum not 3..7
+    EXPECT_EQ(red.transmissive, rt::Color(0));  // no d
+    EXPECT_EQ(red.ior, 1.5f);                   // no Ni: the scene default
     EXPECT_EQ(glass.transmissive, rt::Color(0.75f));
     EXPECT_EQ(glass.ior, 1.33f);
     EXPECT_EQ(glass.diffuse, rt::Color(0));
@@ -250,7 +265,8 @@ TEST(ObjLoader, SceneMaterialsNamedAfterTheFileOverrideTheLibrary) {
     dir.write("m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     rt::Scene scene = rt::parse_scene(R"({
       "materials": [{"name": "m.obj:red", "diffuse": [0, 0, 1]}],
-      "surfaces": [{"type": "mesh", "file": "m.obj"}]})", "test.json", dir.path());
+      "surfaces": [{"type": "mesh", "file": "m.obj"}]})",
+                                      "test.json", dir.path());
     ASSERT_EQ(scene.materials.size(), 1u);
     EXPECT_EQ(scene.triangles[0].material, 0);
 }
@@ -260,15 +276,20 @@ TEST(ObjLoader, MissingLibraryIsAnErrorOnlyWhenItIsNeeded) {
     dir.write("m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     // The scene defines "red": the library is not needed.
     rt::Scene scene = rt::parse_scene(R"({"materials": [{"name": "x"}, {"name": "red"}],
-      "surfaces": [{"type": "mesh", "file": "m.obj"}]})", "test.json", dir.path());
+      "surfaces": [{"type": "mesh", "file": "m.obj"}]})",
+                                      "test.json", dir.path());
     EXPECT_EQ(scene.triangles[0].material, 1);
     // Otherwise it is, and the message points at the mesh's "file" value and the mtllib line.
     try {
-        rt::parse_scene(R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})", "test.json", dir.path());
+        rt::parse_scene(R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})", "test.json",
+                        dir.path());
         FAIL() << "no error";
     } catch (const rt::SceneError& e) {
         std::string message = e.what();
-        EXPECT_EQ(message.rfind("test.json:1:40: error: mesh \"m.obj\" line 1: material library \"gone.mtl\" file not found", 0), 0u)
+        EXPECT_EQ(message.rfind("test.json:1:40: error: mesh \"m.obj\" line 1: material library "
+                                "\"gone.mtl\" file not found",
+                                0),
+                  0u)
             << message;
     }
 }
@@ -287,13 +308,15 @@ TEST(ObjLoader, MalformedLibrariesAreReported) {
         {"newmtl a\nd 1.5\n", "\"lib.mtl\" line 2: \"d\" must be between 0 and 1"},
         {"newmtl a\nillum 2.5\n", "\"illum\" must be a whole number 0..10"},
         {"Kd 1 1 1\nnewmtl a\n", "\"lib.mtl\" line 1: \"Kd\" comes before any \"newmtl\""},
-        {"newmtl a\nnewmtl a\n", "\"lib.mtl\" line 2: material \"a\" is defined again (first on line 1)"},
+        {"newmtl a\nnewmtl a\n",
+         "\"lib.mtl\" line 2: material \"a\" is defined again (first on line 1)"},
         {"newmtl a b\n", "\"newmtl\" needs one name without spaces"},
         {"newmtl b\n", "mesh \"m.obj\" line 5: usemtl \"a\" is not defined in \"lib.mtl\""},
     };
     for (const auto& [mtl, expected] : cases) {
         std::string message = mtl_error(mtl);
-        EXPECT_NE(message.find(expected), std::string::npos) << "mtl: " << mtl << "\n got: " << message;
+        EXPECT_NE(message.find(expected), std::string::npos)
+            << "mtl: " << mtl << "\n got: " << message;
     }
     EXPECT_EQ(mtl_error("newmtl a\nNi 0\nmap_Kd texture.png\nPr 0.5\n"), "");  // ignored or lenient
 }
@@ -308,7 +331,8 @@ TEST(SceneShading, ShadingNormalInterpolatesOrFallsBack) {
     const rt::Vec2 centre(1.0f / 3, 1.0f / 3);
     EXPECT_EQ(rt::shading_normal(scene, 0, centre), rt::Vec3(0, 0, 1));  // no normals: geometric
     EXPECT_EQ(rt::surface_uv(scene, 0, centre), rt::Vec2(0));
-    scene.normals = {glm::normalize(rt::Vec3(-1, 0, 1)), glm::normalize(rt::Vec3(1, 0, 1)), {0, 0, 1}};
+    scene.normals = {
+        glm::normalize(rt::Vec3(-1, 0, 1)), glm::normalize(rt::Vec3(1, 0, 1)), {0, 0, 1}};
     scene.uvs = {{0, 0}, {1, 0}, {0, 1}};
     rt::Vec3 at_b = rt::shading_normal(scene, 0, {1, 0});  // beta = 1: vertex b
     EXPECT_NEAR(at_b.x, scene.normals[1].x, 1e-6);
@@ -330,7 +354,8 @@ TEST(SceneShading, ShadingNormalInterpolatesOrFallsBack) {
 
 TEST(SceneShading, MixedSurfacesKeepTheArraysParallel) {
     TempDir dir("obj-mixed");
-    dir.write("n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0.6 0.8\nvt 0.5 0.5\nf 1/1/1 2/1/1 3/1/1\n");
+    dir.write("n.obj",
+              "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0.6 0.8\nvt 0.5 0.5\nf 1/1/1 2/1/1 3/1/1\n");
     dir.write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     rt::Scene scene = rt::parse_scene(R"({"surfaces": [
         {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
@@ -358,7 +383,8 @@ TEST(SceneShading, MixedSurfacesKeepTheArraysParallel) {
     EXPECT_EQ(rt::shading_normal(scene, 0, {0.2f, 0.3f}), rt::Vec3(0, 0, 1));
     // A scene without any vertex normals or uvs keeps both arrays empty.
     rt::Scene plain = rt::parse_scene(R"({"surfaces": [{"type": "mesh", "file": "plain.obj"},
-        {"type": "mesh", "procedural": "soup", "triangles": 3}]})", "test.json", dir.path());
+        {"type": "mesh", "procedural": "soup", "triangles": 3}]})",
+                                      "test.json", dir.path());
     EXPECT_TRUE(plain.normals.empty() && plain.uvs.empty());
 }
 
@@ -373,14 +399,16 @@ const char* const kValidObj =
     "g front\ns 1\nusemtl red\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"
     "usemtl blue\nf 4//1 3//1 5//1\nf 1/1 2/2 6/3\nf -6 -5 -4 -2 -3\n"
     "g back\nusemtl red\nf 1 6 2\n";
-const char* const kValidMtl = "newmtl red\nKd 0.8 0.1 0.1\nNs 10\nillum 3\nKs 1 1 1\n"
-                              "newmtl blue\nKd 0.1 0.1 0.8\nd 0.5\nNi 1.4\n";
+const char* const kValidMtl =
+    "newmtl red\nKd 0.8 0.1 0.1\nNs 10\nillum 3\nKs 1 1 1\n"
+    "newmtl blue\nKd 0.1 0.1 0.8\nd 0.5\nNi 1.4\n";
 
 // Loads `dir`/m.obj; anything other than success or a one-line ObjError fails the test. On
 // success the mesh must be well formed.
 void expect_no_crash(const TempDir& dir, const std::string& what) {
     try {
-        rt::ObjMesh mesh = rt::load_obj(dir.path() / "m.obj", "m.obj", rt::Vec3(2, -1, 1), rt::Vec3(0.5f), 1000);
+        rt::ObjMesh mesh =
+            rt::load_obj(dir.path() / "m.obj", "m.obj", rt::Vec3(2, -1, 1), rt::Vec3(0.5f), 1000);
         for (const auto& t : mesh.triangles)
             for (std::uint32_t v : t) ASSERT_LT(v, mesh.vertices.size()) << what;
         ASSERT_TRUE(mesh.normals.empty() || mesh.normals.size() == mesh.vertices.size()) << what;
@@ -430,7 +458,8 @@ TEST(ObjLoaderRobustness, RandomByteEditsOfAValidObj) {
     TempDir dir("obj-edits");
     dir.write("lib.mtl", kValidMtl);
     const std::string obj = kValidObj;
-    const std::string alphabet = std::string("0123456789-+./ \n\r\tvtnfe#lpsgo") + '\0' + "\x01\xff\xc3";
+    const std::string alphabet =
+        std::string("0123456789-+./ \n\r\tvtnfe#lpsgo") + '\0' + "\x01\xff\xc3";
     std::mt19937 random(2718);  // fixed seed: a failure names the input and is reproducible
     for (int round = 0; round < 1000; ++round) {
         const std::string mutant = rt::testing::mutate(obj, alphabet, random);
@@ -451,8 +480,10 @@ TEST(ObjLoaderRobustness, RandomByteEditsOfAValidMtl) {
         for (int e = 0; e < 2 && !mutant.empty(); ++e) {
             std::size_t at = random() % mutant.size();
             char c = alphabet[random() % alphabet.size()];
-            if (random() % 2) mutant[at] = c;
-            else mutant.insert(mutant.begin() + long(at), c);
+            if (random() % 2)
+                mutant[at] = c;
+            else
+                mutant.insert(mutant.begin() + long(at), c);
         }
         dir.write("lib.mtl", mutant);
         expect_no_crash(dir, mutant);

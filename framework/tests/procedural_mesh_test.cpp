@@ -35,7 +35,8 @@ std::vector<std::uint32_t> weld(const rt::TriangleMesh& mesh) {
     std::vector<std::uint32_t> id(mesh.vertices.size());
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
         const rt::Vec3& p = mesh.vertices[i];
-        id[i] = first.emplace(std::array<rt::Real, 3>{p.x, p.y, p.z}, std::uint32_t(first.size())).first->second;
+        id[i] = first.emplace(std::array<rt::Real, 3>{p.x, p.y, p.z}, std::uint32_t(first.size()))
+                    .first->second;
     }
     return id;
 }
@@ -51,9 +52,11 @@ void expect_closed_and_consistent(const rt::TriangleMesh& mesh) {
         for (int k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
     }
     for (const auto& [edge, uses] : directed) {
-        ASSERT_EQ(uses, 1) << "edge " << edge.first << "-" << edge.second << " used " << uses << " times";
+        ASSERT_EQ(uses, 1) << "edge " << edge.first << "-" << edge.second << " used " << uses
+                           << " times";
         auto reverse = directed.find({edge.second, edge.first});
-        ASSERT_NE(reverse, directed.end()) << "edge " << edge.first << "-" << edge.second << " is a border";
+        ASSERT_NE(reverse, directed.end())
+            << "edge " << edge.first << "-" << edge.second << " is a border";
     }
 }
 
@@ -88,13 +91,14 @@ TEST(ProceduralMesh, IcosphereCountsAndClosedness) {
         std::size_t expected = 20;
         for (int k = 0; k < s; ++k) expected *= 4;
         EXPECT_EQ(mesh.triangles.size(), expected) << "subdivisions " << s;
-        EXPECT_EQ(mesh.vertices.size(), expected / 2 + 2) << "shared vertices (Euler: V = F / 2 + 2)";
+        EXPECT_EQ(mesh.vertices.size(), expected / 2 + 2)
+            << "shared vertices (Euler: V = F / 2 + 2)";
         expect_well_formed(mesh);
         expect_closed_and_consistent(mesh);
         EXPECT_TRUE(mesh.uvs.empty());
         for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
             EXPECT_NEAR(double(glm::length(mesh.vertices[v])), 2.0, 1e-5);  // on the sphere
-            EXPECT_GT(glm::dot(mesh.normals[v], mesh.vertices[v]), 0);     // pointing out
+            EXPECT_GT(glm::dot(mesh.normals[v], mesh.vertices[v]), 0);      // pointing out
         }
     }
 }
@@ -135,7 +139,8 @@ TEST(ProceduralMesh, TorusCountsClosednessAndVolume) {
         glm::dvec3 p(fine.vertices[v]);
         glm::dvec3 axis_point = glm::normalize(glm::dvec3(p.x, 0, p.z)) * 2.0;
         ASSERT_GT(glm::dot(glm::dvec3(fine.normals[v]), p - axis_point), 0.49) << v;
-        ASSERT_TRUE(fine.uvs[v].x >= 0 && fine.uvs[v].x <= 1 && fine.uvs[v].y >= 0 && fine.uvs[v].y <= 1);
+        ASSERT_TRUE(fine.uvs[v].x >= 0 && fine.uvs[v].x <= 1 && fine.uvs[v].y >= 0 &&
+                    fine.uvs[v].y <= 1);
     }
     EXPECT_EQ(fine.uvs.back(), rt::Vec2(1, 1));
 }
@@ -154,7 +159,8 @@ TEST(ProceduralMesh, TerrainIsBoundedAndFacesUp) {
             low = std::min(low, p.y), high = std::max(high, p.y);
         }
         EXPECT_GT(high - low, rt::Real(0.1)) << "a terrain, not a flat plane";
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) ASSERT_GT(face_normal(mesh, i).y, 0);
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            ASSERT_GT(face_normal(mesh, i).y, 0);
         for (const rt::Vec3& n : mesh.normals) ASSERT_GT(n.y, 0);
         EXPECT_EQ(mesh.vertices.front().x, -1);
         EXPECT_EQ(mesh.vertices.back().z, 1);
@@ -175,7 +181,8 @@ TEST(ProceduralMesh, SoupCountsSizesAndBounds) {
         for (int k = 0; k < 3; ++k) {
             const rt::Vec3& p = soup.vertices[t[std::size_t(k)]];
             ASSERT_TRUE(p.x >= -1 && p.x <= 1 && p.y >= -1 && p.y <= 1 && p.z >= -1 && p.z <= 1);
-            edges += glm::length(glm::dvec3(soup.vertices[t[std::size_t((k + 1) % 3)]]) - glm::dvec3(p));
+            edges +=
+                glm::length(glm::dvec3(soup.vertices[t[std::size_t((k + 1) % 3)]]) - glm::dvec3(p));
         }
         ASSERT_GT(glm::length(face_normal(soup, i)), 0);
     }
@@ -190,10 +197,12 @@ TEST(ProceduralMesh, SameSeedSameBitsOtherSeedOtherMesh) {
     EXPECT_TRUE(same_bits(rt::make_triangle_soup(1000, 5), rt::make_triangle_soup(1000, 5)));
     EXPECT_TRUE(same_bits(rt::make_icosphere(3), rt::make_icosphere(3)));
     EXPECT_TRUE(same_bits(rt::make_torus(30, 12), rt::make_torus(30, 12)));
-    EXPECT_TRUE(same_bits(rt::make_procedural_mesh("terrain", 999, 42), rt::make_procedural_mesh("terrain", 999, 42)));
+    EXPECT_TRUE(same_bits(rt::make_procedural_mesh("terrain", 999, 42),
+                          rt::make_procedural_mesh("terrain", 999, 42)));
     EXPECT_FALSE(same_bits(rt::make_terrain(20, 30, 5), rt::make_terrain(20, 30, 6)));
     EXPECT_FALSE(same_bits(rt::make_triangle_soup(1000, 5), rt::make_triangle_soup(1000, 6)));
-    EXPECT_FALSE(same_bits(rt::make_procedural_mesh("soup", 10, 1), rt::make_procedural_mesh("soup", 10, 2)));
+    EXPECT_FALSE(same_bits(rt::make_procedural_mesh("soup", 10, 1),
+                           rt::make_procedural_mesh("soup", 10, 2)));
 }
 
 // A few coordinates pinned to values computed independently (double-precision formulas, by
@@ -213,7 +222,8 @@ TEST(ProceduralMesh, KnownCoordinates) {
     for (const rt::Vec3& p : ico.vertices) {  // every coordinate is 0, +-scale or +-phi*scale
         for (int k = 0; k < 3; ++k) {
             double c = std::fabs(double(p[k]));
-            EXPECT_TRUE(c == 0 || std::fabs(c - scale) < 1e-7 || std::fabs(c - phi * scale) < 1e-7) << c;
+            EXPECT_TRUE(c == 0 || std::fabs(c - scale) < 1e-7 || std::fabs(c - phi * scale) < 1e-7)
+                << c;
         }
     }
 }
@@ -273,7 +283,8 @@ TEST(ProceduralMesh, ChoosesTheSmallestResolution) {
         EXPECT_TRUE(terrain.a == 1 || std::size_t(2 * (terrain.a - 1) * terrain.b) < n) << n;
         EXPECT_EQ(rt::make_procedural_mesh("terrain", n, 3).triangles.size(), terrain.triangles);
 
-        EXPECT_EQ(rt::make_procedural_mesh("soup", n, 3).triangles.size(), std::max<std::size_t>(n, 1));
+        EXPECT_EQ(rt::make_procedural_mesh("soup", n, 3).triangles.size(),
+                  std::max<std::size_t>(n, 1));
     }
     EXPECT_EQ(rt::procedural_resolution("icosphere", 81).a, 2);  // 320 triangles
     EXPECT_EQ(rt::procedural_resolution("icosphere", 80).a, 1);
@@ -291,8 +302,10 @@ TEST(ProceduralMesh, RejectsUnknownNamesAndAbsurdSizes) {
     }
     EXPECT_THROW(rt::make_procedural_mesh("", 100), std::invalid_argument);
     EXPECT_THROW(rt::make_procedural_mesh("Torus", 100), std::invalid_argument);
-    EXPECT_THROW(rt::make_procedural_mesh("soup", rt::kMaxProceduralTriangles + 1), std::invalid_argument);
-    EXPECT_THROW(rt::make_procedural_mesh("icosphere", 6'000'000), std::invalid_argument);  // needs 20971520
+    EXPECT_THROW(rt::make_procedural_mesh("soup", rt::kMaxProceduralTriangles + 1),
+                 std::invalid_argument);
+    EXPECT_THROW(rt::make_procedural_mesh("icosphere", 6'000'000),
+                 std::invalid_argument);  // needs 20971520
     EXPECT_THROW(rt::make_icosphere(-1), std::invalid_argument);
     EXPECT_THROW(rt::make_icosphere(rt::kMaxIcosphereSubdivisions + 1), std::invalid_argument);
     EXPECT_THROW(rt::make_icosphere(1, 0), std::invalid_argument);
@@ -301,7 +314,8 @@ TEST(ProceduralMesh, RejectsUnknownNamesAndAbsurdSizes) {
     EXPECT_THROW(rt::make_torus(8, 8, 1, 1), std::invalid_argument);
     EXPECT_THROW(rt::make_terrain(0, 8, 1), std::invalid_argument);
     EXPECT_THROW(rt::make_terrain(8, 8, 1, -1), std::invalid_argument);
-    EXPECT_THROW(rt::make_triangle_soup(10, 1, std::numeric_limits<rt::Real>::quiet_NaN()), std::invalid_argument);
+    EXPECT_THROW(rt::make_triangle_soup(10, 1, std::numeric_limits<rt::Real>::quiet_NaN()),
+                 std::invalid_argument);
     EXPECT_THROW(rt::make_triangle_soup(rt::kMaxProceduralTriangles + 1, 1), std::invalid_argument);
 }
 

@@ -15,9 +15,9 @@
 #include <sstream>
 #include <string>
 
+#include "core/source_dir.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
-#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -25,9 +25,13 @@ namespace {
 
 const fs::path kSource = rt::source_dir();
 
-std::string canonical(const std::string& text) { return rt::canonical_scene_text(text, "test.json", fs::path()); }
+std::string canonical(const std::string& text) {
+    return rt::canonical_scene_text(text, "test.json", fs::path());
+}
 
-rt::Scene parse(const std::string& text) { return rt::parse_scene(text, "test.json", fs::path()); }
+rt::Scene parse(const std::string& text) {
+    return rt::parse_scene(text, "test.json", fs::path());
+}
 
 std::string read_file(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -63,7 +67,8 @@ void expect_same_scene(const rt::Scene& a, const rt::Scene& b) {
         EXPECT_TRUE(same(a.planes[i].normal, b.planes[i].normal)) << i;
     }
     ASSERT_EQ(a.vertices.size(), b.vertices.size());
-    for (std::size_t i = 0; i < a.vertices.size(); ++i) EXPECT_TRUE(same(a.vertices[i], b.vertices[i])) << i;
+    for (std::size_t i = 0; i < a.vertices.size(); ++i)
+        EXPECT_TRUE(same(a.vertices[i], b.vertices[i])) << i;
     ASSERT_EQ(a.materials.size(), b.materials.size());
     for (std::size_t i = 0; i < a.materials.size(); ++i) {
         EXPECT_EQ(a.material_name(int(i)), b.material_name(int(i)));
@@ -146,7 +151,8 @@ TEST(SceneFormat, StageScenesAreCanonicalAndKeepTheirValues) {
     const std::string formatted = rt::canonical_scene_text(text, file.string(), file.parent_path());
     EXPECT_EQ(formatted, text) << "run: rt fmt " << file.string();
     EXPECT_EQ(rt::canonical_scene_text(formatted, file.string(), file.parent_path()), formatted);
-    expect_same_scene(rt::load_scene(file), rt::parse_scene(formatted, "x.json", file.parent_path()));
+    expect_same_scene(rt::load_scene(file),
+                      rt::parse_scene(formatted, "x.json", file.parent_path()));
     // The same scene one number per line (as the files were dumped before) formats back to it.
     const std::string dumped = nlohmann::json::parse(text).dump(2) + "\n";
     EXPECT_EQ(rt::canonical_scene_text(dumped, file.string(), file.parent_path()), text);
@@ -168,7 +174,8 @@ TEST(SceneFormat, NumbersReadBackAsTheSameDouble) {
         const std::uint64_t b = random();
         std::memcpy(&d, &b, sizeof d);
         if (!std::isfinite(d)) continue;
-        if (i % 2) d = std::ldexp(double(random() % 100000), -int(random() % 20));  // short decimals
+        if (i % 2)
+            d = std::ldexp(double(random() % 100000), -int(random() % 20));  // short decimals
         const std::string text = rt::canonical_number(d);
         ASSERT_EQ(bits(std::strtod(text.c_str(), nullptr)), bits(d)) << text;
         // ... and through the JSON reader the loader uses (integers included).
@@ -244,40 +251,59 @@ TEST(Checkerboard, EdgesAreComputedInDoubleFromTheNumbersAsWritten) {
     ASSERT_EQ(scene.boxes.size(), 3u);
     for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(scene.boxes[std::size_t(k)].min.x, rt::Real(0.1 + (0.7 - 0.1) * k / 3)) << k;
-        EXPECT_EQ(scene.boxes[std::size_t(k)].max.x, k == 2 ? rt::Real(0.7) : rt::Real(0.1 + (0.7 - 0.1) * (k + 1) / 3)) << k;
+        EXPECT_EQ(scene.boxes[std::size_t(k)].max.x,
+                  k == 2 ? rt::Real(0.7) : rt::Real(0.1 + (0.7 - 0.1) * (k + 1) / 3))
+            << k;
     }
 }
 
 TEST(Checkerboard, Mistakes) {
-    const std::string head = R"({"materials": [{"name": "a"}, {"name": "b"}], "surfaces": [{"type": "checkerboard", )";
+    const std::string head =
+        R"({"materials": [{"name": "a"}, {"name": "b"}], "surfaces": [{"type": "checkerboard", )";
     const std::pair<std::string, std::string> cases[] = {
-        {R"("max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})", "{\"type\": \"checkerboard\"|a checkerboard needs \"min\""},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "materials": ["a", "b"]}]})", "{\"type\": \"checkerboard\"|a checkerboard needs \"tiles\""},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2]}]})", "{\"type\": \"checkerboard\"|a checkerboard needs \"materials\""},
-        {R"("min": [0, 0, 0], "max": [0, 0, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})", "0, 0, 1]|\"max\" must be above \"min\", but x is 0 <= 0"},
-        {R"("min": [0, 0, 0], "max": [1, -1, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})", "-1, 1]|\"max\" must not be below \"min\", but y is -1 < 0"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2], "materials": ["a", "b"]}]})", "[2]|\"tiles\" must be an array of 2 whole numbers"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 1.5], "materials": ["a", "b"]}]})", "1.5]|\"tiles\"[1] must be a whole number"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [0, 2], "materials": ["a", "b"]}]})", "0, 2]|\"tiles\"[0] must be between 1 and 1024, got 0"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2000], "materials": ["a", "b"]}]})", "2000]|\"tiles\"[1] must be between 1 and 1024"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": "a"}]})", "\"a\"}]|\"materials\" must be an array of 2 materials, got the string"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "c"]}]})", "\"c\"]|unknown material \"c\""},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", 5]}]})", "5]|material index 5 out of range"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": [true, "a"]}]})", "true|\"materials\"[0] must be a material name or index"},
-        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "b"], "material": "a"}]})", "\"material\"|unknown key \"material\" in a checkerboard; did you mean \"materials\"?"},
+        {R"("max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})",
+         "{\"type\": \"checkerboard\"|a checkerboard needs \"min\""},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "materials": ["a", "b"]}]})",
+         "{\"type\": \"checkerboard\"|a checkerboard needs \"tiles\""},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2]}]})",
+         "{\"type\": \"checkerboard\"|a checkerboard needs \"materials\""},
+        {R"("min": [0, 0, 0], "max": [0, 0, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})",
+         "0, 0, 1]|\"max\" must be above \"min\", but x is 0 <= 0"},
+        {R"("min": [0, 0, 0], "max": [1, -1, 1], "tiles": [2, 2], "materials": ["a", "b"]}]})",
+         "-1, 1]|\"max\" must not be below \"min\", but y is -1 < 0"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2], "materials": ["a", "b"]}]})",
+         "[2]|\"tiles\" must be an array of 2 whole numbers"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 1.5], "materials": ["a", "b"]}]})",
+         "1.5]|\"tiles\"[1] must be a whole number"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [0, 2], "materials": ["a", "b"]}]})",
+         "0, 2]|\"tiles\"[0] must be between 1 and 1024, got 0"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2000], "materials": ["a", "b"]}]})",
+         "2000]|\"tiles\"[1] must be between 1 and 1024"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": "a"}]})",
+         "\"a\"}]|\"materials\" must be an array of 2 materials, got the string"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "c"]}]})",
+         "\"c\"]|unknown material \"c\""},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", 5]}]})",
+         "5]|material index 5 out of range"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": [true, "a"]}]})",
+         "true|\"materials\"[0] must be a material name or index"},
+        {R"("min": [0, 0, 0], "max": [1, 0, 1], "tiles": [2, 2], "materials": ["a", "b"], "material": "a"}]})",
+         "\"material\"|unknown key \"material\" in a checkerboard; did you mean \"materials\"?"},
     };
     for (const auto& [rest, expected] : cases) {
         const std::string text = head + rest;
         const std::size_t bar = expected.find('|');
-        const std::string want = "test.json:1:" + std::to_string(text.find(expected.substr(0, bar)) + 1) +
-                                 ": error: " + expected.substr(bar + 1);
+        const std::string want =
+            "test.json:1:" + std::to_string(text.find(expected.substr(0, bar)) + 1) +
+            ": error: " + expected.substr(bar + 1);
         std::string message;
         try {
             parse(text);
         } catch (const rt::SceneError& e) {
             message = e.what();
         }
-        EXPECT_EQ(message.rfind(want, 0), 0u) << "scene: " << text << "\n  got: " << message << "\n want: " << want;
+        EXPECT_EQ(message.rfind(want, 0), 0u)
+            << "scene: " << text << "\n  got: " << message << "\n want: " << want;
     }
 }
 

@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/source_dir.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
-#include "core/source_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -260,40 +260,55 @@ std::string at(const std::string& text, const std::string& marker) {
 TEST(SceneLoader, ProceduralMeshMistakes) {
     const std::string mesh = R"({"surfaces": [{"type": "mesh", )";
     const std::pair<std::string, std::string> cases[] = {
-        {R"("file": "m.obj", "procedural": "torus", "triangles": 10}]})", "\"procedural\"|a mesh has \"file\" or \"procedural\", not both"},
+        {R"("file": "m.obj", "procedural": "torus", "triangles": 10}]})",
+         "\"procedural\"|a mesh has \"file\" or \"procedural\", not both"},
         {R"("scale": 2}]})", "{\"type\": \"mesh\"|a mesh needs \"file\" or \"procedural\""},
-        {R"("procedural": "cube", "triangles": 10}]})", "\"cube\"|unknown \"procedural\" \"cube\"; use \"icosphere\", \"torus\", \"terrain\" or \"soup\""},
-        {R"("procedural": "Torus", "triangles": 10}]})", "\"Torus\"|unknown \"procedural\" \"Torus\"; did you mean \"torus\"?"},
-        {R"("procedural": "torus"}]})", "{\"type\": \"mesh\"|a procedural mesh needs \"triangles\""},
-        {R"("procedural": "soup", "triangles": 0}]})", "0}|\"triangles\" must be between 1 and 20000000, got 0"},
-        {R"("procedural": "soup", "triangles": 2.5}]})", "2.5|\"triangles\" must be a whole number"},
-        {R"("procedural": "soup", "triangles": 20000001}]})", "20000001|\"triangles\" must be between 1 and 20000000"},
-        {R"("procedural": "icosphere", "triangles": 6000000}]})", "6000000|the scene would have more than 20000000 triangles (this icosphere has 20971520)"},
-        {R"("procedural": "soup", "triangles": 5, "seed": -1}]})", "-1|\"seed\" must be between 0 and 9007199254740992"},
-        {R"("procedural": "soup", "triangles": 5, "seed": "x"}]})", "\"x\"|\"seed\" must be a number"},
-        {R"("file": "m.obj", "triangles": 5}]})", "\"triangles\"|\"triangles\" is only for procedural meshes"},
+        {R"("procedural": "cube", "triangles": 10}]})",
+         "\"cube\"|unknown \"procedural\" \"cube\"; use \"icosphere\", \"torus\", \"terrain\" or "
+         "\"soup\""},
+        {R"("procedural": "Torus", "triangles": 10}]})",
+         "\"Torus\"|unknown \"procedural\" \"Torus\"; did you mean \"torus\"?"},
+        {R"("procedural": "torus"}]})",
+         "{\"type\": \"mesh\"|a procedural mesh needs \"triangles\""},
+        {R"("procedural": "soup", "triangles": 0}]})",
+         "0}|\"triangles\" must be between 1 and 20000000, got 0"},
+        {R"("procedural": "soup", "triangles": 2.5}]})",
+         "2.5|\"triangles\" must be a whole number"},
+        {R"("procedural": "soup", "triangles": 20000001}]})",
+         "20000001|\"triangles\" must be between 1 and 20000000"},
+        {R"("procedural": "icosphere", "triangles": 6000000}]})",
+         "6000000|the scene would have more than 20000000 triangles (this icosphere has 20971520)"},
+        {R"("procedural": "soup", "triangles": 5, "seed": -1}]})",
+         "-1|\"seed\" must be between 0 and 9007199254740992"},
+        {R"("procedural": "soup", "triangles": 5, "seed": "x"}]})",
+         "\"x\"|\"seed\" must be a number"},
+        {R"("file": "m.obj", "triangles": 5}]})",
+         "\"triangles\"|\"triangles\" is only for procedural meshes"},
         {R"("file": "m.obj", "seed": 5}]})", "\"seed\"|\"seed\" is only for procedural meshes"},
-        {R"("procedural": "soup", "triangles": 5, "count": 3}]})", "\"count\"|unknown key \"count\" in a mesh"},
+        {R"("procedural": "soup", "triangles": 5, "count": 3}]})",
+         "\"count\"|unknown key \"count\" in a mesh"},
     };
     std::vector<std::pair<std::string, std::string>> all(std::begin(cases), std::end(cases));
     if (sizeof(rt::Real) == sizeof(float))  // 3e38 + 3e38 overflows float only
-        all.emplace_back(R"("procedural": "soup", "triangles": 5, "scale": 3e38, "translate": [3e38, 0, 0]}]})",
-                         "3e38,|the mesh is too large to represent");
+        all.emplace_back(
+            R"("procedural": "soup", "triangles": 5, "scale": 3e38, "translate": [3e38, 0, 0]}]})",
+            "3e38,|the mesh is too large to represent");
     for (const auto& [rest, expected] : all) {
         const std::string text = mesh + rest;
         const std::size_t bar = expected.find('|');
         const std::string want = at(text, expected.substr(0, bar)) + expected.substr(bar + 1);
         std::string message = error_of(text);
-        EXPECT_EQ(message.rfind(want, 0), 0u) << "scene: " << text << "\n  got: " << message << "\n want: " << want;
+        EXPECT_EQ(message.rfind(want, 0), 0u)
+            << "scene: " << text << "\n  got: " << message << "\n want: " << want;
     }
 }
 
 // ---- malformed scenes ----------------------------------------------------------------------
 
 struct BadScene {
-    const char* file;    // in framework/tests/bad_scenes, without ".json"
-    int line, column;    // where the error must point
-    const char* message; // a part of the message
+    const char* file;     // in framework/tests/bad_scenes, without ".json"
+    int line, column;     // where the error must point
+    const char* message;  // a part of the message
 };
 
 // Positions were worked out from the files by hand (and by a script placing a marker at the
@@ -303,22 +318,28 @@ const BadScene kBadScenesTable[] = {
     {"02-truncated-file", 3, 1, R"(the file ends too early)"},
     {"03-empty-file", 1, 1, R"(the file is empty)"},
     {"04-top-level-array", 1, 1, R"(the top level must be a JSON object, got an array)"},
-    {"05-unknown-top-level-key", 3, 3, R"(unknown key "surface" in the scene; did you mean "surfaces"?)"},
+    {"05-unknown-top-level-key", 3, 3,
+     R"(unknown key "surface" in the scene; did you mean "surfaces"?)"},
     {"06-misspelled-sphere-key", 3, 45, R"(did you mean "radius"?)"},
     {"07-number-written-as-string", 3, 55, R"("radius" must be a number, got the string "1")"},
     {"08-wrong-array-length", 3, 34, R"("center" must be an array of 3 numbers, got 2 numbers)"},
-    {"09-unknown-surface-type", 3, 14, R"(unknown "type" "cube"; use "sphere", "plane", "triangle", "box", "mesh" or "checkerboard")"},
-    {"10-unknown-projection", 3, 19, R"(unknown "projection" "ortho"; did you mean "orthographic"? (allowed: "perspective" or "orthographic"))"},
+    {"09-unknown-surface-type", 3, 14,
+     R"(unknown "type" "cube"; use "sphere", "plane", "triangle", "box", "mesh" or "checkerboard")"},
+    {"10-unknown-projection", 3, 19,
+     R"(unknown "projection" "ortho"; did you mean "orthographic"? (allowed: "perspective" or "orthographic"))"},
     {"11-unknown-render-mode", 2, 22, R"(unknown "mode" "shade")"},
     {"12-unknown-material-name", 4, 70, R"(unknown material "blue")"},
-    {"13-material-index-out-of-range", 4, 76, R"(material index 2 out of range (the scene has 2 materials))"},
+    {"13-material-index-out-of-range", 4, 76,
+     R"(material index 2 out of range (the scene has 2 materials))"},
     {"14-duplicate-material-name", 4, 14, R"(duplicate material name "red")"},
-    {"15-non-finite-number", 3, 55, R"("radius" must be a finite number, got 1e999; use an ordinary number)"},
+    {"15-non-finite-number", 3, 55,
+     R"("radius" must be a finite number, got 1e999; use an ordinary number)"},
     {"16-negative-colour", 3, 38, R"("diffuse"[1] must be >= 0, got -0.1)"},
     {"17-image-side-too-large", 2, 22, R"("width" must be between 1 and 16384, got 20000)"},
     {"18-too-many-pixels", 2, 12, R"(more than the 67108864)"},
     {"19-max-depth-out-of-range", 2, 45, R"("max_depth" must be between 0 and 64, got 1000)"},
-    {"20-negative-radius", 3, 55, R"("radius" must be > 0, got -1; give the sphere a positive radius)"},
+    {"20-negative-radius", 3, 55,
+     R"("radius" must be > 0, got -1; give the sphere a positive radius)"},
     {"21-fov-out-of-range", 2, 50, R"("fov" must be between 0 and 180 degrees)"},
     {"22-box-min-above-max", 3, 50, R"("max" must not be below "min", but y is -1 < 0)"},
     {"23-zero-plane-normal", 3, 53, R"("normal" must have a non-zero, finite length)"},
@@ -329,8 +350,10 @@ const BadScene kBadScenesTable[] = {
     {"28-duplicate-key", 3, 58, R"(duplicate key "radius")"},
     {"29-surfaces-not-an-array", 2, 15, R"("surfaces" must be an array, got an object)"},
     {"30-missing-mesh-file", 3, 30, R"(mesh "no-such-mesh.obj": file not found)"},
-    {"31-mesh-face-index-out-of-range", 3, 30, R"(mesh "31-face-index.obj" line 7: face index 9 out of range (the file has 4 vertices); fix the face or the vertex list)"},
-    {"32-mesh-non-finite-vertex", 3, 30, R"(mesh "32-not-finite.obj" line 3: vertex coordinate "1e999" is not finite)"},
+    {"31-mesh-face-index-out-of-range", 3, 30,
+     R"(mesh "31-face-index.obj" line 7: face index 9 out of range (the file has 4 vertices); fix the face or the vertex list)"},
+    {"32-mesh-non-finite-vertex", 3, 30,
+     R"(mesh "32-not-finite.obj" line 3: vertex coordinate "1e999" is not finite)"},
     {"33-mesh-without-faces", 3, 30, R"(mesh "33-no-faces.obj": contains no triangles)"},
     {"34-zero-light-direction", 3, 42, R"("direction" must have a non-zero, finite length)"},
     {"35-invalid-utf8", 2, 29, R"(ill-formed UTF-8 byte; save the file as UTF-8)"},
@@ -340,8 +363,10 @@ const BadScene kBadScenesTable[] = {
     {"39-nesting-too-deep", 1, 113, R"(nested more than 100 deep)"},
     {"40-negative-shininess", 2, 48, R"("shininess" must be >= 0, got -5)"},
     {"41-shadows-not-a-boolean", 2, 43, R"("shadows" must be true or false, got the string "yes")"},
-    {"42-unknown-procedural-mesh", 3, 36, R"(unknown "procedural" "donut"; use "icosphere", "torus", "terrain" or "soup")"},
-    {"43-procedural-mesh-too-large", 3, 60, R"("triangles" must be between 1 and 20000000, got 1e9)"},
+    {"42-unknown-procedural-mesh", 3, 36,
+     R"(unknown "procedural" "donut"; use "icosphere", "torus", "terrain" or "soup")"},
+    {"43-procedural-mesh-too-large", 3, 60,
+     R"("triangles" must be between 1 and 20000000, got 1e9)"},
     {"60-unknown-accelerator", 2, 48, R"(unknown "accelerator" "kdtree"; use "none" or "bvh")"},
     {"61-heat-map-without-bvh", 2, 22, R"(add "accelerator": "bvh" to "render")"},
 };
@@ -360,8 +385,8 @@ TEST_P(BadSceneTest, ReportsOneLinePointingAtTheMistake) {
     }
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_EQ(message.find('\r'), std::string::npos) << message;
-    const std::string prefix = path + ":" + std::to_string(bad.line) + ":" +
-                               std::to_string(bad.column) + ": error: ";
+    const std::string prefix =
+        path + ":" + std::to_string(bad.line) + ":" + std::to_string(bad.column) + ": error: ";
     EXPECT_EQ(message.rfind(path, 0), 0u) << message;
     EXPECT_EQ(message.rfind(prefix, 0), 0u) << "expected " << prefix << "\n     got " << message;
     EXPECT_NE(message.find(bad.message), std::string::npos)
@@ -438,25 +463,35 @@ TEST(SceneLoader, MeshErrorsNameTheObjLine) {
 TEST(SceneLoader, OtherMistakesAreReported) {
     // Smaller cases that need no file of their own: (text, expected start of the message).
     const std::pair<const char*, const char*> cases[] = {
-        {"{\"image\": {\"width\": 2.5}}", "test.json:1:21: error: \"width\" must be a whole number"},
+        {"{\"image\": {\"width\": 2.5}}",
+         "test.json:1:21: error: \"width\" must be a whole number"},
         {"{\"image\": {\"height\": 0}}", "test.json:1:22: error: \"height\" must be between 1"},
-        {"{\"render\": {\"max_depth\": -1}}", "test.json:1:26: error: \"max_depth\" must be between 0"},
-        {"{\"materials\": [{\"name\": \"a\", \"ior\": 0}]}", "test.json:1:37: error: \"ior\" must be > 0"},
-        {"{\"materials\": [{\"name\": \"\"}]}", "test.json:1:25: error: a material name must not be empty"},
+        {"{\"render\": {\"max_depth\": -1}}",
+         "test.json:1:26: error: \"max_depth\" must be between 0"},
+        {"{\"materials\": [{\"name\": \"a\", \"ior\": 0}]}",
+         "test.json:1:37: error: \"ior\" must be > 0"},
+        {"{\"materials\": [{\"name\": \"\"}]}",
+         "test.json:1:25: error: a material name must not be empty"},
         {"{\"materials\": [7]}", "test.json:1:16: error: \"materials\"[0] must be an object"},
         {"{\"camera\": {\"eye\": [0, 0, 1e39]}}", "test.json:1:27: error: \"eye\"[2] is too large"},
-        {"{\"background\": [1, \"0\", 1]}", "test.json:1:20: error: \"background\"[1] must be a number"},
-        {"{\"lights\": [{\"type\": \"point\"}]}", "test.json:1:13: error: a point light needs \"position\""},
-        {"{\"lights\": [{\"type\": \"spot\"}]}", "test.json:1:22: error: unknown \"type\" \"spot\""},
-        {"{\"lights\": [{\"type\": \"point\", \"position\": [0, 0, 0], \"attenuation\": [0, 0, 0]}]}",
+        {"{\"background\": [1, \"0\", 1]}",
+         "test.json:1:20: error: \"background\"[1] must be a number"},
+        {"{\"lights\": [{\"type\": \"point\"}]}",
+         "test.json:1:13: error: a point light needs \"position\""},
+        {"{\"lights\": [{\"type\": \"spot\"}]}",
+         "test.json:1:22: error: unknown \"type\" \"spot\""},
+        {"{\"lights\": [{\"type\": \"point\", \"position\": [0, 0, 0], \"attenuation\": [0, 0, "
+         "0]}]}",
          "test.json:1:69: error: \"attenuation\" must not be all zero"},
         {"{\"surfaces\": [{\"type\": \"mesh\", \"file\": \"m.obj\", \"scale\": 0}]}",
          "test.json:1:58: error: \"scale\" must not be 0"},
-        {"{\"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": -1}]}",
+        {"{\"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, "
+         "\"material\": -1}]}",
          "test.json:1:80: error: material index -1 out of range"},
         {"{\"surfaces\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1, 0, 0]]}]}",
          "test.json:1:48: error: \"vertices\" must be an array of 3 points, got 2"},
-        {"{\"camera\": {\"eye\": [0, 0, 5]}, \"camera\": {}}", "test.json:1:32: error: duplicate key \"camera\""},
+        {"{\"camera\": {\"eye\": [0, 0, 5]}, \"camera\": {}}",
+         "test.json:1:32: error: duplicate key \"camera\""},
         {"{\"a\\u0062c\": 1}", "test.json:1:2: error: unknown key \"abc\""},
         {"  \n\t", "test.json:1:1: error: the file is empty"},
         {"{\"x\": tru}", "test.json:1:10: error: invalid JSON"},  // nlohmann stops after the word
@@ -465,8 +500,8 @@ TEST(SceneLoader, OtherMistakesAreReported) {
     };
     for (const auto& [text, expected] : cases) {
         std::string message = error_of(text);
-        EXPECT_EQ(message.rfind(expected, 0), 0u) << "scene: " << text << "\n  got: " << message
-                                                  << "\n want: " << expected;
+        EXPECT_EQ(message.rfind(expected, 0), 0u)
+            << "scene: " << text << "\n  got: " << message << "\n want: " << expected;
     }
 }
 
@@ -527,7 +562,8 @@ TEST(SceneLoaderRobustness, RandomMutationsOfAValidScene) {
 
 TEST(SceneLoaderRobustness, PathologicalInputs) {
     expect_no_crash(std::string(1'000'000, '['));
-    expect_no_crash("{\"surfaces\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}");
+    expect_no_crash("{\"surfaces\": " + std::string(100'000, '[') + std::string(100'000, ']') +
+                    "}");
     expect_no_crash(std::string("{\"background\": [1, 2, 3]}\0garbage", 33));
     expect_no_crash(std::string(1000, '\0'));
     expect_no_crash("\xEF\xBB\xBF{}");
@@ -535,7 +571,8 @@ TEST(SceneLoaderRobustness, PathologicalInputs) {
     expect_no_crash("{\"image\": {\"width\": 99999999999999999999999}}");
     expect_no_crash("{\"render\": {\"max_depth\": 18446744073709551615}}");
     expect_no_crash("{\"camera\": {\"eye\": [3e38, 0, 0], \"look_at\": [-3e38, 0, 0]}}");
-    expect_no_crash("{\"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1e-999}]}");
+    expect_no_crash(
+        "{\"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1e-999}]}");
     expect_no_crash("{\"surfaces\": [{\"type\": \"mesh\", \"file\": \"/\"}]}");
     expect_no_crash("{\"surfaces\": [{\"type\": \"mesh\", \"file\": \"/dev/null\"}]}");
     std::string key_soup = "{";
@@ -551,8 +588,9 @@ TEST(SceneLoaderRobustness, PathologicalInputs) {
 
 TEST(SceneLoaderRobustness, EveryPrefixOfAnObj) {
     TempDir dir("obj-prefix");
-    const std::string obj = "# quad\nmtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
-                            "usemtl a\nf 1//1 2//1 3//1 4//1\nf -1 -2 -3\nl 1 2\n";
+    const std::string obj =
+        "# quad\nmtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
+        "usemtl a\nf 1//1 2//1 3//1 4//1\nf -1 -2 -3\nl 1 2\n";
     for (std::size_t length = 0; length <= obj.size(); ++length) {
         dir.write("m.obj", obj.substr(0, length));
         expect_no_crash(R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})", dir.path());

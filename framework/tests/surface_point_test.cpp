@@ -31,7 +31,8 @@ TEST(SurfacePoint, TriangleTexcoordInterpolatesVertexUvsNotBarycentrics) {
     EXPECT_NEAR(at.texcoord.x, 0.5f + 0.25f * 0.5f, 1e-6f);
     EXPECT_NEAR(at.texcoord.y, 0.5f + 0.5f * 0.5f, 1e-6f);
     scene.uvs.clear();  // a mesh without uvs: (0, 0) until stage 07 says otherwise
-    EXPECT_EQ(surface_point(scene, Ray{Vec3(0.25f, 0.5f, 1), Vec3(0, 0, -1)}, hit).texcoord, Vec2(0));
+    EXPECT_EQ(surface_point(scene, Ray{Vec3(0.25f, 0.5f, 1), Vec3(0, 0, -1)}, hit).texcoord,
+              Vec2(0));
 }
 
 TEST(Background, IsTheScenesColourInEveryDirection) {

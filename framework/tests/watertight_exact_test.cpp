@@ -63,8 +63,8 @@ TEST(Watertight, DecisionIsExactForTheShearedVertices) {
                     Interval{-kInfinity, kInfinity}, hit);
                 rounded_zero += any_rounded_zero;
                 ++rays;
-                EXPECT_EQ(got, exact_inside) << "triangle (" << t[0] << ", " << t[1] << ", "
-                                             << t[2] << "), rounded zero " << any_rounded_zero;
+                EXPECT_EQ(got, exact_inside) << "triangle (" << t[0] << ", " << t[1] << ", " << t[2]
+                                             << "), rounded zero " << any_rounded_zero;
                 if (HasFailure()) return;
             }
         }

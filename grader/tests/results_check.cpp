@@ -20,16 +20,20 @@ using json = nlohmann::json;
 namespace {
 
 std::vector<std::string> problems;
-void fail(const std::string& what) { problems.push_back(what); }
+void fail(const std::string& what) {
+    problems.push_back(what);
+}
 
-const std::set<std::string> kVisibility = {"hidden", "after_due_date", "after_published", "visible"};
+const std::set<std::string> kVisibility = {"hidden", "after_due_date", "after_published",
+                                           "visible"};
 const std::set<std::string> kFormats = {"text", "html", "simple_format", "md", "ansi"};
-const std::set<std::string> kTopLevel = {"score", "execution_time", "output", "output_format",
-                                         "test_output_format", "test_name_format", "visibility",
-                                         "stdout_visibility", "extra_data", "tests", "leaderboard"};
-const std::set<std::string> kTestKeys = {"score", "max_score", "status", "name", "name_format",
-                                         "number", "output", "output_format", "tags",
-                                         "visibility", "extra_data"};
+const std::set<std::string> kTopLevel = {"score",         "execution_time",     "output",
+                                         "output_format", "test_output_format", "test_name_format",
+                                         "visibility",    "stdout_visibility",  "extra_data",
+                                         "tests",         "leaderboard"};
+const std::set<std::string> kTestKeys = {"score",       "max_score",  "status",    "name",
+                                         "name_format", "number",     "output",    "output_format",
+                                         "tags",        "visibility", "extra_data"};
 
 void check_schema(const json& r) {
     if (!r.is_object()) return fail("top level is not an object");
@@ -84,7 +88,8 @@ void check_schema(const json& r) {
         if (t.contains("output_format") && !kFormats.count(t.value("output_format", "")))
             bad("output_format is not documented");
         if (t.contains("tags")) {
-            if (!t["tags"].is_array()) bad("tags is not an array");
+            if (!t["tags"].is_array())
+                bad("tags is not an array");
             else
                 for (const auto& tag : t["tags"])
                     if (!tag.is_string()) bad("a tag is not a string");
@@ -121,7 +126,8 @@ int main(int argc, char** argv) {
     double max_total = 0;
     for (const auto& t : r.value("tests", json::array())) {
         everything += "\n" + t.value("name", "") + "\n" + t.value("output", "");
-        if (t.contains("max_score") && t["max_score"].is_number()) max_total += t["max_score"].get<double>();
+        if (t.contains("max_score") && t["max_score"].is_number())
+            max_total += t["max_score"].get<double>();
     }
     const double score = r.value("score", -1.0);
     for (int i = 2; i < argc; ++i) {
@@ -135,17 +141,20 @@ int main(int argc, char** argv) {
         };
         if (flag == "--score-min") {
             const double v = std::stod(next());
-            if (score < v - 1e-9) fail("score " + std::to_string(score) + " < " + std::to_string(v));
+            if (score < v - 1e-9)
+                fail("score " + std::to_string(score) + " < " + std::to_string(v));
         } else if (flag == "--score-max") {
             const double v = std::stod(next());
-            if (score > v + 1e-9) fail("score " + std::to_string(score) + " > " + std::to_string(v));
+            if (score > v + 1e-9)
+                fail("score " + std::to_string(score) + " > " + std::to_string(v));
         } else if (flag == "--max-score") {
             const double v = std::stod(next());
             if (std::abs(max_total - v) > 1e-9)
                 fail("max score " + std::to_string(max_total) + " != " + std::to_string(v));
         } else if (flag == "--full-marks") {
             if (max_total <= 0 || std::abs(score - max_total) > 1e-9)
-                fail("score " + std::to_string(score) + " is not full marks " + std::to_string(max_total));
+                fail("score " + std::to_string(score) + " is not full marks " +
+                     std::to_string(max_total));
         } else if (flag == "--full-marks-tag") {
             // Every test tagged TAG has full points (and there is at least one).
             const std::string tag = next();
@@ -169,10 +178,12 @@ int main(int argc, char** argv) {
             if (!seen) fail("no test has the tag " + tag);
         } else if (flag == "--contains") {
             const std::string text = next();
-            if (everything.find(text) == std::string::npos) fail("no output contains \"" + text + "\"");
+            if (everything.find(text) == std::string::npos)
+                fail("no output contains \"" + text + "\"");
         } else if (flag == "--not-contains") {
             const std::string text = next();
-            if (everything.find(text) != std::string::npos) fail("some output contains \"" + text + "\"");
+            if (everything.find(text) != std::string::npos)
+                fail("some output contains \"" + text + "\"");
         } else if (flag == "--test-failed" || flag == "--test-passed") {
             // Every test whose name contains TEXT has that status (and at least one exists).
             const std::string text = next(), want = flag == "--test-failed" ? "failed" : "passed";
@@ -180,7 +191,8 @@ int main(int argc, char** argv) {
             for (const auto& t : r.value("tests", json::array()))
                 if (t.value("name", "").find(text) != std::string::npos) {
                     ++seen;
-                    if (t.value("status", "") != want) fail(t.value("name", "") + " is not " + want);
+                    if (t.value("status", "") != want)
+                        fail(t.value("name", "") + " is not " + want);
                 }
             if (!seen) fail("no test named like \"" + text + "\"");
         } else {
@@ -188,6 +200,7 @@ int main(int argc, char** argv) {
         }
     }
     for (const auto& p : problems) std::cerr << argv[1] << ": " << p << "\n";
-    if (problems.empty()) std::cout << argv[1] << ": valid, score " << score << " / " << max_total << "\n";
+    if (problems.empty())
+        std::cout << argv[1] << ": valid, score " << score << " / " << max_total << "\n";
     return problems.empty() ? 0 : 1;
 }

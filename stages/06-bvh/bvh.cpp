@@ -12,8 +12,8 @@
 namespace rt {
 
 // Try every boundary between bins on every axis; keep the cheapest by the SAH cost model.
-SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin,
-                        std::size_t end, const BvhBuildOptions& options) {
+SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
+                        const BvhBuildOptions& options) {
     // BEGIN SOLUTION
     Aabb bounds, centroids;
     for (std::size_t i = begin; i < end; ++i) {
@@ -41,7 +41,8 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     for (std::size_t i = begin; i < end; ++i)
         for (int axis = 0; axis < 3; ++axis) {
             if (!spread[axis]) continue;
-            Bin& b = bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis], scale[axis], bins)];
+            Bin& b =
+                bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis], scale[axis], bins)];
             b.min = glm::min(b.min, prims[i].bounds.min);
             b.max = glm::max(b.max, prims[i].bounds.max);
             ++b.count;
@@ -67,10 +68,9 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
             box.grow(Aabb{bin[axis][k - 1].min, bin[axis][k - 1].max});
             count += bin[axis][k - 1].count;
             if (count == 0 || right_count[k] == 0) continue;
-            const float cost =
-                options.traversal_cost +
-                (box.surface_area() * float(count) + right_area[k] * float(right_count[k])) *
-                    inv_area;
+            const float cost = options.traversal_cost + (box.surface_area() * float(count) +
+                                                         right_area[k] * float(right_count[k])) *
+                                                            inv_area;
             if (cost < best.cost) best.axis = axis, best.bin = k, best.cost = cost;
         }
     }
@@ -120,8 +120,9 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
             const auto left_side = [&](const BvhPrimitive& p) {
                 return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
             };
-            mid = std::uint32_t(std::partition(prims.begin() + task.begin, prims.begin() + task.end, left_side) -
-                                prims.begin());
+            mid = std::uint32_t(
+                std::partition(prims.begin() + task.begin, prims.begin() + task.end, left_side) -
+                prims.begin());
         }
         if (mid == task.begin || mid == task.end) {  // a leaf (or, defensively, an empty side)
             for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
@@ -181,7 +182,9 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
     bvh.nodes.resize(1 + sub[0].size() + sub[1].size());
     std::uint32_t offset = 3;  // where the subtree's nodes after its root go
     for (std::uint32_t side = 0; side < 2; ++side) {
-        const auto place = [&](std::uint32_t local) { return local == 0 ? 1 + side : offset + local - 1; };
+        const auto place = [&](std::uint32_t local) {
+            return local == 0 ? 1 + side : offset + local - 1;
+        };
         for (std::uint32_t local = 0; local < sub[side].size(); ++local) {
             BvhNode node = sub[side][local];
             if (!node.is_leaf()) node.first = place(node.first);

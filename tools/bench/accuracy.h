@@ -13,12 +13,12 @@ namespace rt::bench {
 
 struct AccuracyConfig {
     std::uint64_t seed = 1;
-    int cases = 10000;         // rays per scenario
-    bool timing = true;        // measure ns per test (off: classification only, for tests)
-    std::string family;        // "triangle" or "sphere": only those scenarios ("": all)
+    int cases = 10000;   // rays per scenario
+    bool timing = true;  // measure ns per test (off: classification only, for tests)
+    std::string family;  // "triangle" or "sphere": only those scenarios ("": all)
     bool self_intersection = true;
     bool rendering = true;
-    int render_divisor = 2;    // stage scenes are rendered at 1/divisor of their size
+    int render_divisor = 2;  // stage scenes are rendered at 1/divisor of their size
     std::function<void(const std::string&)> progress;  // one line per finished part
 };
 
@@ -51,9 +51,9 @@ struct SelfRow {
 struct RenderPoint {
     std::string series;  // e.g. "watertight float" or "supersampling"
     int spp = 1;
-    double ms = 0;            // summed over the scenes, one thread
-    double rmse = 0;          // 8-bit units against the 256-sample reference, mean over scenes
-    double centre_diff = 0;   // % pixels off by > 2/255 from the double pixel-centre image
+    double ms = 0;           // summed over the scenes, one thread
+    double rmse = 0;         // 8-bit units against the 256-sample reference, mean over scenes
+    double centre_diff = 0;  // % pixels off by > 2/255 from the double pixel-centre image
 };
 
 struct AccuracyResults {
@@ -86,7 +86,7 @@ std::string csv_report(const AccuracyResults& results);
 struct ReportCounts {
     std::uint64_t seed = 0;
     int cases = 0;
-    std::vector<Row> rows;       // counts only (times are not compared)
+    std::vector<Row> rows;  // counts only (times are not compared)
     std::vector<SelfRow> self;
 };
 ReportCounts parse_report(const std::string& markdown);

@@ -73,8 +73,8 @@ struct SphereTruthLite {
 };
 
 struct TriTruthSet {
-    std::vector<PairTruth> single;              // single-triangle scenarios
-    std::vector<std::vector<PairTruth>> mesh;   // per ray, per triangle
+    std::vector<PairTruth> single;             // single-triangle scenarios
+    std::vector<std::vector<PairTruth>> mesh;  // per ray, per triangle
     double ns = 0;
     long tests = 0;
 };

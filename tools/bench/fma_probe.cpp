@@ -5,7 +5,11 @@
 
 namespace rt::bench {
 
-float multiply_add(float a, float b, float c) { return a * b + c; }
-double multiply_add(double a, double b, double c) { return a * b + c; }
+float multiply_add(float a, float b, float c) {
+    return a * b + c;
+}
+double multiply_add(double a, double b, double c) {
+    return a * b + c;
+}
 
 }  // namespace rt::bench

@@ -9,8 +9,8 @@
 
 #include "bench/cases.h"
 #include "camera/camera.h"
-#include "scene/scene_loader.h"
 #include "core/source_dir.h"
+#include "scene/scene_loader.h"
 
 namespace rt::bench::detail {
 namespace {
@@ -33,10 +33,9 @@ void finish_ulps(Counts& c, std::vector<double>& ulps) {
     c.max_ulps = ulps.empty() ? 0 : ulps.back();
 }
 
-
 template <typename T>
-using TriFn = Result<T> (*)(const V3<T>&, const V3<T>&, const V3<T>&, const V3<T>&, const V3<T>&,
-                            T, T);
+using TriFn = Result<T> (*)(const V3<T>&, const V3<T>&, const V3<T>&, const V3<T>&, const V3<T>&, T,
+                            T);
 template <typename T>
 using SphFn = Result<T> (*)(const V3<T>&, const V3<T>&, const V3<T>&, T, T, T);
 
@@ -48,12 +47,15 @@ struct Method {
 };
 template <typename T>
 std::array<Method<TriFn<T>>, 4> tri_methods() {
-    return {{{"Cramer", &cramer<T>}, {"Moeller-Trumbore", &moller_trumbore<T>},
-             {"watertight", &watertight<T>}, {"watertight FMA", &watertight<T, true>}}};
+    return {{{"Cramer", &cramer<T>},
+             {"Moeller-Trumbore", &moller_trumbore<T>},
+             {"watertight", &watertight<T>},
+             {"watertight FMA", &watertight<T, true>}}};
 }
 template <typename T>
 std::array<Method<SphFn<T>>, 3> sphere_methods() {
-    return {{{"textbook", &sphere_textbook<T>}, {"q-form", &sphere_qform<T>},
+    return {{{"textbook", &sphere_textbook<T>},
+             {"q-form", &sphere_qform<T>},
              {"RTG ch. 7", &sphere_rtg<T>}}};
 }
 
@@ -78,14 +80,16 @@ double time_ns_per_test(long tests_per_pass, F&& pass) {
 volatile double g_sink = 0;  // keeps timed loops from being optimised away
 
 template <typename T>
-void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing, std::vector<Row>& out) {
+void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing,
+                     std::vector<Row>& out) {
     const T inf = std::numeric_limits<T>::infinity();
     // Inputs converted once, outside the timed loops.
     struct TC {
         V3<T> o, d, a, b, c;
     };
     std::vector<TC> singles;
-    for (const auto& c : s.tris) singles.push_back({V3<T>(c.o), V3<T>(c.d), V3<T>(c.a), V3<T>(c.b), V3<T>(c.c)});
+    for (const auto& c : s.tris)
+        singles.push_back({V3<T>(c.o), V3<T>(c.d), V3<T>(c.a), V3<T>(c.b), V3<T>(c.c)});
     std::vector<std::vector<V3<T>>> mesh_v;
     for (const auto& m : s.meshes) {
         std::vector<V3<T>> v;
@@ -93,8 +97,13 @@ void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing, s
         mesh_v.push_back(std::move(v));
     }
     for (const auto& method : tri_methods<T>()) {
-        Row row{"triangle", s.info.key, s.info.mesh, method.name,
-                std::is_same_v<T, float> ? "float" : "double", {}, 0};
+        Row row{"triangle",
+                s.info.key,
+                s.info.mesh,
+                method.name,
+                std::is_same_v<T, float> ? "float" : "double",
+                {},
+                0};
         Counts& c = row.counts;
         std::vector<double> ulps;
         for (std::size_t i = 0; i < singles.size(); ++i) {
@@ -112,7 +121,8 @@ void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing, s
             const V3<T> o(ray.o), d(ray.d);
             std::vector<char> reported(m.tri.size());
             for (std::size_t f = 0; f < m.tri.size(); ++f) {
-                const Result<T> r = method.fn(o, d, v[m.tri[f][0]], v[m.tri[f][1]], v[m.tri[f][2]], T(0), inf);
+                const Result<T> r =
+                    method.fn(o, d, v[m.tri[f][0]], v[m.tri[f][1]], v[m.tri[f][2]], T(0), inf);
                 reported[f] = r.hit;
                 if (r.hit && truth.mesh[i][f].hit) ulps.push_back(truth.mesh[i][f].t.ulps(r.t));
             }
@@ -133,7 +143,8 @@ void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing, s
                     const auto& m = s.meshes[ray.mesh];
                     const auto& v = mesh_v[ray.mesh];
                     const V3<T> o(ray.o), d(ray.d);
-                    for (const auto& f : m.tri) acc += method.fn(o, d, v[f[0]], v[f[1]], v[f[2]], T(0), inf).t;
+                    for (const auto& f : m.tri)
+                        acc += method.fn(o, d, v[f[0]], v[f[1]], v[f[2]], T(0), inf).t;
                 }
                 g_sink = g_sink + double(acc);
             });
@@ -144,17 +155,19 @@ void triangle_rows_t(const Scenario& s, const TriTruthSet& truth, bool timing, s
 
 template <typename T>
 void sphere_rows_t(const Scenario& s, const std::vector<SphereTruthLite>& truth, bool timing,
-                 std::vector<Row>& out) {
+                   std::vector<Row>& out) {
     const T inf = std::numeric_limits<T>::infinity();
     struct SC {
         V3<T> o, d, c;
         T r;
     };
     std::vector<SC> cases;
-    for (const auto& c : s.spheres) cases.push_back({V3<T>(c.o), V3<T>(c.d), V3<T>(c.center), T(c.radius)});
+    for (const auto& c : s.spheres)
+        cases.push_back({V3<T>(c.o), V3<T>(c.d), V3<T>(c.center), T(c.radius)});
     for (const auto& method : sphere_methods<T>()) {
-        Row row{"sphere", s.info.key, false, method.name,
-                std::is_same_v<T, float> ? "float" : "double", {}, 0};
+        Row row{
+            "sphere", s.info.key, false, method.name, std::is_same_v<T, float> ? "float" : "double",
+            {},       0};
         Counts& c = row.counts;
         std::vector<double> ulps;
         for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -180,10 +193,19 @@ void sphere_rows_t(const Scenario& s, const std::vector<SphereTruthLite>& truth,
 
 template <typename T>
 struct SceneT {
-    struct S { V3<T> c; T r; };
-    struct P { V3<T> p, n; };
-    struct Bx { V3<T> lo, hi; };
-    struct Tr { V3<T> a, b, c; };
+    struct S {
+        V3<T> c;
+        T r;
+    };
+    struct P {
+        V3<T> p, n;
+    };
+    struct Bx {
+        V3<T> lo, hi;
+    };
+    struct Tr {
+        V3<T> a, b, c;
+    };
     std::vector<S> spheres;
     std::vector<P> planes;
     std::vector<Bx> boxes;
@@ -283,7 +305,8 @@ Pixels render_t(const SceneT<T>& s, int n, TriFn<T> tri, int threads) {
                 for (int j = 0; j < n; ++j)
                     for (int i = 0; i < n; ++i) {
                         V3<T> o, d;
-                        camera_ray_t<T>(s, T(x) + (T(i) + T(0.5)) / T(n), T(y) + (T(j) + T(0.5)) / T(n), o, d);
+                        camera_ray_t<T>(s, T(x) + (T(i) + T(0.5)) / T(n),
+                                        T(y) + (T(j) + T(0.5)) / T(n), o, d);
                         sum += shade<T>(s, o, d, tri);
                     }
                 px[std::size_t(y) * s.width + x] = sum / float(n * n);
@@ -323,7 +346,6 @@ double time_ms(F&& f) {
     return std::chrono::duration<double>(Clock::now() - start).count() * 1e3;
 }
 
-
 }  // namespace
 
 // Crossings are told apart by the exact sign of n.d: for a convex mesh and an outside origin, the
@@ -348,7 +370,8 @@ MeshVerdict judge_mesh(const std::vector<PairTruth>& truth, const std::vector<ch
     return v;
 }
 
-void triangle_rows(const Scenario& s, const TriTruthSet& truth, bool timing, std::vector<Row>& out) {
+void triangle_rows(const Scenario& s, const TriTruthSet& truth, bool timing,
+                   std::vector<Row>& out) {
     triangle_rows_t<float>(s, truth, timing, out);
     triangle_rows_t<double>(s, truth, timing, out);
 }
@@ -360,9 +383,9 @@ void sphere_rows(const Scenario& s, const std::vector<SphereTruthLite>& truth, b
 }
 
 void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
-    const std::vector<std::string> files = {
-        "spheres_normals", "triangles_normals", "mesh_normals", "plane_depth",
-        "boxes_primitive_ids", "orthographic_mixed"};
+    const std::vector<std::string> files = {"spheres_normals",     "triangles_normals",
+                                            "mesh_normals",        "plane_depth",
+                                            "boxes_primitive_ids", "orthographic_mixed"};
     struct Series {
         std::string name;
         int n;
@@ -370,9 +393,9 @@ void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
         bool watertight;
     };
     const std::vector<Series> series = {
-        {"Cramer float", 1, false, false},  {"Cramer double", 1, true, false},
+        {"Cramer float", 1, false, false},    {"Cramer double", 1, true, false},
         {"watertight float", 1, false, true}, {"watertight double", 1, true, true},
-        {"supersampling", 2, false, true},  {"supersampling", 4, false, true},
+        {"supersampling", 2, false, true},    {"supersampling", 4, false, true},
         {"supersampling", 8, false, true}};
     std::vector<RenderPoint> points(series.size());
     for (std::size_t k = 0; k < series.size(); ++k)
@@ -392,10 +415,16 @@ void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
             Pixels img;
             double ms = std::numeric_limits<double>::infinity();
             for (int round = 0; round < (s.n == 1 ? 3 : 1); ++round)  // cheap ones: best of 3
-                ms = std::min(ms, time_ms([&] {
-                    img = s.is_double ? render_t<double>(sd, s.n, s.watertight ? &watertight<double> : &cramer<double>, 1)
-                                      : render_t<float>(sf, s.n, s.watertight ? &watertight<float> : &cramer<float>, 1);
-                }));
+                ms = std::min(
+                    ms, time_ms([&] {
+                        img = s.is_double
+                                  ? render_t<double>(
+                                        sd, s.n,
+                                        s.watertight ? &watertight<double> : &cramer<double>, 1)
+                                  : render_t<float>(
+                                        sf, s.n, s.watertight ? &watertight<float> : &cramer<float>,
+                                        1);
+                    }));
             points[k].ms += ms;
             points[k].rmse += rmse8(img, reference) / double(files.size());
             points[k].centre_diff += percent_off(img, centre) / double(files.size());

@@ -35,8 +35,8 @@ bool finite3(const V3<T>& v) {
 
 // Cramer's rule as taught: [a-b  a-c  d] (beta, gamma, t) = a - o.
 template <typename T>
-Result<T> cramer(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>& b,
-                 const V3<T>& c, T tmin, T tmax) {
+Result<T> cramer(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>& b, const V3<T>& c,
+                 T tmin, T tmax) {
     Result<T> r;
     const V3<T> col1 = a - b, col2 = a - c, rhs = a - o;
     const T det = glm::dot(col1, glm::cross(col2, d));
@@ -91,8 +91,8 @@ T difference_of_products_exact_sign(T a, T b, T c, T d) {
 // x*y - z*w as fma(x, y, -(z*w)), what -ffp-contract=fast may do to the plain code: the lab's
 // "watertight FMA" row shows what that costs.
 template <typename T, bool Fused = false>
-Result<T> watertight(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>& b,
-                     const V3<T>& c, T tmin, T tmax) {
+Result<T> watertight(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>& b, const V3<T>& c,
+                     T tmin, T tmax) {
     Result<T> r;
     if (!finite3(d)) return r;
     const V3<T> ad = glm::abs(d);
@@ -109,7 +109,8 @@ Result<T> watertight(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>
     const T Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
     T U, V, W;
     if constexpr (Fused) {
-        U = std::fma(Cx, By, -(Cy * Bx)), V = std::fma(Ax, Cy, -(Ay * Cx)), W = std::fma(Bx, Ay, -(By * Ax));
+        U = std::fma(Cx, By, -(Cy * Bx)), V = std::fma(Ax, Cy, -(Ay * Cx)),
+        W = std::fma(Bx, Ay, -(By * Ax));
     } else {
         U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
     }
@@ -224,7 +225,8 @@ V3<T> offset_ray_origin(const V3<T>& point, const V3<T>& error, const V3<T>& nor
     if (glm::dot(direction, normal) < 0) offset = -offset;
     V3<T> origin = point + offset;
     for (int k = 0; k < 3; ++k) {
-        if (offset[k] > 0) origin[k] = std::nextafter(origin[k], std::numeric_limits<T>::infinity());
+        if (offset[k] > 0)
+            origin[k] = std::nextafter(origin[k], std::numeric_limits<T>::infinity());
         else if (offset[k] < 0)
             origin[k] = std::nextafter(origin[k], -std::numeric_limits<T>::infinity());
     }

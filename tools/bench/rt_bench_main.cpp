@@ -28,25 +28,31 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
     rt::bench::AccuracyConfig cfg = base;
     const auto start = std::chrono::steady_clock::now();
     cfg.progress = [&](const std::string& what) {
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "[%6.1f s] %s\n", s, what.c_str());
     };
     const rt::bench::AccuracyResults res = rt::bench::run_accuracy(cfg);
     std::string link_dir = svg_dir;
     if (!markdown.empty() && !svg_dir.empty()) {
         const auto md_dir = std::filesystem::absolute(markdown).parent_path();
-        link_dir = std::filesystem::relative(std::filesystem::absolute(svg_dir), md_dir).generic_string();
+        link_dir =
+            std::filesystem::relative(std::filesystem::absolute(svg_dir), md_dir).generic_string();
     }
     std::string command = "build/bin/rt-bench accuracy";
     if (cfg.seed != 1) command += " --seed " + std::to_string(cfg.seed);
-    if (cfg.cases != rt::bench::AccuracyConfig{}.cases) command += " --cases " + std::to_string(cfg.cases);
+    if (cfg.cases != rt::bench::AccuracyConfig{}.cases)
+        command += " --cases " + std::to_string(cfg.cases);
     if (!markdown.empty()) command += " --markdown " + markdown;
     if (!svg_dir.empty()) command += " --svg-dir " + svg_dir;
-    const std::string md = rt::bench::markdown_report(res, svg_dir.empty() ? "" : link_dir, command);
+    const std::string md =
+        rt::bench::markdown_report(res, svg_dir.empty() ? "" : link_dir, command);
     if (!svg_dir.empty()) rt::bench::write_svgs(res, svg_dir);
     if (!csv.empty()) write_file(csv, rt::bench::csv_report(res));
-    if (!markdown.empty()) write_file(markdown, md);
-    else std::cout << md;
+    if (!markdown.empty())
+        write_file(markdown, md);
+    else
+        std::cout << md;
     std::fprintf(stderr, "done in %.1f s\n", res.seconds);
     return 0;
 }
@@ -54,8 +60,9 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"rt-bench: measurements for the ray-tracing course. Without a subcommand: the "
-                 "BVH benchmark (as `rt-bench bvh`)"};
+    CLI::App app{
+        "rt-bench: measurements for the ray-tracing course. Without a subcommand: the "
+        "BVH benchmark (as `rt-bench bvh`)"};
     app.require_subcommand(0, 1);
 
     // The BVH benchmark's options belong to the top level, so that they work both without a
@@ -67,7 +74,8 @@ int main(int argc, char** argv) {
                    "procedural mesh when no --mesh: icosphere, torus, terrain, soup")
         ->capture_default_str();
     app.add_option("--triangles", bench.triangles, "procedural mesh: at least this many triangles")
-        ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 26));
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 26));
     app.add_option("--seed", bench.seed, "seed of the procedural mesh and the diffuse rays")
         ->capture_default_str();
     app.add_option("--threads", bench.threads,
@@ -75,49 +83,60 @@ int main(int argc, char** argv) {
                        std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
                        "); 1 thread is always run too")
         ->check(CLI::Range(1, 256));
-    app.add_option("--width", bench.width, "primary rays: image width")->capture_default_str()
+    app.add_option("--width", bench.width, "primary rays: image width")
+        ->capture_default_str()
         ->check(CLI::Range(1, 16384));
-    app.add_option("--height", bench.height, "primary rays: image height")->capture_default_str()
+    app.add_option("--height", bench.height, "primary rays: image height")
+        ->capture_default_str()
         ->check(CLI::Range(1, 16384));
     app.add_option("--repeat", bench.repeat, "timed runs of each measurement; the fastest counts")
-        ->capture_default_str()->check(CLI::Range(1, 1000));
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
     app.add_option("--brute-force-max-triangles", bench.brute_force_max_triangles,
                    "time brute force only up to this many triangles (above: correctness only)")
         ->capture_default_str();
     app.add_option("--brute-force-rays", bench.brute_force_rays,
                    "brute force traces at most this many rays of each kind (an even subset)")
-        ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
     app.add_option("--max-disagreement", bench.max_disagreement,
                    "fraction of a kind's rays on which two back-ends may disagree before the "
                    "run fails (edge and vertex hits legitimately differ)")
-        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     app.add_option("--csv", bench.csv, "write the timings as CSV to this file (\"-\": print them)");
     // Hidden (empty group): makes the BVH answer wrongly on every N-th hit, for the test that
     // the correctness check fails the run.
     app.add_option("--inject-error", bench.inject_error_period)->group("");
-    CLI::App* bvh = app.add_subcommand("bvh", "the BVH benchmark (the default): brute force, "
-                                              "stage 06 BVH and Embree on the same rays");
+    CLI::App* bvh = app.add_subcommand("bvh",
+                                       "the BVH benchmark (the default): brute force, "
+                                       "stage 06 BVH and Embree on the same rays");
     bvh->fallthrough();
 
     rt::bench::AccuracyConfig cfg;
     std::string markdown, svg_dir, csv;
     CLI::App* acc = app.add_subcommand(
-        "accuracy", "speed against error of the intersection methods, measured against exact arithmetic");
+        "accuracy",
+        "speed against error of the intersection methods, measured against exact arithmetic");
     acc->add_option("--seed", cfg.seed, "random seed of every scenario")->capture_default_str();
-    acc->add_option("--cases", cfg.cases, "rays per scenario")->capture_default_str()->check(CLI::Range(10, 10000000));
+    acc->add_option("--cases", cfg.cases, "rays per scenario")
+        ->capture_default_str()
+        ->check(CLI::Range(10, 10000000));
     acc->add_option("--markdown", markdown, "write the report here (default: print it)");
     acc->add_option("--svg-dir", svg_dir, "write the plots (SVG) into this folder");
     acc->add_option("--csv", csv, "write every table row as CSV");
     acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
-    if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`")) return *stop;
+    if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`"))
+        return *stop;
     try {
         if (acc->parsed()) {
             for (const CLI::Option* option : app.get_options())
                 if (option->count() > 0 && option->get_name() != "--help") {
-                    std::fprintf(stderr, "rt-bench: error: %s is an option of the BVH benchmark, "
-                                         "not of `accuracy`; give it after `accuracy`, if there\n",
+                    std::fprintf(stderr,
+                                 "rt-bench: error: %s is an option of the BVH benchmark, "
+                                 "not of `accuracy`; give it after `accuracy`, if there\n",
                                  option->get_name().c_str());
                     return 2;
                 }

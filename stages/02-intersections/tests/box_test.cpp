@@ -18,10 +18,14 @@ TEST_F(Box, HitEntryFace) {
 
 // Entering through the -x face: the outward normal is -x.
 TEST_F(Box, NormalOfEachFace) {
-    const struct { Vec3 o, d, n; } cases[] = {
-        {Vec3(-5, 0.1, 0.2), Vec3(1, 0, 0), Vec3(-1, 0, 0)}, {Vec3(5, 0.1, 0.2), Vec3(-1, 0, 0), Vec3(1, 0, 0)},
-        {Vec3(0.1, -5, 0.2), Vec3(0, 1, 0), Vec3(0, -1, 0)}, {Vec3(0.1, 5, 0.2), Vec3(0, -1, 0), Vec3(0, 1, 0)},
-        {Vec3(0.1, 0.2, -5), Vec3(0, 0, 1), Vec3(0, 0, -1)}, {Vec3(0.1, 0.2, 5), Vec3(0, 0, -1), Vec3(0, 0, 1)}};
+    const struct {
+        Vec3 o, d, n;
+    } cases[] = {{Vec3(-5, 0.1, 0.2), Vec3(1, 0, 0), Vec3(-1, 0, 0)},
+                 {Vec3(5, 0.1, 0.2), Vec3(-1, 0, 0), Vec3(1, 0, 0)},
+                 {Vec3(0.1, -5, 0.2), Vec3(0, 1, 0), Vec3(0, -1, 0)},
+                 {Vec3(0.1, 5, 0.2), Vec3(0, -1, 0), Vec3(0, 1, 0)},
+                 {Vec3(0.1, 0.2, -5), Vec3(0, 0, 1), Vec3(0, 0, -1)},
+                 {Vec3(0.1, 0.2, 5), Vec3(0, 0, -1), Vec3(0, 0, 1)}};
     for (const auto& c : cases) {
         const std::string what =
             "ray from " + text(c.o) + " along " + text(c.d) + " into the face " + text(c.n);
@@ -53,9 +57,11 @@ TEST_F(Box, Oblique) {
 
 TEST_F(Box, Misses) {
     Hit hit = sentinel_hit();
-    EXPECT_FALSE(intersect_box(Ray{Vec3(-3, 0, 0), Vec3(1, 2, 0)}, kUnit, {}, hit));   // passes by
-    EXPECT_FALSE(intersect_box(Ray{Vec3(-3, 0, 0), Vec3(-1, 0, 0)}, kUnit, {}, hit));  // points away
-    EXPECT_FALSE(intersect_box(Ray{Vec3(0, 2, -5), Vec3(0, 0, 1)}, kUnit, {}, hit));   // parallel, outside slab
+    EXPECT_FALSE(intersect_box(Ray{Vec3(-3, 0, 0), Vec3(1, 2, 0)}, kUnit, {}, hit));  // passes by
+    EXPECT_FALSE(
+        intersect_box(Ray{Vec3(-3, 0, 0), Vec3(-1, 0, 0)}, kUnit, {}, hit));  // points away
+    EXPECT_FALSE(intersect_box(Ray{Vec3(0, 2, -5), Vec3(0, 0, 1)}, kUnit, {},
+                               hit));  // parallel, outside slab
     EXPECT_TRUE(untouched(hit));
 }
 

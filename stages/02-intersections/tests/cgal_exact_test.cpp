@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "testing/exact_reference.h"
 #include "geometry/watertight.h"
 #include "stage_api/stage02.h"
+#include "testing/exact_reference.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -58,9 +58,12 @@ std::string digits(double x) {
     std::snprintf(buffer, sizeof buffer, "%.9g", x);
     return buffer;
 }
-std::string text(const Ray& ray) { return "ray o " + text(ray.origin) + " d " + text(ray.direction); }
-const char* hit_or_miss(bool hit) { return hit ? "a hit" : "a miss"; }
-
+std::string text(const Ray& ray) {
+    return "ray o " + text(ray.origin) + " d " + text(ray.direction);
+}
+const char* hit_or_miss(bool hit) {
+    return hit ? "a hit" : "a miss";
+}
 
 double max_abs(const Vec3& v) {
     return std::max({std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
@@ -118,8 +121,8 @@ struct TriangleChecker {
         ASSERT_TRUE(truth.cgal_consistent) << name << ": CGAL predicate and construction disagree";
         if (truth.region == Region::Edge || truth.region == Region::Vertex) ++exact_edge_or_vertex;
         const Vec3 n = glm::cross(b - a, c - a);
-        const double cos = std::abs(glm::dot(n, ray.direction)) /
-                           (length(n) * length(ray.direction));
+        const double cos =
+            std::abs(glm::dot(n, ray.direction)) / (length(n) * length(ray.direction));
         const double dlen = length(ray.direction);
         const double t_exact = truth.parallel ? 0 : CGAL::to_double(truth.t);
         const double L = std::max({max_abs(ray.origin), max_abs(a), max_abs(b), max_abs(c)}) +
@@ -139,8 +142,9 @@ struct TriangleChecker {
                     << name << ": " << kMethods[m].name << " reports " << hit_or_miss(got)
                     << ", exact arithmetic " << hit_or_miss(truth.hit) << ", for a ray whose "
                     << "plane point is " << few(truth.edge_distance) << " from the nearest edge "
-                    << "line: " << few(ratio) << " rounding widths (one width here: eps L / cos = "
-                    << few(kEps * L / cos) << "), at most " << tol.band << " allowed. Only rays "
+                    << "line: " << few(ratio)
+                    << " rounding widths (one width here: eps L / cos = " << few(kEps * L / cos)
+                    << "), at most " << tol.band << " allowed. Only rays "
                     << "within rounding of an edge may be decided differently: check the inside "
                     << "test (beta >= 0, gamma >= 0, beta + gamma <= 1) and the open t-range. "
                     << text(ray) << ", t_exact " << digits(t_exact) << ", cos " << few(cos) << "; "
@@ -154,12 +158,11 @@ struct TriangleChecker {
             s.worst_t = std::max(s.worst_t, ratio);
             EXPECT_LE(ratio, tol.t)
                 << name << ": " << kMethods[m].name << " t = " << digits(hit.t) << ", exact "
-                << digits(t_exact) << ": the error is " << few(ratio) << " units, at most "
-                << tol.t << " allowed (1 unit = the rounding Cramer's rule makes on this ray, "
+                << digits(t_exact) << ": the error is " << few(ratio) << " units, at most " << tol.t
+                << " allowed (1 unit = the rounding Cramer's rule makes on this ray, "
                 << "eps L aspect / cos = " << few(kEps * L * aspect / cos) << "). Is t the "
-                << "ratio |a-b, a-c, s| / |M| of the handout? " << text(ray) << ", cos "
-                << few(cos) << ", aspect " << few(aspect)
-                << "; " << kReadTriangle;
+                << "ratio |a-b, a-c, s| / |M| of the handout? " << text(ray) << ", cos " << few(cos)
+                << ", aspect " << few(aspect) << "; " << kReadTriangle;
             if (cos >= 0.2 && aspect <= 4)
                 s.worst_ulps = std::max(s.worst_ulps, ulp_error(hit.t, truth.t));
         }
@@ -242,8 +245,8 @@ TEST_F(TriangleExact, GrazingRays) {
     check.print();
     for (int m = 0; m < 2; ++m)
         EXPECT_GT(check.stats[m].hits, 500)
-            << kMethods[m].name << ": only " << check.stats[m].hits << " of "
-            << check.stats[m].rays << " grazing rays were hits that agree with exact arithmetic "
+            << kMethods[m].name << ": only " << check.stats[m].hits << " of " << check.stats[m].rays
+            << " grazing rays were hits that agree with exact arithmetic "
             << "(more than 500 expected); " << kReadTriangle;
 }
 
@@ -259,13 +262,16 @@ TEST_F(TriangleExact, SliverTriangles) {
         const Vec3 side = glm::normalize(glm::cross(b - a, rng.unit()));
         const Real thin = Real(std::pow(10.0, rng.uniform(-5, -3)));
         Vec3 c;
-        if (i % 2 == 0) c = b + thin * side * glm::length(b - a);  // needle: |bc| tiny
-        else c = (a + b) * Real(0.5) + thin * side * glm::length(b - a);  // cap
+        if (i % 2 == 0)
+            c = b + thin * side * glm::length(b - a);  // needle: |bc| tiny
+        else
+            c = (a + b) * Real(0.5) + thin * side * glm::length(b - a);  // cap
         if (glm::length(glm::cross(b - a, c - a)) == 0) continue;
         // Aim at the sliver itself: a point on the segment ab or just beside it.
         const Real s = Real(rng.uniform(-0.05, 1.05));
-        const Vec3 target = a + s * (b - a) + Real(rng.uniform(-1, 2)) * (c - (a + b) * Real(0.5)) *
-                                                  Real(i % 2 == 0 ? 0 : 1);
+        const Vec3 target =
+            a + s * (b - a) +
+            Real(rng.uniform(-1, 2)) * (c - (a + b) * Real(0.5)) * Real(i % 2 == 0 ? 0 : 1);
         const Vec3 origin = rng.vec(-4, 4);
         check.check(Ray{origin, target - origin}, a, b, c);
         if (HasFatalFailure()) return;
@@ -294,8 +300,8 @@ TEST_F(TriangleExact, FarAwayAndExtremeScales) {
     check.print();
     for (int m = 0; m < 2; ++m)
         EXPECT_GT(check.stats[m].hits, 500)
-            << kMethods[m].name << ": only " << check.stats[m].hits << " of "
-            << check.stats[m].rays << " rays at far or extreme scales were hits that agree with "
+            << kMethods[m].name << ": only " << check.stats[m].hits << " of " << check.stats[m].rays
+            << " rays at far or extreme scales were hits that agree with "
             << "exact arithmetic (more than 500 expected); " << kReadTriangle;
 }
 
@@ -304,7 +310,7 @@ TEST_F(TriangleExact, ParallelAndInPlaneRaysMiss) {
     // from inside it through the triangle: the contract says miss for both methods.
     const Vec3 a(0, 0, 0), b(1, 1, 0), c(0, 1, 1);  // normal (1, -1, 1): small exact integers
     const Vec3 dirs[] = {{1, 1, 0}, {0, 1, 1}, {1, 0, -1}, {2, 1, -1}, {0.5, 0.25, -0.25}};
-    const Vec3 origins[] = {Vec3(0.25, 0.5, 0.25) - Vec3(1, 1, 0) * Real(2),  // in the plane
+    const Vec3 origins[] = {Vec3(0.25, 0.5, 0.25) - Vec3(1, 1, 0) * Real(2),    // in the plane
                             Vec3(0, 0.5, 0.25) + Vec3(1, -1, 1) * Real(0.125),  // beside it
                             Vec3(-3, -2, 1)};
     for (const Vec3& d : dirs)
@@ -341,8 +347,8 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
                     EXPECT_FALSE(m.fn(Ray{o, d}, a, b, c, Interval{}, hit))
                         << m.name << ": " << text(Ray{o, d}) << " starts exactly on an "
                         << "axis-aligned triangle with exact coordinates: t is exactly 0, outside "
-                        << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); "
-                        << kReadRanges;
+                        << "the open range (0, inf), so a miss (reported t " << digits(hit.t)
+                        << "); " << kReadRanges;
                 }
             }
         }
@@ -364,11 +370,12 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
             if (m.fn(ray, a, b, c, Interval{}, hit)) {
                 ++reported;
                 const Vec3 n = glm::cross(b - a, c - a);
-                const double cos = std::abs(glm::dot(n, ray.direction)) /
-                                   (length(n) * length(ray.direction));
+                const double cos =
+                    std::abs(glm::dot(n, ray.direction)) / (length(n) * length(ray.direction));
                 EXPECT_LE(std::abs(hit.t) * length(ray.direction), 16 * kEps * L / cos)
                     << m.name << ": " << text(ray) << " starts exactly on the triangle (exact "
-                    << "t = 0), yet a hit at distance " << few(std::abs(hit.t) * length(ray.direction))
+                    << "t = 0), yet a hit at distance "
+                    << few(std::abs(hit.t) * length(ray.direction))
                     << " is reported, more than rounding can explain (16 eps L / cos = "
                     << few(16 * kEps * L / cos) << "); " << kReadTriangle;
             }
@@ -379,8 +386,8 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
                 << kReadRanges;
         }
     }
-    std::printf("[origin on triangle] %d exact origins, %d tiny-t hits reported\n",
-                exact_origins, reported);
+    std::printf("[origin on triangle] %d exact origins, %d tiny-t hits reported\n", exact_origins,
+                reported);
     EXPECT_GT(exact_origins, 100);
 }
 
@@ -394,8 +401,10 @@ struct LeakCount {
 // Casts `ray` at every triangle of the mesh with both methods; a leak is a ray that CGAL says
 // meets the closed mesh (at t > 0) and that no triangle reports.
 void cast_at_mesh(const Ray& ray, const Mesh& mesh, LeakCount& count, const char* what) {
-    ASSERT_TRUE(exact_mesh_hit(ray, mesh)) << what << ": test ray built to hit the mesh misses: o "
-        << ray.origin.x << " " << ray.origin.y << " " << ray.origin.z << " d " << ray.direction.x << " " << ray.direction.y << " " << ray.direction.z;
+    ASSERT_TRUE(exact_mesh_hit(ray, mesh))
+        << what << ": test ray built to hit the mesh misses: o " << ray.origin.x << " "
+        << ray.origin.y << " " << ray.origin.z << " d " << ray.direction.x << " " << ray.direction.y
+        << " " << ray.direction.z;
     ++count.rays;
     for (int m = 0; m < 2; ++m) {
         int hits = 0;
@@ -511,14 +520,15 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
         total.leaks[1] += count.leaks[1];
     }
     const double rate = double(total.leaks[0]) / total.rays;
-    std::printf("[leaks] total rays %d, Cramer leak rate %.3f%%, watertight leaks %d\n",
-                total.rays, 100 * rate, total.leaks[1]);
+    std::printf("[leaks] total rays %d, Cramer leak rate %.3f%%, watertight leaks %d\n", total.rays,
+                100 * rate, total.leaks[1]);
     // Bound on the measured Cramer rate: observed 2.2% in float over these rays (4.4% on the
     // icosphere at the origin, where rays aim at edges and vertices from the centre), bounded
     // at 6% for margin. In double the rate is measured and printed the same way.
     constexpr double kCramerLeakBound = 0.06;
     EXPECT_LE(rate, kCramerLeakBound)
-        << "Cramer's rule let " << few(100 * rate) << "% of " << total.rays << " rays aimed at edges "
+        << "Cramer's rule let " << few(100 * rate) << "% of " << total.rays
+        << " rays aimed at edges "
         << "and vertices through the closed meshes, at most " << 100 * kCramerLeakBound
         << "% allowed (the reference leaks about 2%): edges and vertices must count as inside "
         << "(beta >= 0, gamma >= 0, beta + gamma <= 1); " << kReadTriangle;
@@ -564,8 +574,8 @@ struct SphereChecker {
                 << " allowed. Only near-tangent rays may be decided differently: check the "
                 << "discriminant (b^2 - a c' cancels for a small sphere far away: use "
                 << "a (r^2 - l.l)), that a root t <= 0 (behind the origin) is never taken, and "
-                << "the open t-range. " << text(ray) << ", sphere c "
-                << text(sphere.center) << " r " << digits(sphere.radius) << "; " << kReadSphere;
+                << "the open t-range. " << text(ray) << ", sphere c " << text(sphere.center)
+                << " r " << digits(sphere.radius) << "; " << kReadSphere;
             return;
         }
         if (!got) return;
@@ -581,9 +591,8 @@ struct SphereChecker {
             << " allowed (1 unit = the rounding a stable quadratic makes on this ray, "
             << "eps (|o - c| + r) (1 + r / h) = " << few(kEps * (oc + r) * (1 + r / h))
             << ", h the half chord). Digits lost to cancellation, in -b + sqrt(disc) or in "
-            << "b^2 - a c'? Or the wrong root? "
-            << text(ray) << ", sphere c " << text(sphere.center) << " r " << digits(sphere.radius)
-            << "; " << kReadSphere;
+            << "b^2 - a c'? Or the wrong root? " << text(ray) << ", sphere c "
+            << text(sphere.center) << " r " << digits(sphere.radius) << "; " << kReadSphere;
         const double ulps = truth.t.ulp_error(hit.t);
         worst_ulps = std::max(worst_ulps, ulps);
         EXPECT_LE(ulps, ulp_bound)
@@ -594,10 +603,10 @@ struct SphereChecker {
             << text(sphere.center) << " r " << digits(sphere.radius) << "; " << kReadSphere;
     }
     void print() const {
-        std::printf("[%s] rays %d hits %d disagreements %d (worst band %.3g of %g) worst t %.3g "
-                    "of %g, worst ulps %.3g\n",
-                    name.c_str(), rays, hits, disagreements, worst_band, band, worst_t, t_tol,
-                    worst_ulps);
+        std::printf(
+            "[%s] rays %d hits %d disagreements %d (worst band %.3g of %g) worst t %.3g "
+            "of %g, worst ulps %.3g\n",
+            name.c_str(), rays, hits, disagreements, worst_band, band, worst_t, t_tol, worst_ulps);
     }
 };
 
@@ -627,8 +636,10 @@ TEST_F(SphereExact, RandomRaysAgreeWithExactRoot) {
         const double oc = length(o - s.center);
         const bool good =
             truth.tangency < -0.1 * s.radius && std::abs(oc - s.radius) > 0.5 * s.radius;
-        if (good) check.check(ray, s, kUlps);
-        else wide.check(ray, s, std::numeric_limits<double>::infinity());
+        if (good)
+            check.check(ray, s, kUlps);
+        else
+            wide.check(ray, s, std::numeric_limits<double>::infinity());
     }
     check.print();
     wide.print();
@@ -686,14 +697,14 @@ TEST_F(SphereExact, LargeSphereFromJustAboveTheSurface) {
             const double r_ulps = truth.t.ulp_error(hit.t) / (s.radius / h);
             worst_ratio_ulps = std::max(worst_ratio_ulps, r_ulps);
             EXPECT_LE(r_ulps, kUlpsPerRatio)
-                << "t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double())
-                << ": " << few(truth.t.ulp_error(hit.t)) << " ulps from the exact root for an "
+                << "t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double()) << ": "
+                << few(truth.t.ulp_error(hit.t)) << " ulps from the exact root for an "
                 << "origin " << few(h) << " above a sphere of radius " << s.radius << ", that is "
-                << few(r_ulps)
-                << " ulps per unit of r / height, at most " << kUlpsPerRatio << " allowed (the "
+                << few(r_ulps) << " ulps per unit of r / height, at most " << kUlpsPerRatio
+                << " allowed (the "
                 << "rounding of c' = |o - c|^2 - r^2 costs about r / height ulps; more means "
-                << "another cancellation). " << text(ray) << ", sphere c " << text(s.center)
-                << "; " << kReadSphere;
+                << "another cancellation). " << text(ray) << ", sphere c " << text(s.center) << "; "
+                << kReadSphere;
         }
     }
     check.print();
@@ -737,8 +748,8 @@ TEST_F(SphereExact, LargeSphereFromJustInsideTheSurfaceExactC) {
         worst = std::max(worst, ulps);
         EXPECT_LE(ulps, kUlps)
             << "t = " << digits(hit.t) << ", exact root " << digits(truth.t.to_double()) << ": "
-            << few(ulps)
-            << " ulps from the exact root, at most " << kUlps << " allowed. The ray leaves a "
+            << few(ulps) << " ulps from the exact root, at most " << kUlps
+            << " allowed. The ray leaves a "
             << "large sphere from just inside: (-b + sqrt(disc)) / a cancels here (about 2000 "
             << "ulps), c' / q does not. " << text(ray) << ", sphere c " << text(s.center)
             << " r 1000; " << kReadSphere;
@@ -775,7 +786,8 @@ TEST_F(SphereExact, OriginOnTheSphere) {
     EXPECT_FALSE(exact_sphere(tangent, s).hit);  // double root at 0
     EXPECT_FALSE(intersect_sphere(tangent, s, Interval{}, hit))
         << "origin exactly on the sphere, tangent direction: a double root at t = 0, outside "
-        << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); " << kReadRanges;
+        << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); "
+        << kReadRanges;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -828,31 +840,33 @@ TEST_F(BoxExact, SlabsAgreeWithCgal) {
         ++hits;
         const double ulps = ulp_error(hit.t, truth.t);
         worst_ulps = std::max(worst_ulps, ulps);
-        EXPECT_LE(ulps, kUlps)
-            << "box: t = " << digits(hit.t) << ", exact " << digits(CGAL::to_double(truth.t))
-            << ": " << few(ulps)
-            << " units in the last place (ulps) off, at most " << kUlps << " allowed: a slab "
-            << "distance is (bound - o_i) / d_i, two roundings. " << text(ray) << ", box "
-            << text(box.min) << " .. " << text(box.max) << "; " << kReadBox;
+        EXPECT_LE(ulps, kUlps) << "box: t = " << digits(hit.t) << ", exact "
+                               << digits(CGAL::to_double(truth.t)) << ": " << few(ulps)
+                               << " units in the last place (ulps) off, at most " << kUlps
+                               << " allowed: a slab "
+                               << "distance is (bound - o_i) / d_i, two roundings. " << text(ray)
+                               << ", box " << text(box.min) << " .. " << text(box.max) << "; "
+                               << kReadBox;
         if (truth.face_margin > kGap * kEps) {
             ++faces_checked;
             const bool positive = ray.direction[truth.axis] > 0;
             Vec3 outward(0);  // entering: the face facing the ray; leaving: the one behind it
             outward[truth.axis] = truth.at_near == positive ? Real(-1) : Real(1);
             EXPECT_EQ(hit.normal, hit.front_face ? outward : -outward)
-                << "box: wrong face. You stored the normal " << text(hit.normal)
-                << " (front_face " << hit.front_face << "), but the ray "
-                << (truth.at_near ? "enters" : "leaves") << " through the face with outward "
+                << "box: wrong face. You stored the normal " << text(hit.normal) << " (front_face "
+                << hit.front_face << "), but the ray " << (truth.at_near ? "enters" : "leaves")
+                << " through the face with outward "
                 << "normal " << text(outward) << " (the slab of axis " << truth.axis << " sets "
                 << (truth.at_near ? "t_near" : "t_far") << "), so the stored normal is "
                 << text(hit.front_face ? outward : -outward) << ", that one turned to face the "
-                << "ray. " << text(ray) << ", box " << text(box.min) << " .. "
-                << text(box.max) << "; " << kReadBox;
+                << "ray. " << text(ray) << ", box " << text(box.min) << " .. " << text(box.max)
+                << "; " << kReadBox;
         }
     }
-    std::printf("[box] hits %d, disagreements %d (worst |gap| %.3g eps, bound %g), worst ulps "
-                "%.3g (bound %g), faces checked %d\n",
-                hits, disagreements, worst_gap, kGap, worst_ulps, kUlps, faces_checked);
+    std::printf(
+        "[box] hits %d, disagreements %d (worst |gap| %.3g eps, bound %g), worst ulps "
+        "%.3g (bound %g), faces checked %d\n",
+        hits, disagreements, worst_gap, kGap, worst_ulps, kUlps, faces_checked);
     EXPECT_GT(hits, 600) << "only " << hits << " of the random box rays were hits that agree "
                          << "with exact arithmetic (more than 600 expected); " << kReadBox;
 }
@@ -875,10 +889,11 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
         const bool got = intersect_plane(ray, plane, Interval{}, hit);
         ASSERT_FALSE(truth.parallel);
         const double dlen = length(ray.direction);
-        const double cos = std::abs(glm::dot(plane.normal, ray.direction)) /
-                           (length(plane.normal) * dlen);
+        const double cos =
+            std::abs(glm::dot(plane.normal, ray.direction)) / (length(plane.normal) * dlen);
         const double t_exact = CGAL::to_double(truth.t);
-        const double scale = kEps * (length(plane.point - ray.origin) + std::abs(t_exact) * dlen) / cos;
+        const double scale =
+            kEps * (length(plane.point - ray.origin) + std::abs(t_exact) * dlen) / cos;
         if (got != truth.hit) {  // only when the exact t is 0 to within rounding
             EXPECT_LE(std::abs(t_exact) * dlen, kT * scale)
                 << "plane: you report " << hit_or_miss(got) << ", exact arithmetic "
@@ -900,8 +915,8 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
             << "plane: t = " << digits(hit.t) << ", exact " << digits(t_exact) << ": the error "
             << "is " << few(ratio) << " units, at most " << kT << " allowed (1 unit = the "
             << "rounding of n.(p0 - o) / n.d on this ray, eps (|p0 - o| + |t d|) / cos = "
-            << few(scale) << "). " << text(ray) << ", plane p0 "
-            << text(plane.point) << " n " << text(plane.normal) << "; " << kReadPlane;
+            << few(scale) << "). " << text(ray) << ", plane p0 " << text(plane.point) << " n "
+            << text(plane.normal) << "; " << kReadPlane;
     }
     std::printf("[plane] hits %d, worst t error %.3g of %g\n", hits, worst, kT);
     EXPECT_GT(hits, 1000) << "only " << hits << " of the random plane rays were hits that agree "
@@ -911,7 +926,8 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
 TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
     // n = normalize(1, 1, 0) in Real, so n.x == n.y: d = (1, -1, z) is exactly parallel.
     const Plane plane{Vec3(2, -1, 0.5), glm::normalize(Vec3(1, 1, 0))};
-    for (const Vec3 o : {Vec3(5, 6, 7), Vec3(2, -1, 0.5), Vec3(3, -2, 0.5)}) {  // the last two lie in it
+    for (const Vec3 o :
+         {Vec3(5, 6, 7), Vec3(2, -1, 0.5), Vec3(3, -2, 0.5)}) {  // the last two lie in it
         const Ray ray{o, Vec3(1, -1, 3)};
         ASSERT_TRUE(exact_plane(ray, plane).parallel);
         Hit hit;
@@ -977,23 +993,25 @@ TEST_F(DegenerateRays, ZeroNanInfDirectionsMissEverything) {
     // (0, inf)" can hide a missing check.
     for (const Vec3& d : dirs)
         for (const Interval range : {Interval{}, Interval{-kInfinity, kInfinity}})
-        for (const Vec3 o : {Vec3(0), Vec3(0, 0, -5)}) {  // outside everything, inside the sphere
-            const Ray ray{o, d};
-            const std::string what = "direction (" + std::to_string(d.x) + ", " +
-                                     std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
-            Hit h = sentinel;
-            EXPECT_FALSE(intersect_sphere(ray, scene.spheres[0], range, h)) << what;
-            EXPECT_FALSE(intersect_plane(ray, scene.planes[0], range, h)) << what;
-            EXPECT_FALSE(intersect_triangle(ray, a, b, c, range, h)) << what;
-            EXPECT_FALSE(intersect_triangle_watertight(ray, a, b, c, range, h)) << what;
-            EXPECT_FALSE(intersect_box(ray, scene.boxes[0], range, h)) << what;
-            EXPECT_FALSE(intersect_nearest(ray, scene, range, h)) << what;
-            EXPECT_TRUE(untouched(h)) << what << ": hit was modified on a miss";
-        }
+            for (const Vec3 o :
+                 {Vec3(0), Vec3(0, 0, -5)}) {  // outside everything, inside the sphere
+                const Ray ray{o, d};
+                const std::string what = "direction (" + std::to_string(d.x) + ", " +
+                                         std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
+                Hit h = sentinel;
+                EXPECT_FALSE(intersect_sphere(ray, scene.spheres[0], range, h)) << what;
+                EXPECT_FALSE(intersect_plane(ray, scene.planes[0], range, h)) << what;
+                EXPECT_FALSE(intersect_triangle(ray, a, b, c, range, h)) << what;
+                EXPECT_FALSE(intersect_triangle_watertight(ray, a, b, c, range, h)) << what;
+                EXPECT_FALSE(intersect_box(ray, scene.boxes[0], range, h)) << what;
+                EXPECT_FALSE(intersect_nearest(ray, scene, range, h)) << what;
+                EXPECT_TRUE(untouched(h)) << what << ": hit was modified on a miss";
+            }
     // Sanity: the same scene is hit with a proper direction, so the misses above mean something.
     Hit h;
     EXPECT_TRUE(intersect_nearest(Ray{Vec3(0), Vec3(0, 0, -1)}, scene, Interval{}, h));
-    EXPECT_TRUE(intersect_triangle_watertight(Ray{Vec3(0), Vec3(0, 0, -1)}, a, b, c, Interval{}, h));
+    EXPECT_TRUE(
+        intersect_triangle_watertight(Ray{Vec3(0), Vec3(0, 0, -1)}, a, b, c, Interval{}, h));
 }
 
 }  // namespace

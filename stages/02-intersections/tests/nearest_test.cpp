@@ -30,13 +30,19 @@ TEST_F(Nearest, FindsTheClosest) {
 // Shrinking tmin past each primitive reveals the next one, with its id and material.
 TEST_F(Nearest, RangeSelectsEachPrimitive) {
     const Scene s = row_scene();
-    const struct { Real tmin, t; rt::Scene::Kind kind; int material; } expected[] = {
-        {6, 9, rt::Scene::Kind::Sphere, 1}, {12, 14, rt::Scene::Kind::Box, 0}, {17, 20, rt::Scene::Kind::Plane, 2}};
+    const struct {
+        Real tmin, t;
+        rt::Scene::Kind kind;
+        int material;
+    } expected[] = {{6, 9, rt::Scene::Kind::Sphere, 1},
+                    {12, 14, rt::Scene::Kind::Box, 0},
+                    {17, 20, rt::Scene::Kind::Plane, 2}};
     for (const auto& e : expected) {
         SCOPED_TRACE(::testing::Message() << "t_range.min = " << e.tmin
                                           << ": the nearest hit is then the one at t = " << e.t);
         Hit hit;
-        ASSERT_TRUE(intersect_nearest(Ray{Vec3(0), Vec3(0, 0, -1)}, s, Interval{e.tmin, kInfinity}, hit));
+        ASSERT_TRUE(
+            intersect_nearest(Ray{Vec3(0), Vec3(0, 0, -1)}, s, Interval{e.tmin, kInfinity}, hit));
         EXPECT_NEAR(hit.t, e.t, kTol);
         EXPECT_EQ(hit.primitive, s.primitive_id(e.kind, 0));
         EXPECT_EQ(hit.material, e.material);

@@ -8,7 +8,8 @@ RT_TEST_SUITE(Plane);
 
 TEST_F(Plane, HitFromAbove) {
     Hit hit;
-    ASSERT_TRUE(intersect_plane(Ray{Vec3(1, 3, 2), Vec3(0, -1, 0)}, rt::Plane{Vec3(0, -1, 0), Vec3(0, 1, 0), 0}, {}, hit));
+    ASSERT_TRUE(intersect_plane(Ray{Vec3(1, 3, 2), Vec3(0, -1, 0)},
+                                rt::Plane{Vec3(0, -1, 0), Vec3(0, 1, 0), 0}, {}, hit));
     EXPECT_NEAR(hit.t, 4, kTol);
     expect_vec_near(hit.point, Vec3(1, -1, 2), "point, ray straight down onto y = -1");
     expect_vec_near(hit.normal, Vec3(0, 1, 0), "normal, ray from above: the plane's normal");
@@ -18,7 +19,8 @@ TEST_F(Plane, HitFromAbove) {
 // From below, the normal is flipped to face the ray and front_face is false.
 TEST_F(Plane, HitFromBelowFacesRay) {
     Hit hit;
-    ASSERT_TRUE(intersect_plane(Ray{Vec3(0, -3, 0), Vec3(0, 2, 0)}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
+    ASSERT_TRUE(intersect_plane(Ray{Vec3(0, -3, 0), Vec3(0, 2, 0)},
+                                rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
     EXPECT_NEAR(hit.t, 1.5, kTol);
     expect_vec_near(hit.normal, Vec3(0, -1, 0),
                     "normal, ray from below: the plane's normal turned to face the ray");
@@ -30,7 +32,8 @@ TEST_F(Plane, HitFromBelowFacesRay) {
 TEST_F(Plane, ObliqueRay) {
     const Vec3 n = glm::normalize(Vec3(1, 1, 0));
     Hit hit;
-    ASSERT_TRUE(intersect_plane(Ray{Vec3(0), Vec3(1, 0, 0)}, rt::Plane{Vec3(2, 0, 0), n, 0}, {}, hit));
+    ASSERT_TRUE(
+        intersect_plane(Ray{Vec3(0), Vec3(1, 0, 0)}, rt::Plane{Vec3(2, 0, 0), n, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
 }
 
@@ -46,20 +49,23 @@ TEST_F(Plane, ParallelAndInPlaneRaysMiss) {
 // An origin on the plane gives t = 0, outside the open range (0, inf).
 TEST_F(Plane, OriginOnPlaneIsNotAHit) {
     Hit hit = sentinel_hit();
-    EXPECT_FALSE(intersect_plane(Ray{Vec3(3, 0, 4), Vec3(0, 1, 1)}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
+    EXPECT_FALSE(intersect_plane(Ray{Vec3(3, 0, 4), Vec3(0, 1, 1)},
+                                 rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
     EXPECT_TRUE(untouched(hit));
 }
 
 TEST_F(Plane, BehindTheRayMisses) {
     Hit hit;
-    EXPECT_FALSE(intersect_plane(Ray{Vec3(0, 1, 0), Vec3(0, 1, 0)}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
+    EXPECT_FALSE(intersect_plane(Ray{Vec3(0, 1, 0), Vec3(0, 1, 0)},
+                                 rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
 }
 
 TEST_F(Plane, BadDirectionsMiss) {
     for (const Vec3& d : kBadDirections) {
         SCOPED_TRACE("direction " + text(d));
         Hit hit = sentinel_hit();
-        EXPECT_FALSE(intersect_plane(Ray{Vec3(0, 1, 0), d}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
+        EXPECT_FALSE(
+            intersect_plane(Ray{Vec3(0, 1, 0), d}, rt::Plane{Vec3(0), Vec3(0, 1, 0), 0}, {}, hit));
         EXPECT_TRUE(untouched(hit));
     }
 }

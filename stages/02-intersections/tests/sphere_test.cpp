@@ -9,7 +9,8 @@ RT_TEST_SUITE(Sphere);
 // A ray from z = 5 towards the origin hits the unit sphere at z = 1, t = 4, normal +z.
 TEST_F(Sphere, HitFromOutside) {
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
+    ASSERT_TRUE(
+        intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 4, kTol);
     expect_vec_near(hit.point, Vec3(0, 0, 1), "point, ray from z = 5 to the unit sphere");
     expect_vec_near(hit.normal, Vec3(0, 0, 1), "normal, ray from z = 5 to the unit sphere");
@@ -19,7 +20,8 @@ TEST_F(Sphere, HitFromOutside) {
 // From the centre the only root in (0, inf) is the far one; the normal faces the ray (inwards).
 TEST_F(Sphere, HitFromInsideFacesRay) {
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(Ray{Vec3(1, 2, 3), Vec3(1, 0, 0)}, rt::Sphere{Vec3(1, 2, 3), 2, 0}, {}, hit));
+    ASSERT_TRUE(intersect_sphere(Ray{Vec3(1, 2, 3), Vec3(1, 0, 0)}, rt::Sphere{Vec3(1, 2, 3), 2, 0},
+                                 {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
     expect_vec_near(hit.normal, Vec3(-1, 0, 0),
                     "normal, ray from the centre along +x: (p - c) / r turned to face the ray");
@@ -30,21 +32,24 @@ TEST_F(Sphere, HitFromInsideFacesRay) {
 // t is in units of the direction's length: doubling the direction halves t.
 TEST_F(Sphere, NonUnitDirection) {
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -2)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
+    ASSERT_TRUE(
+        intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -2)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 2, kTol);
     expect_vec_near(hit.point, Vec3(0, 0, 1), "point, direction (0, 0, -2) from z = 5");
 }
 
 TEST_F(Sphere, MissLeavesHitUntouched) {
     Hit hit = sentinel_hit();
-    EXPECT_FALSE(intersect_sphere(Ray{Vec3(0, 3, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
+    EXPECT_FALSE(
+        intersect_sphere(Ray{Vec3(0, 3, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_TRUE(untouched(hit));
 }
 
 // Sphere behind the ray: both roots negative.
 TEST_F(Sphere, BehindTheRayMisses) {
     Hit hit = sentinel_hit();
-    EXPECT_FALSE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, 1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
+    EXPECT_FALSE(
+        intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, 1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_TRUE(untouched(hit));
 }
 
@@ -63,7 +68,8 @@ TEST_F(Sphere, RespectsTRange) {
 // phi = 3pi/2 and theta = pi/2.
 TEST_F(Sphere, SurfaceCoordinates) {
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
+    ASSERT_TRUE(
+        intersect_sphere(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.uv.x, 0.75, kTol);
     EXPECT_NEAR(hit.uv.y, 0.5, kTol);
 }
@@ -72,7 +78,8 @@ TEST_F(Sphere, SurfaceCoordinates) {
 // does not. Distance 1e4, radius 1: t must be 1e4 - 1 to float precision.
 TEST_F(Sphere, SmallSphereFarAway) {
     Hit hit;
-    ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 0), Vec3(0, 0, -1)}, rt::Sphere{Vec3(0, 0, -1e4f), 1, 0}, {}, hit));
+    ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 0), Vec3(0, 0, -1)},
+                                 rt::Sphere{Vec3(0, 0, -1e4f), 1, 0}, {}, hit));
     EXPECT_NEAR(hit.t, 9999, 9999 * 4 * std::numeric_limits<Real>::epsilon());
 }
 

@@ -34,9 +34,8 @@ inline bool untouched(const Hit& h) {
 }
 
 // Directions no intersection may accept: zero, NaN, infinite.
-inline const Vec3 kBadDirections[] = {
-    Vec3(0), Vec3(std::numeric_limits<Real>::quiet_NaN(), 0, -1),
-    Vec3(0, std::numeric_limits<Real>::infinity(), 0),
-    Vec3(-std::numeric_limits<Real>::infinity(), 1, 1)};
+inline const Vec3 kBadDirections[] = {Vec3(0), Vec3(std::numeric_limits<Real>::quiet_NaN(), 0, -1),
+                                      Vec3(0, std::numeric_limits<Real>::infinity(), 0),
+                                      Vec3(-std::numeric_limits<Real>::infinity(), 1, 1)};
 
 }  // namespace rt::stage02

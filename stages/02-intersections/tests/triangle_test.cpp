@@ -44,7 +44,8 @@ TEST_F(Triangle, MissOutsideEachEdge) {
 // Points exactly on an edge or at a vertex count as inside (beta >= 0, not > 0). These points
 // are exact in float, so Cramer's rule gives exact zeros here.
 TEST_F(Triangle, EdgesAndVerticesCount) {
-    for (const Vec3& o : {Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1)}) {
+    for (const Vec3& o : {Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0, 0, 1),
+                          Vec3(1, 0, 1), Vec3(0, 1, 1)}) {
         Hit hit;
         EXPECT_TRUE(intersect_triangle(Ray{o, Vec3(0, 0, -1)}, A, B, C, {}, hit))
             << "ray straight down at (" << o.x << ", " << o.y << "), exactly on an edge or a "
@@ -66,9 +67,9 @@ TEST_F(Triangle, BarycentricsReproduceThePoint) {
         const Vec3 target = (1 - beta0 - gamma0) * a + beta0 * b + gamma0 * c;
         const Vec3 origin(u(rng), u(rng), 4);
         const Ray aimed{origin, target - origin};
-        SCOPED_TRACE(::testing::Message() << "random triangle " << i << ": a " << text(a) << ", b "
-                                          << text(b) << ", c " << text(c) << ", aimed at beta "
-                                          << beta0 << ", gamma " << gamma0);
+        SCOPED_TRACE(::testing::Message()
+                     << "random triangle " << i << ": a " << text(a) << ", b " << text(b) << ", c "
+                     << text(c) << ", aimed at beta " << beta0 << ", gamma " << gamma0);
         Hit hit;
         if (!intersect_triangle(aimed, a, b, c, {}, hit)) continue;
         ++hits;
@@ -96,7 +97,8 @@ TEST_F(Triangle, RespectsTRange) {
 TEST_F(Triangle, ParallelAndDegenerateMiss) {
     Hit hit = sentinel_hit();
     EXPECT_FALSE(intersect_triangle(Ray{Vec3(-1, 0.2, 0), Vec3(1, 0, 0)}, A, B, C, {}, hit));
-    EXPECT_FALSE(intersect_triangle(Ray{Vec3(0.5, 0, 1), Vec3(0, 0, -1)}, A, B, Vec3(2, 0, 0), {}, hit));
+    EXPECT_FALSE(
+        intersect_triangle(Ray{Vec3(0.5, 0, 1), Vec3(0, 0, -1)}, A, B, Vec3(2, 0, 0), {}, hit));
     EXPECT_TRUE(untouched(hit));
 }
 

@@ -25,7 +25,8 @@ BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
 
 // The SAH cost of putting bins [0, k) of `axis` left, computed from scratch, or +inf when a
 // side is empty.
-float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k, const BvhBuildOptions& o) {
+float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k,
+                     const BvhBuildOptions& o) {
     Aabb all, centroids, left, right;
     for (const auto& p : prims) all.grow(p.bounds), centroids.grow(p.centroid);
     std::uint32_t n_left = 0, n_right = 0;
@@ -38,7 +39,8 @@ float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k, co
     }
     if (n_left == 0 || n_right == 0) return std::numeric_limits<float>::infinity();
     return o.traversal_cost +
-           (left.surface_area() * float(n_left) + right.surface_area() * float(n_right)) / all.surface_area();
+           (left.surface_area() * float(n_left) + right.surface_area() * float(n_right)) /
+               all.surface_area();
 }
 
 TEST_F(SahSplitTest, TwoClustersSplitBetweenThem) {
@@ -82,8 +84,10 @@ TEST_F(SahSplitTest, CostIsTheMinimumOverAllBinBoundaries) {
         // The split carries what the partition needs: it must reproduce left_count.
         std::uint32_t left = 0;
         for (const BvhPrimitive& p : prims)
-            left += bin_of(p.centroid[split.axis], split.centroid_lo, split.scale, options.bins) < split.bin;
-        EXPECT_EQ(left, split.left_count) << "trial " << trial << ": centroid_lo and scale do not reproduce the split";
+            left += bin_of(p.centroid[split.axis], split.centroid_lo, split.scale, options.bins) <
+                    split.bin;
+        EXPECT_EQ(left, split.left_count)
+            << "trial " << trial << ": centroid_lo and scale do not reproduce the split";
     }
 }
 
@@ -133,7 +137,8 @@ void expect_valid_tree(const Scene& scene, const BvhBuildOptions& options, const
                 for (const BvhPrimitive& p : input)
                     if (p.id == bvh.primitives[k]) leaf.push_back(p);
             EXPECT_GE(find_sah_split(leaf, 0, leaf.size(), options).cost, float(node.count))
-                << what << ": a leaf of " << node.count << " primitives that a split would make cheaper";
+                << what << ": a leaf of " << node.count
+                << " primitives that a split would make cheaper";
         }
     }
 }
@@ -147,7 +152,8 @@ TEST_F(BuildTest, TreesOverProceduralMeshesAreValid) {
     options.max_leaf_size = 1, options.bins = 2;
     expect_valid_tree(scene_from_mesh(make_torus(30, 12)), options, "torus, 2 bins, leaves of 1");
     options.max_leaf_size = 16, options.bins = 64, options.traversal_cost = 4;
-    expect_valid_tree(scene_from_mesh(make_icosphere(2)), options, "icosphere, 64 bins, leaves of 16");
+    expect_valid_tree(scene_from_mesh(make_icosphere(2)), options,
+                      "icosphere, 64 bins, leaves of 16");
 }
 
 TEST_F(BuildTest, SmallAndEmptyInputs) {
@@ -157,7 +163,8 @@ TEST_F(BuildTest, SmallAndEmptyInputs) {
     for (std::uint32_t n : {1u, 2u, 3u, 5u}) {
         std::vector<BvhPrimitive> prims;
         for (std::uint32_t i = 0; i < n; ++i)
-            prims.push_back(box_primitive({10.0f * float(i), 0, 0}, {10.0f * float(i) + 1, 1, 1}, 100 + i));
+            prims.push_back(
+                box_primitive({10.0f * float(i), 0, 0}, {10.0f * float(i) + 1, 1, 1}, 100 + i));
         BvhBuildOptions options;  // boxes far apart: the SAH splits down to single primitives
         options.max_leaf_size = 1;
         build_bvh(prims, options, bvh);
@@ -204,7 +211,8 @@ TEST_F(BuildTest, DepthIsBoundedOnPathologicalSpacing) {
 TEST_F(BuildTest, TreeIsDeterministic) {
     // A small mesh and one large enough for a builder to use threads (the reference does from
     // 20,000 primitives): the same tree, bit for bit, every time.
-    for (const Scene& scene : {scene_from_mesh(make_terrain(40, 40, 2)), scene_from_mesh(make_icosphere(6))}) {
+    for (const Scene& scene :
+         {scene_from_mesh(make_terrain(40, 40, 2)), scene_from_mesh(make_icosphere(6))}) {
         Bvh a, b;
         build_bvh(bvh_primitives(scene), {}, a);
         build_bvh(bvh_primitives(scene), {}, b);
@@ -227,16 +235,19 @@ TEST_F(BuildTest, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
         const float root = bvh.nodes[0].bounds().surface_area();
         double cost = 0;
         for (const BvhNode& node : bvh.nodes)
-            cost += double(node.bounds().surface_area() / root) * (node.is_leaf() ? double(node.count) : 1.0);
+            cost += double(node.bounds().surface_area() / root) *
+                    (node.is_leaf() ? double(node.count) : 1.0);
         return cost;
     };
-    EXPECT_LT(expected_cost(sah), 0.1 * double(input.size())) << "the SAH tree is barely better than no tree";
+    EXPECT_LT(expected_cost(sah), 0.1 * double(input.size()))
+        << "the SAH tree is barely better than no tree";
     BvhBuildOptions two_bins;
     two_bins.bins = 2;
     Bvh coarse;
     build_bvh(input, two_bins, coarse);
     ASSERT_FALSE(coarse.nodes.empty()) << "build_bvh produced no nodes with 2 bins";
-    EXPECT_LE(expected_cost(sah), expected_cost(coarse)) << "16 bins should do at least as well as 2";
+    EXPECT_LE(expected_cost(sah), expected_cost(coarse))
+        << "16 bins should do at least as well as 2";
 }
 
 }  // namespace

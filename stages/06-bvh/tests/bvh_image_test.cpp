@@ -30,7 +30,8 @@ TEST_F(BvhImage, NodeVisitsHeatMap) {
     EXPECT_LT(darkest, 0.01f) << "the top-left corner looks past everything: it should be black";
     EXPECT_GT(brightest, 2.0f) << "the busiest pixel should be pale yellow";
     const Color corner = heat.pixels[0];
-    EXPECT_LT(corner.r + corner.g + corner.b, 0.01f) << "a ray that misses the root box tests one box";
+    EXPECT_LT(corner.r + corner.g + corner.b, 0.01f)
+        << "a ray that misses the root box tests one box";
 }
 // Bit for bit: the tree only skips work, it never changes what a ray hits.
 TEST_F(BvhImage, SameAsWithoutTheTree) {
@@ -43,7 +44,8 @@ TEST_F(BvhImage, SameAsWithoutTheTree) {
     const rt::Image without = render(scene, RenderMode::Shaded);
     ASSERT_EQ(with.pixels.size(), without.pixels.size());
     std::size_t different = 0;
-    for (std::size_t i = 0; i < with.pixels.size(); ++i) different += with.pixels[i] != without.pixels[i];
+    for (std::size_t i = 0; i < with.pixels.size(); ++i)
+        different += with.pixels[i] != without.pixels[i];
     EXPECT_EQ(different, 0u) << "pixels differ between the BVH and stage 02's loop";
 }
 

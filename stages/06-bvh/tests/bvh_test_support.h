@@ -26,7 +26,9 @@ inline Scene scene_from_mesh(const TriangleMesh& mesh) {
 struct Random {
     std::mt19937_64 engine;
     explicit Random(std::uint64_t seed) : engine(seed) {}
-    Real uniform(Real lo, Real hi) { return lo + (hi - lo) * Real(double(engine() >> 11) * 0x1p-53); }
+    Real uniform(Real lo, Real hi) {
+        return lo + (hi - lo) * Real(double(engine() >> 11) * 0x1p-53);
+    }
     Vec3 point(Real lo, Real hi) {
         const Real x = uniform(lo, hi), y = uniform(lo, hi), z = uniform(lo, hi);
         return {x, y, z};

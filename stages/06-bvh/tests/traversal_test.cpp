@@ -16,7 +16,9 @@ RT_TEST_SUITE(NearestHit);
 RT_TEST_SUITE(AnyHit);
 RT_TEST_SUITE(Visits);
 
-BvhNode unit_node() { return BvhNode{Vec3f(-1), 0, Vec3f(1), 1}; }
+BvhNode unit_node() {
+    return BvhNode{Vec3f(-1), 0, Vec3f(1), 1};
+}
 
 bool slab(const Ray& ray, Interval range, Real& t) {
     return intersect_node(unit_node(), ray, Real(1) / ray.direction, range, t);
@@ -47,10 +49,13 @@ TEST_F(SlabTest, OriginInsideEntersAtRangeStart) {
 
 TEST_F(SlabTest, ParallelToASlab) {
     Real t;
-    EXPECT_TRUE(slab(Ray{{-5, 0.5, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t)) << "inside the y slab";
-    EXPECT_FALSE(slab(Ray{{-5, 1.5, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t)) << "outside the y slab";
+    EXPECT_TRUE(slab(Ray{{-5, 0.5, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t))
+        << "inside the y slab";
+    EXPECT_FALSE(slab(Ray{{-5, 1.5, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t))
+        << "outside the y slab";
     // On the slab's plane with a zero direction component: 0 * inf is NaN; the box is touched.
-    EXPECT_TRUE(slab(Ray{{-5, 1, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t)) << "along the top face";
+    EXPECT_TRUE(slab(Ray{{-5, 1, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t))
+        << "along the top face";
     EXPECT_TRUE(slab(Ray{{-5, -1, -1}, {1, 0, 0}}, Interval{0, kInfinity}, t)) << "along an edge";
 }
 
@@ -92,7 +97,8 @@ struct Comparison {
 // `steps`: how many float steps of t two answers may differ by and both be right. Hard rays
 // (through vertices, along edges) get more: there an intersection test's t is ill-conditioned
 // and may even fall a little outside the triangle's own box.
-void compare_ray(const Scene& scene, const Ray& ray, Interval range, Comparison& c, Real steps = 8) {
+void compare_ray(const Scene& scene, const Ray& ray, Interval range, Comparison& c,
+                 Real steps = 8) {
     Hit brute, bvh;
     const bool b = intersect_nearest(ray, scene, range, brute);
     const bool v = bvh_intersect_nearest(scene, ray, range, bvh);
@@ -111,14 +117,15 @@ void compare_ray(const Scene& scene, const Ray& ray, Interval range, Comparison&
     }
     if (c.mismatches++ == 0) {
         char text[400];
-        std::snprintf(text, sizeof text,
-                      "ray o=(%.9g, %.9g, %.9g) d=(%.9g, %.9g, %.9g) range (%g, %g): loop %s t=%.9g "
-                      "primitive %d; BVH nearest %s t=%.9g primitive %d; any-hit %s",
-                      double(ray.origin.x), double(ray.origin.y), double(ray.origin.z),
-                      double(ray.direction.x), double(ray.direction.y), double(ray.direction.z),
-                      double(range.min), double(range.max), b ? "hit" : "miss", double(brute.t),
-                      brute.primitive, v ? "hit" : "miss", double(bvh.t), bvh.primitive,
-                      any ? "hit" : "miss");
+        std::snprintf(
+            text, sizeof text,
+            "ray o=(%.9g, %.9g, %.9g) d=(%.9g, %.9g, %.9g) range (%g, %g): loop %s t=%.9g "
+            "primitive %d; BVH nearest %s t=%.9g primitive %d; any-hit %s",
+            double(ray.origin.x), double(ray.origin.y), double(ray.origin.z),
+            double(ray.direction.x), double(ray.direction.y), double(ray.direction.z),
+            double(range.min), double(range.max), b ? "hit" : "miss", double(brute.t),
+            brute.primitive, v ? "hit" : "miss", double(bvh.t), bvh.primitive,
+            any ? "hit" : "miss");
         c.first = text;
     }
 }
@@ -142,11 +149,13 @@ void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t see
         compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c);
     }
     for (int i = 0; i < 2000; ++i)  // from inside, in every direction
-        compare_ray(scene, Ray{centre + random.point(-1, 1) * extent * Real(0.3), random.direction()},
+        compare_ray(scene,
+                    Ray{centre + random.point(-1, 1) * extent * Real(0.3), random.direction()},
                     Interval{0, kInfinity}, c);
     for (int i = 0; i < 1000; ++i) {  // short segments, as shadow rays are
         const Vec3 origin = centre + random.point(-1, 1) * extent;
-        compare_ray(scene, Ray{origin, random.direction()}, Interval{0, random.uniform(0, radius * Real(0.3))}, c);
+        compare_ray(scene, Ray{origin, random.direction()},
+                    Interval{0, random.uniform(0, radius * Real(0.3))}, c);
     }
     // Hard rays: aimed exactly at vertices and at edge midpoints, and axis-parallel rays.
     for (std::size_t t = 0; t < scene.triangles.size(); t += 1 + scene.triangles.size() / 500) {
@@ -157,13 +166,15 @@ void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t see
             compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c, 64);
             Vec3 axis_dir(0);
             axis_dir[int(t % 3)] = t % 2 ? 1 : -1;
-            compare_ray(scene, Ray{target - axis_dir * radius * Real(2), axis_dir}, Interval{0, kInfinity}, c, 64);
+            compare_ray(scene, Ray{target - axis_dir * radius * Real(2), axis_dir},
+                        Interval{0, kInfinity}, c, 64);
         }
     }
     EXPECT_EQ(c.mismatches, 0) << name << ": " << c.mismatches << " of " << c.rays
                                << " rays differ from stage 02's loop; first: " << c.first;
     EXPECT_GT(c.hits, c.rays / 4) << name << ": too few rays hit to mean anything";
-    EXPECT_LT(c.ties, c.rays / 10) << name << ": " << c.ties << " rays hit a different primitive at the same t";
+    EXPECT_LT(c.ties, c.rays / 10)
+        << name << ": " << c.ties << " rays hit a different primitive at the same t";
 }
 
 TEST_F(NearestHit, SameAsLoopOnIcosphere) {
@@ -183,7 +194,8 @@ TEST_F(NearestHit, SameAsLoopOnMixedPrimitives) {
     Scene scene = scene_from_mesh(make_torus(24, 12));
     Random random(8);
     for (int i = 0; i < 40; ++i) {
-        scene.spheres.push_back(Sphere{random.point(-2, 2), random.uniform(Real(0.05), Real(0.4)), 0});
+        scene.spheres.push_back(
+            Sphere{random.point(-2, 2), random.uniform(Real(0.05), Real(0.4)), 0});
         const Vec3 lo = random.point(-2, 2);
         scene.boxes.push_back(Box{lo, lo + random.point(Real(0.05), Real(0.5)), 0});
     }
@@ -195,10 +207,12 @@ TEST_F(NearestHit, SameAsLoopOnMixedPrimitives) {
 TEST_F(NearestHit, FillsPrimitiveAndMaterial) {
     Scene scene = scene_from_mesh(make_icosphere(2));
     scene.materials.resize(3);
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) scene.triangles[i].material = int(i % 3);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        scene.triangles[i].material = int(i % 3);
     scene = built(scene);
     Hit hit;
-    ASSERT_TRUE(bvh_intersect_nearest(scene, Ray{{0.1, 0.2, 5}, {0, 0, -1}}, Interval{0, kInfinity}, hit));
+    ASSERT_TRUE(
+        bvh_intersect_nearest(scene, Ray{{0.1, 0.2, 5}, {0, 0, -1}}, Interval{0, kInfinity}, hit));
     ASSERT_TRUE(scene.is_primitive(hit.primitive)) << hit.primitive;
     std::size_t index = 0;
     ASSERT_EQ(Scene::primitive_kind(hit.primitive, index), Scene::Kind::Triangle);
@@ -220,7 +234,8 @@ TEST_F(AnyHit, StopsEarlierThanNearest) {
     Random random(2);
     std::uint64_t any_tests = 0, nearest_tests = 0;
     for (int i = 0; i < 500; ++i) {
-        const Ray ray{random.direction() * Real(3), random.point(-1, 1) * Real(0.2) - random.direction()};
+        const Ray ray{random.direction() * Real(3),
+                      random.point(-1, 1) * Real(0.2) - random.direction()};
         BvhStats a, n;
         Hit hit;
         bvh_intersect_any(scene, ray, Interval{0, kInfinity}, &a);
@@ -235,7 +250,8 @@ TEST_F(NearestHit, NoTreeMeansPlanesOnly) {
     scene.planes.push_back(Plane{{0, 0, 0}, {0, 1, 0}, 0});
     scene.materials.emplace_back();
     Hit hit;
-    EXPECT_TRUE(bvh_intersect_nearest(scene, Ray{{0, 1, 0}, {0, -1, 0}}, Interval{0, kInfinity}, hit));
+    EXPECT_TRUE(
+        bvh_intersect_nearest(scene, Ray{{0, 1, 0}, {0, -1, 0}}, Interval{0, kInfinity}, hit));
     EXPECT_FALSE(bvh_intersect_any(scene, Ray{{0, 1, 0}, {0, 1, 0}}, Interval{0, kInfinity}));
 }
 

@@ -13,8 +13,8 @@
 
 #include "bench/accuracy.h"
 #include "bench/methods.h"
-#include "geometry/offset.h"
 #include "core/source_dir.h"
+#include "geometry/offset.h"
 
 namespace rt::bench {
 namespace {
@@ -38,7 +38,8 @@ AccuracyResults run(std::uint64_t seed, int cases, bool self, const std::string&
 const Row* find(const AccuracyResults& r, const std::string& scenario, const std::string& method,
                 const std::string& precision) {
     for (const Row& row : r.rows)
-        if (row.scenario == scenario && row.method == method && row.precision == precision) return &row;
+        if (row.scenario == scenario && row.method == method && row.precision == precision)
+            return &row;
     return nullptr;
 }
 
@@ -91,7 +92,8 @@ TEST(Offset, RobustOffsetNeverSelfHitsAndKeepsCloseOccluders) {
         if (row.strategy != strategy) continue;
         EXPECT_GT(row.rays, 1000);
         EXPECT_EQ(row.self_hits, 0) << strategy << " " << row.precision << " scale " << row.scale;
-        EXPECT_EQ(row.missed_gap_1e2, 0) << strategy << " " << row.precision << " scale " << row.scale;
+        EXPECT_EQ(row.missed_gap_1e2, 0)
+            << strategy << " " << row.precision << " scale " << row.scale;
         ++checked;
     }
     EXPECT_EQ(checked, 6);  // scales 1, 1e2, 1e4 in float and double
@@ -101,7 +103,9 @@ TEST(Offset, BenchCopyMatchesTheFramework) {
     // The bench runs pbrt's OffsetRayOrigin on float and double (bench/methods.h); the renderer
     // uses framework/geometry/offset.h on rt::Real. Same inputs, same bits.
     std::mt19937_64 rng(7);
-    auto u = [&](double lo, double hi) { return Real(lo + (hi - lo) * double(rng() >> 11) * 0x1p-53); };
+    auto u = [&](double lo, double hi) {
+        return Real(lo + (hi - lo) * double(rng() >> 11) * 0x1p-53);
+    };
     EXPECT_EQ(gamma_bound<Real>(7), rt::gamma_bound(7));
     for (int i = 0; i < 1000; ++i) {
         const double scale = std::pow(10.0, double(i % 5));
@@ -131,7 +135,8 @@ TEST(Report, CountsMatchAFreshRun) {
     // run with the same seed must reproduce them (times differ from run to run and are ignored).
     // RT_ACCURACY_REPORT names another file (to check by hand that a wrong count fails).
     const char* other = std::getenv("RT_ACCURACY_REPORT");
-    std::ifstream in(other && *other ? std::string(other) : (rt::source_dir() / "docs/accuracy.md").string());
+    std::ifstream in(other && *other ? std::string(other)
+                                     : (rt::source_dir() / "docs/accuracy.md").string());
     ASSERT_TRUE(in) << "docs/accuracy.md is missing; regenerate it (see its first lines)";
     std::stringstream text;
     text << in.rdbuf();
