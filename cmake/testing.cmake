@@ -9,6 +9,7 @@ function(rt_add_gtest target)
     TEST_PREFIX "${arg_PREFIX}"
     PROPERTIES TIMEOUT 300
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    NO_PRETTY_VALUES  # names come from the name generators (Graded/Image.../<scene>)
     DISCOVERY_MODE PRE_TEST)
   # CMake 3.25's gtest_discover_tests splits list-valued PROPERTIES (LABELS "a;b" keeps only
   # "a"), so labels are set by a script ctest runs after discovery, from the <target>_TESTS list.

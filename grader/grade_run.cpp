@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "core/parallel_for.h"
 #include "grading.h"
 #include "test_output.h"
 #include "util.h"
@@ -251,18 +252,11 @@ class Runner {
 
 void run_tests_and_scenes(Grading& g) {
     Runner runner(g);
-    std::atomic<std::size_t> next{0};
     const int jobs =
         g.o.jobs > 0 ? g.o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-    auto worker = [&]() {
-        for (std::size_t i; (i = next++) < g.tasks.size();) {
-            if (g_interrupted) break;
-            runner.run(i);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+    parallel_for(g.tasks.size(), jobs, [&](std::size_t i) {
+        if (!g_interrupted) runner.run(i);  // once interrupted, the rest are skipped
+    });
 }
 
 }  // namespace rt::grader

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/not_implemented.h"
+#include "core/parallel_for.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
 #include "render/progress.h"
@@ -147,31 +148,24 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
     const int tile = std::max(1, options.tile_size);
     const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
     const int tile_count = tiles_x * tiles_y;
-    std::atomic<int> next_tile{0};
     ProgressBar progress(tile_count, options.show_progress);
 
-    // Threads take tiles in order from a shared counter; which thread renders a tile does not
-    // change any pixel's arithmetic.
-    auto worker = [&] {
-        for (int t = next_tile.fetch_add(1); t < tile_count; t = next_tile.fetch_add(1)) {
-            const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-            for (int y = y0; y < std::min(y0 + tile, height); ++y)
-                for (int x = x0; x < std::min(x0 + tile, width); ++x) {
-                    const std::uint64_t stubs = stub_calls_this_thread();
-                    PixelResult p = render_pixel(scene, mode, x, y);
-                    const std::size_t i = std::size_t(y) * width + x;
-                    if (stub_calls_this_thread() != stubs) p = {kStubColor, -1};
-                    image.pixels[i] = p.colour;
-                    depth[i] = p.depth;
-                }
-            progress.advance();
-        }
-    };
-    const int threads = std::min(resolve_thread_count(options.threads), std::max(1, tile_count));
-    std::vector<std::jthread> pool;
-    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-    worker();
-    pool.clear();  // joins
+    // Threads take tiles in order from a shared counter (core/parallel_for.h).
+    parallel_for(std::size_t(tile_count), resolve_thread_count(options.threads),
+                 [&](std::size_t i) {
+                     const int t = int(i);
+                     const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+                     for (int y = y0; y < std::min(y0 + tile, height); ++y)
+                         for (int x = x0; x < std::min(x0 + tile, width); ++x) {
+                             const std::uint64_t stubs = stub_calls_this_thread();
+                             PixelResult p = render_pixel(scene, mode, x, y);
+                             const std::size_t i = std::size_t(y) * width + x;
+                             if (stub_calls_this_thread() != stubs) p = {kStubColor, -1};
+                             image.pixels[i] = p.colour;
+                             depth[i] = p.depth;
+                         }
+                     progress.advance();
+                 });
 
     if (mode == RenderMode::Depth) map_depth(depth, image);
     if (mode == RenderMode::BvhVisits) map_visits(depth, image);

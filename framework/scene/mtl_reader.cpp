@@ -38,10 +38,9 @@ std::map<std::string, MtlKeys> check_mtl_text(const std::string& text, const std
     MtlKeys* current = nullptr;
     for_each_line(text, [&](std::size_t line, std::string_view s) {
         if (is_directive(s, "newmtl")) {
-            std::vector<std::string_view> parts = words(s.substr(6));
-            if (parts.size() != 1)
-                complain(line, "\"newmtl\" needs one name without spaces", "write \"newmtl name\"");
-            std::string material(parts[0]);
+            const std::string material(directive_argument(s, 6));
+            if (material.empty())
+                complain(line, "\"newmtl\" needs a name", "write \"newmtl name\"");
             auto [it, added] = first_line.emplace(material, line);
             if (!added)
                 complain(line,
@@ -142,11 +141,15 @@ void read_libraries(const fs::path& obj_file, const std::string& name, const Obj
                      "materials in the scene");
             });
         std::map<std::string, MtlKeys> keys = check_mtl_text(text, name, library.file);
-        std::map<std::string, int> ids;
+        std::map<std::string, int> tinyobj_ids;
         std::vector<tinyobj::material_t> definitions;
         std::string warnings, errors;
         std::istringstream stream(text);
-        tinyobj::LoadMtl(&ids, &definitions, &stream, &warnings, &errors);
+        tinyobj::LoadMtl(&tinyobj_ids, &definitions, &stream, &warnings, &errors);
+        // tinyobjloader keeps a newmtl name's blanks as written; names here are trimmed.
+        std::map<std::string, int> ids;
+        for (std::size_t d = 0; d < definitions.size(); ++d)
+            ids.emplace(std::string(directive_argument(definitions[d].name, 0)), int(d));
         for (std::size_t i = 0; i < materials.size(); ++i) {
             ObjMaterial& m = materials[i];
             if (!wanted[i] || m.defined) continue;  // the first library defining a name wins

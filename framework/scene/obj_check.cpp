@@ -91,6 +91,9 @@ Corner parse_corner(const std::string& name, std::size_t line, std::string_view 
 
 ObjSummary check_obj_text(const std::string& text, const std::string& name) {
     ObjSummary summary;
+    if (is_wide_text(text))
+        fail(name, 0, "is UTF-16 (or UTF-32) text, which OBJ readers cannot read",
+             "save it as UTF-8 or ASCII text");
     for_each_line(text, [&](std::size_t line, std::string_view s) {
         if (is_directive(s, "v")) {
             check_numbers(name, line, s.substr(1), 3, std::size_t(-1), "vertex", "v x y z");
@@ -117,17 +120,17 @@ ObjSummary check_obj_text(const std::string& text, const std::string& name) {
                 summary.libraries.push_back({line, std::string(file)});
         }
         if (s.substr(0, 6) == "usemtl") {
-            std::vector<std::string_view> parts = words(s.substr(6));
-            if (!parts.empty() &&
-                material_index.emplace(std::string(parts[0]), summary.materials.size()).second) {
+            const std::string_view material = directive_argument(s, 6);
+            if (!material.empty() &&
+                material_index.emplace(std::string(material), summary.materials.size()).second) {
                 ObjMaterial m;
-                m.name = std::string(parts[0]);
+                m.name = std::string(material);
                 m.line = line;
                 summary.materials.push_back(m);
             }
             summary.usemtl_before_mtllib |= summary.libraries.empty();
         }
-        if (!is_directive(s, "f")) return;
+        if (!is_directive(s, "f") && s != "f") return;  // a bare "f" is a face of 0 vertices
         std::vector<std::string_view> entries = words(s.substr(1));
         if (entries.size() < 3)
             fail(name, line, "face has " + std::to_string(entries.size()) + " vertices",
@@ -163,6 +166,30 @@ ObjSummary check_obj_text(const std::string& text, const std::string& name) {
 }
 
 // the file, and "l" (polylines) and "p" (points) are not surfaces.
+std::string with_material_tokens(const std::string& text,
+                                 const std::vector<ObjMaterial>& materials) {
+    std::map<std::string_view, std::size_t> index;
+    for (std::size_t i = 0; i < materials.size(); ++i) index.emplace(materials[i].name, i);
+    std::string out;
+    out.reserve(text.size());
+    std::size_t copied = 0;
+    for_each_line(text, [&](std::size_t, std::string_view s) {
+        if (s.substr(0, 6) != "usemtl") return;
+        const auto it = index.find(directive_argument(s, 6));
+        if (it == index.end()) return;
+        const std::size_t at = std::size_t(s.data() - text.data());
+        out.append(text, copied, at - copied);
+        out += "usemtl " + material_token(it->second);
+        copied = at + s.size();
+    });
+    out.append(text, copied, std::string::npos);
+    return out;
+}
+
+std::string material_token(std::size_t index) {
+    return "rt-material-" + std::to_string(index);
+}
+
 void comment_out_unused_lines(std::string& text) {
     std::vector<std::size_t> starts;
     for_each_line(text, [&](std::size_t, std::string_view s) {

@@ -38,4 +38,11 @@ ObjSummary check_obj_text(const std::string& text, const std::string& name);
 // the file, and "l" (polylines) and "p" (points) are not surfaces.
 void comment_out_unused_lines(std::string& text);
 
+// tinyobjloader reads a usemtl name up to the first blank, but names may hold spaces: the text
+// with every "usemtl NAME" replaced by "usemtl rt-material-I" (I: NAME's index in `materials`),
+// line count unchanged, and the token of index I.
+std::string with_material_tokens(const std::string& text,
+                                 const std::vector<ObjMaterial>& materials);
+std::string material_token(std::size_t index);
+
 }  // namespace rt::obj_internal

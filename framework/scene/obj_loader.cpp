@@ -30,11 +30,11 @@ class NamesOnlyMaterialReader : public tinyobj::MaterialReader {
     explicit NamesOnlyMaterialReader(const std::vector<ObjMaterial>& names) : names_(names) {}
     bool operator()(const std::string&, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* ids, std::string*, std::string*) override {
-        for (const ObjMaterial& m : names_) {
-            if (ids->count(m.name)) continue;
-            (*ids)[m.name] = static_cast<int>(materials->size());
+        for (std::size_t i = 0; i < names_.size(); ++i) {
+            const std::string token = material_token(i);  // what with_material_tokens wrote
+            (*ids)[token] = static_cast<int>(materials->size());
             tinyobj::material_t material{};  // zeroed: tinyobjloader copies every field
-            material.name = m.name;
+            material.name = names_[i].name;
             materials->push_back(material);
         }
         return true;
@@ -227,6 +227,7 @@ ObjMesh load_obj(const fs::path& file, const std::string& name, Vec3 scale, Vec3
     if (any_wanted) read_libraries(file, name, summary, mesh.materials, wanted);
 
     comment_out_unused_lines(text);
+    text = with_material_tokens(text, summary.materials);
 
     // usemtl only counts after an mtllib line; add one at the front if the file lacks it (the
     // reader above ignores the .mtl name). Line numbers in tinyobjloader's messages then run one

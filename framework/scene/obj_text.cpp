@@ -91,4 +91,33 @@ Number parse_number(std::string_view word, double& value) {
     return std::isfinite(value) ? Number::Ok : Number::NotFinite;
 }
 
+std::string_view directive_argument(std::string_view s, std::size_t keyword_size) {
+    std::string_view rest = s.substr(std::min(keyword_size, s.size()));
+    const std::size_t first = rest.find_first_not_of(" \t");
+    if (first == std::string_view::npos) return {};
+    const std::size_t last = rest.find_last_not_of(" \t");
+    return rest.substr(first, last - first + 1);
+}
+
+bool is_wide_text(const std::string& text) {
+    const auto byte = [&](std::size_t i) {
+        return i < text.size() ? (unsigned char)text[i] : 0x100u;
+    };
+    if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF)) return true;
+    // Without a mark: ASCII in UTF-16 is a zero byte beside each character, in the first
+    // 16 code units at least (binary files with stray zero bytes do not look like that).
+    const std::size_t units = std::min<std::size_t>(text.size() / 2, 16);
+    if (units < 4) return false;
+    bool little = true, big = true;
+    for (std::size_t u = 0; u < units; ++u) {
+        const unsigned lo = byte(2 * u), hi = byte(2 * u + 1);
+        const auto ascii = [](unsigned c) {
+            return c == '\t' || c == '\n' || c == '\r' || (c >= 32 && c < 127);
+        };
+        little = little && hi == 0 && ascii(lo);
+        big = big && lo == 0 && ascii(hi);
+    }
+    return little || big;
+}
+
 }  // namespace rt::obj_internal

@@ -45,6 +45,14 @@ void for_each_line(const std::string& text, Visit visit) {
 // The blank-separated words of `s`.
 std::vector<std::string_view> words(std::string_view s);
 
+// What follows a directive of `keyword_size` characters, without surrounding blanks: the whole
+// name of "newmtl my glass" or "usemtl my glass" (names may hold spaces, as Blender writes them).
+std::string_view directive_argument(std::string_view s, std::size_t keyword_size);
+
+// True when `text` is UTF-16 or UTF-32 (a byte-order mark, or zero bytes among the first ones),
+// which OBJ and MTL readers cannot read: the file would look empty.
+bool is_wide_text(const std::string& text);
+
 // `line` starts with `keyword` followed by a blank (as tinyobjloader tests it).
 bool is_directive(std::string_view line, std::string_view keyword);
 

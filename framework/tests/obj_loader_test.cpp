@@ -259,6 +259,42 @@ TEST(ObjLoader, MtlMaterialsBecomeSceneMaterials) {
     EXPECT_TRUE(scene.features.reflection && scene.features.refraction && scene.features.emissive);
 }
 
+// UTF-16 without a byte-order mark (the corpus has one with a mark) is named as such, not
+// reported as a file without triangles; binary garbage with zero bytes is not taken for it.
+TEST(ObjLoader, Utf16WithoutMarkIsNamed) {
+    TempDir dir("obj-utf16");
+    std::string wide;
+    for (char c : std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")) wide += {c, '\0'};
+    const fs::path file = dir.write("wide.obj", wide);
+    try {
+        load(file);
+        FAIL() << "a UTF-16 file loaded";
+    } catch (const rt::ObjError& e) {
+        EXPECT_NE(std::string(e.what()).find("is UTF-16"), std::string::npos) << e.what();
+    }
+}
+
+// Material names may hold spaces (Blender writes "newmtl Material.001 copy"): the whole rest of
+// the newmtl and usemtl lines is the name, and two names sharing a first word stay apart.
+TEST(ObjLoader, MaterialNamesWithSpaces) {
+    TempDir dir("obj-mtl-spaces");
+    dir.write("lib.mtl", "newmtl my glass\nKd 0 0 0\nd 0.25\nnewmtl my  red  \nKd 0.8 0.1 0.1\n");
+    dir.write("m.obj",
+              "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+              "usemtl my glass\nf 1 2 3\nusemtl my  red\nf 1 2 3\n");
+    fs::path scene_file =
+        dir.write("scene.json", R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})");
+    rt::Scene scene = rt::load_scene(scene_file);
+    ASSERT_EQ(scene.materials.size(), 3u);  // the default and the two from the library
+    EXPECT_EQ(scene.material_names[1], "m.obj:my glass");
+    EXPECT_EQ(scene.material_names[2], "m.obj:my  red");
+    EXPECT_FLOAT_EQ(scene.materials[1].transmissive.r, 0.75f);
+    EXPECT_FLOAT_EQ(scene.materials[2].diffuse.r, 0.8f);
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    EXPECT_EQ(scene.triangles[0].material, 1);
+    EXPECT_EQ(scene.triangles[1].material, 2);
+}
+
 TEST(ObjLoader, SceneMaterialsNamedAfterTheFileOverrideTheLibrary) {
     TempDir dir("obj-mtl-override");
     dir.write("lib.mtl", "newmtl red\nKd 0.8 0.1 0.1\n");
@@ -310,7 +346,8 @@ TEST(ObjLoader, MalformedLibrariesAreReported) {
         {"Kd 1 1 1\nnewmtl a\n", "\"lib.mtl\" line 1: \"Kd\" comes before any \"newmtl\""},
         {"newmtl a\nnewmtl a\n",
          "\"lib.mtl\" line 2: material \"a\" is defined again (first on line 1)"},
-        {"newmtl a b\n", "\"newmtl\" needs one name without spaces"},
+        // Names may hold spaces (MaterialNamesWithSpaces); a newmtl without one is refused.
+        {"newmtl \nKd 1 1 1\n", "\"lib.mtl\" line 1: \"newmtl\" needs a name"},
         {"newmtl b\n", "mesh \"m.obj\" line 5: usemtl \"a\" is not defined in \"lib.mtl\""},
     };
     for (const auto& [mtl, expected] : cases) {

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "accel/bvh_input.h"
+#include "core/parallel_for.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage06.h"
 
@@ -58,18 +59,8 @@ std::size_t allowed_disagreements(std::size_t rays, double max_fraction) {
 void parallel_for_chunks(std::size_t n, std::size_t chunk, int threads,
                          const std::function<void(std::size_t, std::size_t)>& body) {
     if (chunk == 0) chunk = 1;
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (;;) {
-            const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
-            if (begin >= n) return;
-            body(begin, std::min(n, begin + chunk));
-        }
-    };
-    std::vector<std::thread> helpers;
-    for (int i = 1; i < threads; ++i) helpers.emplace_back(work);
-    work();
-    for (std::thread& t : helpers) t.join();
+    parallel_for((n + chunk - 1) / chunk, threads,
+                 [&](std::size_t c) { body(c * chunk, std::min(n, (c + 1) * chunk)); });
 }
 
 // ---------------------------------------------------------------------------------------------
