@@ -237,4 +237,12 @@ AccuracyResults run_accuracy(const AccuracyConfig& config) {
     return res;
 }
 
+const Row* find(const AccuracyResults& r, const std::string& scenario, const std::string& method,
+                const std::string& precision) {
+    for (const Row& row : r.rows)
+        if (row.scenario == scenario && row.method == method && row.precision == precision)
+            return &row;
+    return nullptr;
+}
+
 }  // namespace rt::bench

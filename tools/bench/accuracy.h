@@ -66,6 +66,10 @@ struct AccuracyResults {
     double seconds = 0;
 };
 
+// The row of (scenario, method, precision), or null.
+const Row* find(const AccuracyResults& r, const std::string& scenario, const std::string& method,
+                const std::string& precision);
+
 // The scenario keys in table order, and one line describing each.
 struct ScenarioInfo {
     std::string key, family, description;

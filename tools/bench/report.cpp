@@ -32,13 +32,6 @@ std::string ulps_cell(double u) {
     return fmt("%.3g", u);
 }
 
-const Row* find(const AccuracyResults& r, const std::string& scenario, const std::string& method,
-                const std::string& precision) {
-    for (const Row& row : r.rows)
-        if (row.scenario == scenario && row.method == method && row.precision == precision)
-            return &row;
-    return nullptr;
-}
 const SelfRow* find_self(const AccuracyResults& r, const std::string& strategy,
                          const std::string& precision, double scale) {
     for (const SelfRow& row : r.self)

@@ -35,14 +35,6 @@ AccuracyResults run(std::uint64_t seed, int cases, bool self, const std::string&
     return run_accuracy(c);
 }
 
-const Row* find(const AccuracyResults& r, const std::string& scenario, const std::string& method,
-                const std::string& precision) {
-    for (const Row& row : r.rows)
-        if (row.scenario == scenario && row.method == method && row.precision == precision)
-            return &row;
-    return nullptr;
-}
-
 constexpr std::uint64_t kSeed = 1;
 constexpr int kCases = 10000;
 
