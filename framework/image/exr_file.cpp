@@ -51,6 +51,13 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
 
 DecodedImage read_exr(const std::filesystem::path& file) {
     DecodedImage out;
+    // OpenEXR sizes its line-offset table from the header before we see it: a damaged header
+    // claiming a huge image must be refused by OpenEXR's own check first.
+    static const bool limited = [] {
+        Imf::Header::setMaxImageSize(int(kMaxSide), int(kMaxSide));
+        return true;
+    }();
+    (void)limited;
     try {
         Imf::InputFile in(file.c_str());
         const Imath::Box2i window = in.header().dataWindow();

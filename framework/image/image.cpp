@@ -43,6 +43,9 @@ enum class Format { Png, Exr, Other };
 Format format_of(const std::filesystem::path& file) {
     if (!std::filesystem::is_regular_file(file))
         throw ImageError(file.string() + ": error: no such image file; check the path");
+    std::error_code ec;
+    if (std::filesystem::file_size(file, ec) == 0 && !ec)
+        throw ImageError(file.string() + ": error: the image file is empty; re-export it");
     unsigned char magic[8] = {};
     std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(magic), sizeof magic);
     static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -51,7 +54,8 @@ Format format_of(const std::filesystem::path& file) {
     if (std::memcmp(magic, kExr, 4) == 0) return Format::Exr;
     const std::string ext = file.extension().string();
     if (ext == ".png" || ext == ".exr")
-        throw ImageError(file.string() + ": error: not a " + ext.substr(1) +
+        throw ImageError(file.string() +
+                         ": error: " + (ext == ".png" ? "not a PNG" : "not an EXR") +
                          " file (its first bytes are wrong); the file is damaged or misnamed: "
                          "re-export it");
     return Format::Other;

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/source_dir.h"
+#include "core/split_mix64.h"
 #include "image/compare.h"
 #include "image/image.h"
 
@@ -196,6 +198,68 @@ TEST(ImageFiles, RadianceHdrIsReadThroughOpenImageIO) {
     EXPECT_NEAR(image.at(0, 0).g, 0.5f, 0.01f);
     EXPECT_NEAR(image.at(0, 0).b, 0.25f, 0.01f);
     EXPECT_NEAR(image.at(1, 0).g, 2048.0f, 20.0f);  // 128 * 2^4
+}
+
+// Every file of framework/tests/bad_images (expected.txt: file | part of the message) gives one
+// line naming the file and what is wrong, never a crash or a huge allocation.
+TEST(ImageFiles, DamagedFilesGiveOneLineErrors) {
+    const auto dir = source_dir() / "framework/tests/bad_images";
+    std::ifstream list(dir / "expected.txt");
+    ASSERT_TRUE(list) << dir / "expected.txt";
+    int checked = 0;
+    for (std::string line; std::getline(list, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::size_t bar = line.find(" | ");
+        ASSERT_NE(bar, std::string::npos) << line;
+        const std::string name = line.substr(0, bar), part = line.substr(bar + 3);
+        SCOPED_TRACE(name);
+        try {
+            read_image(dir / name);
+            ADD_FAILURE() << "read without an error";
+        } catch (const ImageError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(name + ": error: "), std::string::npos) << what;
+            EXPECT_NE(what.find(part), std::string::npos) << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 13);
+}
+
+// Damaged headers of valid PNG and EXR files (bytes flipped, files cut short), 400 of each at a
+// fixed seed: every one is read or refused with an ImageError; none crashes.
+TEST(ImageFiles, FuzzedHeadersAreReadOrRefused) {
+    Image image(5, 3, Color(0.25f, 0.5f, 1.0f));
+    for (const char* name : {"fuzz-seed.png", "fuzz-seed.exr"}) {
+        const auto seed_file = temp_file(name);
+        write_image(image, seed_file);
+        std::string bytes;
+        {
+            std::ifstream in(seed_file, std::ios::binary);
+            bytes.assign(std::istreambuf_iterator<char>(in), {});
+        }
+        SplitMix64 random(std::string(name).ends_with(".png") ? 1 : 2);
+        int refused = 0;
+        for (int round = 0; round < 400; ++round) {
+            std::string damaged = bytes;
+            const std::size_t header = std::min<std::size_t>(damaged.size(), 96);
+            const int flips = 1 + int(random.next() % 4);
+            for (int f = 0; f < flips; ++f)
+                damaged[random.next() % header] = char(random.next() & 0xff);
+            if (random.next() % 4 == 0) damaged.resize(random.next() % damaged.size());
+            const auto file = temp_file(std::string("fuzz-") + name);
+            std::ofstream(file, std::ios::binary) << damaged;
+            try {
+                const Image back = read_image(file);
+                EXPECT_GT(back.width, 0);
+            } catch (const ImageError& e) {
+                ++refused;
+                EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+            }
+        }
+        EXPECT_GT(refused, 0) << name << ": the damage should be noticed at least once";
+    }
 }
 
 TEST(Compare, IdenticalImagesMatch) {
