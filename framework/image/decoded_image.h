@@ -20,10 +20,16 @@ struct DecodedImage {
     int channels = 0;       // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
     bool floating = false;  // float file (EXR, HDR): values are linear light
     int bits = 8;           // 8 or 16 for integer files
-    // Row-major, channels interleaved, row 0 at the top. Integer files are scaled to [0, 1];
-    // `bytes` also holds the raw values of 8-bit files (exact, for Image8).
+    // Row-major, channels interleaved, row 0 at the top: one of the two is filled. `bytes` holds
+    // an 8-bit file's samples as stored (exact, for Image8); `values` everything else, integer
+    // files scaled to [0, 1].
     std::vector<float> values;
     std::vector<std::uint8_t> bytes;
+
+    // Sample i scaled to [0, 1] for integer files, linear for float files.
+    float value(std::size_t i) const {
+        return bytes.empty() ? values[i] : float(bytes[i]) / 255.0f;
+    }
 };
 
 // The one-line error for a size that is zero, negative or over the limits above, or "".

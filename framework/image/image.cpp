@@ -141,7 +141,7 @@ Image read_image(const std::filesystem::path& file, Encoding integer_encoding) {
     for (std::size_t i = 0; i < out.pixels.size(); ++i) {
         float v[3];
         for (std::size_t c = 0; c < 3; ++c) {
-            const float x = in.values[i * std::size_t(in.channels) + (in.channels >= 3 ? c : 0)];
+            const float x = in.value(i * std::size_t(in.channels) + (in.channels >= 3 ? c : 0));
             v[c] = decode_srgb ? srgb_to_linear(x) : x;
         }
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) ++bad;

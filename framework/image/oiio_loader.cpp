@@ -75,11 +75,6 @@ DecodedImage read_with_oiio(const fs::path& file) {
     out.bits = raw.bits;
     out.values.assign(raw.values, raw.values + std::size_t(raw.width) * raw.height * raw.channels);
     p.free(&raw);
-    if (!out.floating && out.bits == 8) {
-        out.bytes.resize(out.values.size());
-        for (std::size_t i = 0; i < out.values.size(); ++i)
-            out.bytes[i] = std::uint8_t(out.values[i] * 255.0f + 0.5f);
-    }
     return out;
 }
 

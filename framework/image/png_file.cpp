@@ -150,12 +150,11 @@ DecodedImage read_png(const std::filesystem::path& file) {
     out.channels = h.channels;
     out.bits = h.bits;
     const std::size_t count = std::size_t(out.width) * out.height * std::size_t(out.channels);
-    out.values.resize(count);
     if (out.bits == 16) {
+        out.values.resize(count);
         const auto* wide = reinterpret_cast<const std::uint16_t*>(raw.data());
         for (std::size_t i = 0; i < count; ++i) out.values[i] = float(wide[i]) / 65535.0f;
     } else {
-        for (std::size_t i = 0; i < count; ++i) out.values[i] = float(raw[i]) / 255.0f;
         raw.resize(count);
         out.bytes = std::move(raw);
     }
