@@ -32,8 +32,14 @@ function(rt_stage_tests number target)
   target_link_libraries(${target} PRIVATE rt_testing GTest::gtest_main ${arg_LIBRARIES})
   if(arg_SCENE_IMAGES)
     get_filename_component(stage_folder ${CMAKE_CURRENT_SOURCE_DIR} NAME)
-    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/framework/testing/scene_image_test.cpp)
-    target_compile_definitions(${target} PRIVATE RT_STAGE="${stage_folder}")
+    set(stage_source ${CMAKE_CURRENT_BINARY_DIR}/${target}_image_stage.cpp)
+    file(CONFIGURE OUTPUT ${stage_source} CONTENT
+      "// Written by rt_stage_tests: the stage whose graded scenes scene_image_test.cpp runs.\n\
+namespace rt::testing {\n\
+extern const char* const kImageTestStage;\n\
+const char* const kImageTestStage = \"${stage_folder}\";\n\
+}  // namespace rt::testing\n")
+    target_sources(${target} PRIVATE ${stage_source} $<TARGET_OBJECTS:rt_scene_images>)
     target_link_libraries(${target} PRIVATE nlohmann_json::nlohmann_json)
   endif()
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
