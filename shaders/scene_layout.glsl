@@ -14,7 +14,11 @@ struct Material {
     vec4 emissive;
     vec4 reflective;
     vec4 transmissive_ior;
+    ivec4 maps;               // texture of the diffuse, specular, emissive, normal slot (-1: none)
+    vec4 map_transform[4];    // per slot: xy scale, zw offset
 };
+struct Texture { ivec4 kind_image_filter_wrap; vec4 a_srgb; vec4 b_scale; };
+struct TextureImage { ivec4 width_height_first; };
 struct Light { vec4 position_kind; vec4 direction; vec4 intensity; vec4 attenuation; };
 struct BvhNode { vec3 min; uint first; vec3 max; uint count; };
 
@@ -29,3 +33,6 @@ layout(std430, binding = 7) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 8) readonly buffer Lights { Light lights[]; };
 layout(std430, binding = 9) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
 layout(std430, binding = 10) readonly buffer BvhPrimitives { uint bvh_primitives[]; };
+layout(std430, binding = 11) readonly buffer Textures { Texture textures[]; };
+layout(std430, binding = 12) readonly buffer TextureImages { TextureImage texture_images[]; };
+layout(std430, binding = 13) readonly buffer Texels { vec4 texels[]; };

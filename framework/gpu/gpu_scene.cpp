@@ -22,9 +22,30 @@ GpuScene pack_scene(const Scene& scene) {
     for (const Vec3& p : scene.vertices) g.positions.push_back(v4(p, 1));
     for (const Vec3& n : scene.normals) g.normals.push_back(v4(n));
     for (const Vec2& uv : scene.uvs) g.uvs.push_back(glm::vec2(float(uv.x), float(uv.y)));
-    for (const Material& m : scene.materials)
-        g.materials.push_back({v4(m.ambient), v4(m.diffuse), v4(m.specular, m.shininess),
-                               v4(m.emissive), v4(m.reflective), v4(m.transmissive, m.ior)});
+    for (const Material& m : scene.materials) {
+        GpuMaterial gm{v4(m.ambient),
+                       v4(m.diffuse),
+                       v4(m.specular, m.shininess),
+                       v4(m.emissive),
+                       v4(m.reflective),
+                       v4(m.transmissive, m.ior),
+                       glm::ivec4(-1),
+                       {}};
+        const TextureSlot* slots[4] = {&m.diffuse_map, &m.specular_map, &m.emissive_map,
+                                       &m.normal_map};
+        for (int i = 0; i < 4; ++i) {
+            gm.maps[i] = slots[i]->texture;
+            gm.map_transform[i] = glm::vec4(slots[i]->scale[0], slots[i]->scale[1],
+                                            slots[i]->offset[0], slots[i]->offset[1]);
+        }
+        g.materials.push_back(gm);
+    }
+    for (const Texture& t : scene.textures)
+        g.textures.push_back({glm::ivec4(int(t.kind), t.image, int(t.filter), int(t.wrap)),
+                              glm::vec4(t.a, t.srgb ? 1.0f : 0.0f), glm::vec4(t.b, t.scale)});
+    for (const TextureImage& i : scene.texture_images)
+        g.texture_images.push_back({glm::ivec4(i.width, i.height, int(i.first), 0)});
+    for (const Color& c : scene.texels) g.texels.push_back(glm::vec4(c, 1));
     for (const Light& l : scene.lights)
         g.lights.push_back({v4(l.position, int_bits(l.kind == LightKind::Point ? 0 : 1)),
                             v4(l.direction), v4(l.intensity), v4(l.attenuation)});

@@ -31,6 +31,9 @@ enum Binding : int {
     kLights = 8,
     kBvhNodes = 9,
     kBvhPrimitives = 10,
+    kTextures = 11,
+    kTextureImages = 12,
+    kTexels = 13,
 };
 
 struct alignas(16) GpuSphere {
@@ -55,6 +58,16 @@ struct alignas(16) GpuMaterial {
     glm::vec4 emissive;
     glm::vec4 reflective;
     glm::vec4 transmissive_ior;  // xyz k_t, w index of refraction
+    glm::ivec4 maps;             // texture of the diffuse, specular, emissive, normal slot (-1)
+    glm::vec4 map_transform[4];  // per slot: xy scale, zw offset
+};
+struct alignas(16) GpuTexture {
+    glm::ivec4 kind_image_filter_wrap;  // TextureKind, image index, TextureFilter, TextureWrap
+    glm::vec4 a_srgb;                   // xyz colour a, w 1 when the texels are sRGB-encoded
+    glm::vec4 b_scale;                  // xyz colour b, w scale
+};
+struct alignas(16) GpuTextureImage {
+    glm::ivec4 width_height_first;  // x width, y height, z first texel, w unused
 };
 struct alignas(16) GpuLight {
     glm::vec4 position_kind;  // xyz position, w kind (int bits: 0 point, 1 directional)
@@ -71,7 +84,9 @@ RT_GPU_CHECK(GpuSphere, 32);
 RT_GPU_CHECK(GpuPlane, 32);
 RT_GPU_CHECK(GpuBox, 32);
 RT_GPU_CHECK(GpuTriangle, 16);
-RT_GPU_CHECK(GpuMaterial, 96);
+RT_GPU_CHECK(GpuMaterial, 176);
+RT_GPU_CHECK(GpuTexture, 48);
+RT_GPU_CHECK(GpuTextureImage, 16);
 RT_GPU_CHECK(GpuLight, 64);
 RT_GPU_CHECK(BvhNode, 32);
 static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::vec2) == 8, "GLSL vec4 / vec2 sizes");
@@ -97,6 +112,9 @@ struct GpuScene {
     std::vector<GpuLight> lights;
     std::vector<BvhNode> bvh_nodes;
     std::vector<std::uint32_t> bvh_primitives;
+    std::vector<GpuTexture> textures;
+    std::vector<GpuTextureImage> texture_images;
+    std::vector<glm::vec4> texels;  // w 1
 };
 
 // Every array of `scene`, converted to float and packed as above.

@@ -70,6 +70,8 @@ void Scene::update_features() {
         f.emissive |= nonzero(m.emissive);
         f.reflection |= nonzero(m.reflective);
         f.refraction |= nonzero(m.transmissive);
+        f.textures |= m.diffuse_map.used() || m.specular_map.used() || m.emissive_map.used();
+        f.normal_maps |= m.normal_map.used();
     }
     for (const Light& l : lights) {
         f.point_lights |= l.kind == LightKind::Point;
@@ -94,6 +96,10 @@ std::string Features::describe() const {
     s += " |";
     add(point_lights, "point"), add(directional_lights, "directional");
     add(shadows, "shadows");
+    if (textures || normal_maps) {
+        s += " |";
+        add(textures, "textures"), add(normal_maps, "normal-maps");
+    }
     return s;
 }
 

@@ -13,6 +13,7 @@
 
 #include "accel/bvh.h"
 #include "camera/camera.h"
+#include "scene/texture.h"
 
 namespace rt {
 
@@ -51,6 +52,9 @@ struct Material {
     Color reflective{0};    // k_r
     Color transmissive{0};  // k_t
     float ior = 1.5f;       // index of refraction of the inside
+    // Stage 07: textures multiply the colour they map (k_d and k_a by diffuse_map, k_s by
+    // specular_map, k_e by emissive_map); normal_map bends the shading normal.
+    TextureSlot diffuse_map, specular_map, emissive_map, normal_map;
 };
 
 enum class LightKind { Point, Directional };
@@ -75,7 +79,9 @@ struct Features {
     bool ambient = false, diffuse = false, specular = false, emissive = false;
     bool reflection = false, refraction = false;
     bool point_lights = false, directional_lights = false;
-    bool shadows = false;  // the scene asks for shadows and has lights
+    bool shadows = false;      // the scene asks for shadows and has lights
+    bool textures = false;     // a material has a diffuse, specular or emissive map (stage 07)
+    bool normal_maps = false;  // a material has a normal map (stage 07)
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
 };
@@ -116,6 +122,12 @@ struct Scene {
     // struct the GPU receives is plain data.
     std::vector<std::string> material_names;
     std::vector<Light> lights;
+    // Stage 07's texture table (scene/texture.h): textures referenced by material slots, the
+    // images they read and all image texels in one array. texture_names parallels `textures`.
+    std::vector<Texture> textures;
+    std::vector<std::string> texture_names;
+    std::vector<TextureImage> texture_images;
+    std::vector<Color> texels;
 
     Features features;  // filled by update_features()
     Bvh bvh;            // built by build_acceleration when accelerator == Bvh
@@ -153,6 +165,11 @@ struct Scene {
     }
 
     void update_features();
+    // The texels of texture_images[i] (no bounds check).
+    TextureView texture_view(std::size_t image, bool srgb) const {
+        const TextureImage& t = texture_images[image];
+        return TextureView{texels.data() + t.first, t.width, t.height, srgb};
+    }
 };
 
 // The unit shading normal of triangle `triangle` at barycentric coordinates `barycentric_uv`

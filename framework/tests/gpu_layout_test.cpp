@@ -47,6 +47,16 @@ const std::vector<Member>& members() {
         RT_MEMBER(GpuMaterial, "materials", reflective, "acc += materials[0].reflective;"),
         RT_MEMBER(GpuMaterial, "materials", transmissive_ior,
                   "acc += materials[0].transmissive_ior;"),
+        RT_MEMBER(GpuMaterial, "materials", maps, "acc += vec4(materials[0].maps);"),
+        Member{"materials[0].map_transform[0]", offsetof(GpuMaterial, map_transform),
+               sizeof(GpuMaterial), "acc += materials[0].map_transform[3];"},
+        RT_MEMBER(GpuTexture, "textures", kind_image_filter_wrap,
+                  "acc += vec4(textures[0].kind_image_filter_wrap);"),
+        RT_MEMBER(GpuTexture, "textures", a_srgb, "acc += textures[0].a_srgb;"),
+        RT_MEMBER(GpuTexture, "textures", b_scale, "acc += textures[0].b_scale;"),
+        RT_MEMBER(GpuTextureImage, "texture_images", width_height_first,
+                  "acc += vec4(texture_images[0].width_height_first);"),
+        Member{"texels[0]", 0, sizeof(glm::vec4), "acc += texels[0];"},
         RT_MEMBER(GpuLight, "lights", position_kind, "acc += lights[0].position_kind;"),
         RT_MEMBER(GpuLight, "lights", direction, "acc += lights[0].direction;"),
         RT_MEMBER(GpuLight, "lights", intensity, "acc += lights[0].intensity;"),
@@ -150,6 +160,24 @@ TEST(GpuLayout, PackKeepsEveryValue) {
     EXPECT_EQ(g.materials[0].transmissive_ior.w, 1.33f);
     EXPECT_EQ(g.lights[0].position_kind.w, int_bits(1));
     EXPECT_EQ(g.lights[0].intensity, glm::vec4(2, 2, 2, 0));
+    EXPECT_EQ(g.materials[0].maps, glm::ivec4(-1));
+
+    // Textures: the slots, the table, the images and the texels.
+    scene.materials[0].normal_map = TextureSlot{0, {2, 3}, {0.5f, 0.25f}};
+    Texture t;
+    t.kind = TextureKind::Image, t.image = 0, t.wrap = TextureWrap::Mirror, t.srgb = true;
+    scene.textures.push_back(t);
+    scene.texture_images.push_back(TextureImage{2, 1, 0});
+    scene.texels = {Color(0.25f), Color(1, 0, 0)};
+    const GpuScene h = pack_scene(scene);
+    EXPECT_EQ(h.materials[0].maps, glm::ivec4(-1, -1, -1, 0));
+    EXPECT_EQ(h.materials[0].map_transform[3], glm::vec4(2, 3, 0.5f, 0.25f));
+    EXPECT_EQ(h.textures[0].kind_image_filter_wrap,
+              glm::ivec4(int(TextureKind::Image), 0, int(TextureFilter::Bilinear),
+                         int(TextureWrap::Mirror)));
+    EXPECT_EQ(h.textures[0].a_srgb.w, 1.0f);
+    EXPECT_EQ(h.texture_images[0].width_height_first, glm::ivec4(2, 1, 0, 0));
+    EXPECT_EQ(h.texels[1], glm::vec4(1, 0, 0, 1));
 }
 
 }  // namespace
