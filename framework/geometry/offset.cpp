@@ -35,7 +35,6 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     switch (scene.primitive_kind(hit.primitive, i)) {
         case Scene::Kind::Sphere: {
             const Sphere& s = scene.spheres[i];
-            sp.texcoord = hit.uv;
             const Vec3 from_centre = hit.point - s.center;
             const Real length = glm::length(from_centre);
             if (length > 0) sp.point = s.center + from_centre * (s.radius / length);
@@ -55,7 +54,6 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
         case Scene::Kind::Triangle: {
             Vec3 a, b, c;
             scene.triangle_vertices(i, a, b, c);
-            sp.texcoord = surface_uv(scene, i, hit.uv);
             const Real b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1 - b1 - b2;
             sp.point = b0 * a + b1 * b + b2 * c;
             sp.error = gamma_bound(7) * (abs3(b0 * a) + abs3(b1 * b) + abs3(b2 * c));

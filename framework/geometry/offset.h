@@ -20,9 +20,9 @@ struct SurfacePoint {
     bool front_face = true;
     int primitive = -1;
     int material = -1;
-    // Texture coordinates (stage 07): sphere longitude/latitude as stage 02 computes them,
-    // triangle vertex uvs interpolated ((0, 0) without any), (0, 0) for planes and boxes for now.
-    // Distinct from Hit::uv, which holds the barycentrics for triangles.
+    // Texture coordinates: filled with stage 07's mappings by the texturing step
+    // (render/texturing.h) when the scene has textures, (0, 0) otherwise. Distinct from Hit::uv,
+    // which holds the barycentrics for triangles.
     Vec2 texcoord{0};
 };
 

@@ -175,9 +175,11 @@ std::vector<std::size_t> weld(const tinyobj::attrib_t& attrib,
         }
         if (has_uvs) {
             std::size_t k = std::size_t(t);
+            // OBJ's vt counts v upwards from the bottom of the image; ours counts rows from the
+            // top (docs/conventions.md#texture-coordinates), so v flips here, once.
             mesh.uvs.push_back(
                 t < 0 ? Vec2(0)
-                      : Vec2(Real(attrib.texcoords[2 * k]), Real(attrib.texcoords[2 * k + 1])));
+                      : Vec2(Real(attrib.texcoords[2 * k]), 1 - Real(attrib.texcoords[2 * k + 1])));
         }
     }
     return position_of;

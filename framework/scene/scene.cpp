@@ -56,6 +56,12 @@ std::size_t Scene::primitive_count() const {
     return spheres.size() + planes.size() + triangles.size() + boxes.size();
 }
 
+int Scene::add_texture_image(int width, int height, const std::vector<Color>& pixels) {
+    texture_images.push_back(TextureImage{width, height, std::uint32_t(texels.size())});
+    texels.insert(texels.end(), pixels.begin(), pixels.end());
+    return int(texture_images.size()) - 1;
+}
+
 void Scene::update_features() {
     Features f;
     f.spheres = !spheres.empty();
@@ -126,11 +132,13 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
     return glm::dot(n, geometric) < 0 ? -n : n;
 }
 
-Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv) {
-    if (scene.uvs.empty()) return Vec2(0);
+void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2& b, Vec2& c) {
+    if (scene.uvs.empty()) {
+        a = Vec2(0, 0), b = Vec2(1, 0), c = Vec2(0, 1);
+        return;
+    }
     const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;
-    const Real beta = barycentric_uv.x, gamma = barycentric_uv.y, alpha = 1 - beta - gamma;
-    return alpha * scene.uvs[v[0]] + beta * scene.uvs[v[1]] + gamma * scene.uvs[v[2]];
+    a = scene.uvs[v[0]], b = scene.uvs[v[1]], c = scene.uvs[v[2]];
 }
 
 const char* to_string(RenderMode mode) {

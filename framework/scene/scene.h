@@ -112,7 +112,7 @@ struct Scene {
     // to `vertices`. A vertex without a normal (single triangles, meshes without normals) holds
     // the zero vector, which shading_normal reads as "use the geometric normal"; a vertex
     // without texture coordinates holds uv (0, 0). Read them through shading_normal and
-    // surface_uv below.
+    // triangle_vertex_uvs below.
     std::vector<Vec3> normals;
     std::vector<Vec2> uvs;
     std::vector<Triangle> triangles;
@@ -150,6 +150,9 @@ struct Scene {
     // True when `id` names a primitive of this scene.
     bool is_primitive(int id) const;
     std::size_t primitive_count() const;
+    // Appends an image's texels to the texture table (texture_images, texels); returns its index.
+    // `pixels`: width * height values, row 0 at the top.
+    int add_texture_image(int width, int height, const std::vector<Color>& pixels);
     // Appends a material and its name; returns its index.
     int add_material(const Material& material, std::string name = "");
     // The name of material `m`, or "" (unnamed, or out of range).
@@ -180,9 +183,11 @@ struct Scene {
 // without vertex normals.
 Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv);
 
-// The texture coordinates of triangle `triangle` at barycentric coordinates `barycentric_uv`:
-// its vertex uvs interpolated, (0, 0) where the scene has none (docs/scene-format.md).
-Vec2 surface_uv(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv);
+// The texture coordinates of the three corners of triangle `triangle`
+// (docs/conventions.md#texture-coordinates): its vertex uvs; when no surface of the scene has
+// any, (0, 0), (1, 0) and (0, 1), so that a texture spans each triangle; a vertex without uvs
+// in a scene that has some holds (0, 0).
+void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2& b, Vec2& c);
 
 // What a ray that hits nothing sees, looking along `direction` (unit or not): today the scene's
 // one background colour; the hook for stage 08's environment maps.

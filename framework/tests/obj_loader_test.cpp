@@ -1,5 +1,5 @@
 // Tests of the OBJ/MTL reader (framework/scene/obj_loader.h) and of the per-vertex shading data
-// it feeds (Scene::normals, Scene::uvs, shading_normal, surface_uv): damaged files give one
+// it feeds (Scene::normals, Scene::uvs, shading_normal, triangle_vertex_uvs): damaged files give one
 // clear line naming the file and line, normals and uvs survive OBJ's separate index streams,
 // MTL materials become scene materials, and no input crashes the reader.
 #include <gtest/gtest.h>
@@ -129,11 +129,12 @@ TEST(ObjLoader, NormalsAndUvsGetOneVertexPerCombination) {
     ASSERT_EQ(mesh.uvs.size(), mesh.vertices.size());
     for (std::size_t i = 0; i < 2; ++i)
         for (std::uint32_t v : mesh.triangles[i]) {
-            EXPECT_EQ(mesh.uvs[v], rt::Vec2(mesh.vertices[v].x, mesh.vertices[v].y));
+            EXPECT_EQ(mesh.uvs[v],
+                      rt::Vec2(mesh.vertices[v].x, 1 - mesh.vertices[v].y));  // v flipped
             EXPECT_EQ(mesh.normals[v], rt::Vec3(0, 0, 1));
         }
     const auto& last = mesh.triangles[2];
-    EXPECT_EQ(mesh.uvs[last[0]], rt::Vec2(0.5f, 0.25f));
+    EXPECT_EQ(mesh.uvs[last[0]], rt::Vec2(0.5f, 0.75f));
     EXPECT_EQ(mesh.normals[last[0]], rt::Vec3(0, 0, 1));  // (0, 0, 2) normalised
     EXPECT_NE(last[0], mesh.triangles[0][0]);
     EXPECT_EQ(mesh.vertices[last[0]], mesh.vertices[mesh.triangles[0][0]]);
@@ -367,17 +368,24 @@ TEST(SceneShading, ShadingNormalInterpolatesOrFallsBack) {
     scene.triangles[0].v = {0, 1, 2};
     const rt::Vec2 centre(1.0f / 3, 1.0f / 3);
     EXPECT_EQ(rt::shading_normal(scene, 0, centre), rt::Vec3(0, 0, 1));  // no normals: geometric
-    EXPECT_EQ(rt::surface_uv(scene, 0, centre), rt::Vec2(0));
+    rt::Vec2 ua, ub, uc;  // no uvs in the scene: the texture spans the triangle
+    rt::triangle_vertex_uvs(scene, 0, ua, ub, uc);
+    EXPECT_EQ(ua, rt::Vec2(0, 0));
+    EXPECT_EQ(ub, rt::Vec2(1, 0));
+    EXPECT_EQ(uc, rt::Vec2(0, 1));
     scene.normals = {
         glm::normalize(rt::Vec3(-1, 0, 1)), glm::normalize(rt::Vec3(1, 0, 1)), {0, 0, 1}};
-    scene.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    scene.uvs = {{0.5f, 0}, {1, 0.25f}, {0, 1}};
     rt::Vec3 at_b = rt::shading_normal(scene, 0, {1, 0});  // beta = 1: vertex b
     EXPECT_NEAR(at_b.x, scene.normals[1].x, 1e-6);
     EXPECT_NEAR(at_b.z, scene.normals[1].z, 1e-6);
     rt::Vec3 halfway = rt::shading_normal(scene, 0, {0.5f, 0});  // between a and b: straight up
     EXPECT_NEAR(halfway.x, 0, 1e-6);
     EXPECT_NEAR(glm::length(halfway), 1, 1e-6);
-    EXPECT_EQ(rt::surface_uv(scene, 0, {0.25f, 0.5f}), rt::Vec2(0.25f, 0.5f));
+    rt::triangle_vertex_uvs(scene, 0, ua, ub, uc);
+    EXPECT_EQ(ua, scene.uvs[0]);
+    EXPECT_EQ(ub, scene.uvs[1]);
+    EXPECT_EQ(uc, scene.uvs[2]);
     // Normals on the other side of the winding are turned to the geometric side.
     for (rt::Vec3& n : scene.normals) n = -n;
     EXPECT_GT(rt::shading_normal(scene, 0, centre).z, 0);
