@@ -25,13 +25,18 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",        "image",     "render",   "background",
-                      "ambient_light", "materials", "surfaces", "lights"};
+const Order kTopLevel{"camera",   "image",     "render",   "background", "ambient_light",
+                      "textures", "materials", "surfaces", "lights"};
 const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
 const Order kImage{"width", "height"};
 const Order kRender{"mode", "max_depth", "shadows", "fresnel", "accelerator"};
-const Order kMaterial{"name",      "ambient",    "diffuse",      "specular", "emissive",
-                      "shininess", "reflective", "transmissive", "ior"};
+const Order kMaterial{"name",         "ambient",      "diffuse",      "specular", "emissive",
+                      "shininess",    "reflective",   "transmissive", "ior",      "diffuse_map",
+                      "specular_map", "emissive_map", "normal_map"};
+const Order kTexture{"name",   "image",  "checker", "checker_3d",
+                     "marble", "filter", "wrap",    "colour_space"};
+const Order kTextureSlot{"texture", "scale", "offset"};
+const Order kProcedural{"a", "b", "scale"};
 const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
                      "min",  "max",    "tiles",     "file",     "procedural", "triangles",
                      "seed", "scale",  "translate", "material", "materials"};
@@ -60,6 +65,13 @@ std::string number_text(const json& v) {
     return canonical_number(v.get<double>());
 }
 
+// The key order of an object nested under `key` (texture slots, procedural textures).
+const Order& order_of_member(const std::string& key) {
+    if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
+    if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
+    return kNone;
+}
+
 // A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself.
 void write_inline(const json& v, const Order& order, std::string& out) {
     switch (v.type()) {
@@ -70,7 +82,7 @@ void write_inline(const json& v, const Order& order, std::string& out) {
                 if (!first) out += ", ";
                 first = false;
                 out += string_text(key) + ": ";
-                write_inline(v.at(key), kNone, out);
+                write_inline(v.at(key), order_of_member(key), out);
             }
             out += '}';
             break;
@@ -107,6 +119,7 @@ const Order& order_of_section(const std::string& key) {
 }
 
 const Order& order_of_items(const std::string& key) {
+    if (key == "textures") return kTexture;
     if (key == "materials") return kMaterial;
     if (key == "surfaces") return kSurface;
     if (key == "lights") return kLight;

@@ -19,8 +19,8 @@ Scene SceneSections::load() {
         fail_value("", "the top level must be a JSON object, got " + describe(root),
                    "wrap the scene in { ... }");
     check_keys(root, "", "the scene",
-               {"camera", "image", "render", "background", "ambient_light", "materials", "surfaces",
-                "lights"});
+               {"camera", "image", "render", "background", "ambient_light", "textures", "materials",
+                "surfaces", "lights"});
     scene_.source = name_;
     read_image(root);
     read_render(root);
@@ -28,7 +28,9 @@ Scene SceneSections::load() {
     if (const json* v = member(root, "ambient_light"))
         scene_.ambient_light = color(*v, "/ambient_light");
     read_camera(root);
+    read_textures(root);
     read_materials(root);
+    finish_textures();
     read_surfaces(root);
     read_lights(root);
     scene_.update_features();

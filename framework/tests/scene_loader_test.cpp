@@ -369,6 +369,10 @@ const BadScene kBadScenesTable[] = {
      R"("triangles" must be between 1 and 20000000, got 1e9)"},
     {"60-unknown-accelerator", 2, 48, R"(unknown "accelerator" "kdtree"; use "none" or "bvh")"},
     {"61-heat-map-without-bvh", 2, 22, R"(add "accelerator": "bvh" to "render")"},
+    {"62-unknown-texture", 3, 49, R"(unknown texture "brick"; did you mean "bricks"?)"},
+    {"63-missing-texture-image", 2, 42, R"(no_such_wood.png: error: no such image file)"},
+    {"64-texture-with-two-sources", 2, 16, R"(a texture has one source, got "image" and "marble")"},
+    {"65-unknown-wrap-mode", 2, 115, R"(unknown "wrap" "tile"; use "repeat", "clamp" or "mirror")"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};
