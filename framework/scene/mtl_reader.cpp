@@ -158,7 +158,28 @@ void read_libraries(const fs::path& obj_file, const std::string& name, const Obj
             if (id == ids.end() || given == keys.end() || id->second < 0 ||
                 std::size_t(id->second) >= definitions.size())
                 continue;
-            m.material = to_scene_material(definitions[std::size_t(id->second)], given->second);
+            const tinyobj::material_t& d = definitions[std::size_t(id->second)];
+            m.material = to_scene_material(d, given->second);
+            // map_Bump usually holds a normal map in the files this framework meets (and is the
+            // only bump key many exporters write); norm wins when both are given.
+            const bool norm = !d.normal_texname.empty();
+            const std::pair<const std::string*, const tinyobj::texture_option_t*> maps[4] = {
+                {&d.diffuse_texname, &d.diffuse_texopt},
+                {&d.specular_texname, &d.specular_texopt},
+                {&d.emissive_texname, &d.emissive_texopt},
+                {norm ? &d.normal_texname : &d.bump_texname,
+                 norm ? &d.normal_texopt : &d.bump_texopt}};
+            for (int k = 0; k < 4; ++k) {
+                if (maps[k].first->empty()) continue;
+                ObjTextureMap& out = m.maps[k];
+                out.file = fs::path(*maps[k].first);
+                if (!out.file.is_absolute()) out.file = path.parent_path() / out.file;
+                out.scale[0] = float(maps[k].second->scale[0]);
+                out.scale[1] = float(maps[k].second->scale[1]);
+                out.offset[0] = float(maps[k].second->origin_offset[0]);
+                out.offset[1] = float(maps[k].second->origin_offset[1]);
+                out.clamp = maps[k].second->clamp;
+            }
             m.defined = true;
         }
     }

@@ -27,11 +27,22 @@ class ObjError : public std::runtime_error {
 };
 
 // One `usemtl` name of an OBJ file.
+// An image map of an MTL material (map_Kd, map_Ks, map_Ke, norm or map_Bump) and its options.
+struct ObjTextureMap {
+    std::filesystem::path file;  // resolved against the .mtl file's folder; empty: no map
+    float scale[2] = {1, 1};     // -s u v
+    float offset[2] = {0, 0};    // -o u v
+    bool clamp = false;          // -clamp on
+};
+
 struct ObjMaterial {
     std::string name;      // as written after usemtl
     std::size_t line = 0;  // the OBJ line of its first usemtl
     bool defined = false;  // found in one of the file's mtllib libraries (and then read)
     Material material;     // its MTL definition when `defined` (`material.name` left empty)
+    // Its maps, in the order of Material's slots: diffuse, specular, emissive, normal. The scene
+    // loader turns them into textures (docs/scene-format.md#materials-from-mtl-files).
+    ObjTextureMap maps[4];
 };
 
 struct ObjMesh {

@@ -163,7 +163,15 @@ void SceneSections::read_obj_mesh(const json& file_value, const std::string& fil
             id = *known;
         } else if (m.defined) {
             const std::string made = file + ":" + m.name;
-            id = scene_.add_material(m.material, made);
+            Material material_made = m.material;
+            TextureSlot Material::*slots[4] = {&Material::diffuse_map, &Material::specular_map,
+                                               &Material::emissive_map, &Material::normal_map};
+            for (int k = 0; k < 4; ++k)
+                if (!m.maps[k].file.empty())
+                    material_made.*slots[k] = mtl_texture_slot(
+                        m.maps[k], k == 3, file + ":" + m.maps[k].file.filename().string(),
+                        file_pointer);
+            id = scene_.add_material(material_made, made);
             material_ids_.emplace(made, id);
         }
         by_obj_material.push_back(id);

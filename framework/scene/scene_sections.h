@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/obj_loader.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 
@@ -50,6 +51,11 @@ class SceneSections : public SceneReader {
     void read_texture(const json& object, const std::string& pointer);
     // A material's texture slot: a texture name, or {"texture", "scale", "offset"}.
     TextureSlot texture_slot(const json& value, const std::string& pointer);
+    // The texture image of `path`, read once however many textures use it; errors at `pointer`.
+    int texture_image(const std::filesystem::path& path, const std::string& pointer);
+    // A slot for an MTL map (colour, or `data` for normal maps), its texture named `name`.
+    TextureSlot mtl_texture_slot(const ObjTextureMap& map, bool data, const std::string& name,
+                                 const std::string& pointer);
     // After the materials: which image textures are sRGB-decoded (by file type and use).
     void finish_textures();
 

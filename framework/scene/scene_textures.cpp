@@ -72,21 +72,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         if (file.empty()) fail_value(at("image"), "\"image\" is empty", "name an image file");
         const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base_dir_ / file;
         t.kind = TextureKind::Image;
-        auto cached = image_ids_.find(path.lexically_normal().string());
-        if (cached != image_ids_.end()) {
-            t.image = cached->second;
-        } else {
-            Image image;
-            try {
-                // As stored: decoding sRGB is the lookup's job (stage 07), per texel.
-                image = ::rt::read_image(path, Encoding::Data);
-            } catch (const ImageError& e) {
-                // The image reader's message names the file and the fix already.
-                fail_value(at("image"), e.what());
-            }
-            t.image = scene_.add_texture_image(image.width, image.height, image.pixels);
-            image_ids_.emplace(path.lexically_normal().string(), t.image);
-        }
+        t.image = texture_image(path, at("image"));
         texture_float_file_.push_back(is_float_file(path));
     } else {
         const char* kind = given[0].c_str();
@@ -121,6 +107,48 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
     texture_colour_space_.push_back(colour_space);
     scene_.textures.push_back(t);
     scene_.texture_names.push_back(name);
+}
+
+int SceneSections::texture_image(const fs::path& path, const std::string& pointer) {
+    const std::string key = path.lexically_normal().string();
+    if (auto cached = image_ids_.find(key); cached != image_ids_.end()) return cached->second;
+    Image image;
+    try {
+        // As stored: decoding sRGB is the lookup's job (stage 07), per texel.
+        image = ::rt::read_image(path, Encoding::Data);
+    } catch (const ImageError& e) {
+        fail_value(pointer, e.what());  // the reader's message names the file and the fix
+    }
+    const int index = scene_.add_texture_image(image.width, image.height, image.pixels);
+    image_ids_.emplace(key, index);
+    return index;
+}
+
+TextureSlot SceneSections::mtl_texture_slot(const ObjTextureMap& map, bool data,
+                                            const std::string& name, const std::string& pointer) {
+    // One texture per (file, wrap, use); named after the file as the OBJ's materials are.
+    const std::string texture_name = name + (data ? " (data)" : "") + (map.clamp ? " (clamp)" : "");
+    int index = -1;
+    if (auto it = texture_ids_.find(texture_name); it != texture_ids_.end()) {
+        index = it->second;
+    } else {
+        Texture t;
+        t.kind = TextureKind::Image;
+        t.image = texture_image(map.file, pointer);
+        t.wrap = map.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
+        t.srgb = !data && !is_float_file(map.file);
+        index = int(scene_.textures.size());
+        scene_.textures.push_back(t);
+        scene_.texture_names.push_back(texture_name);
+        texture_colour_space_.push_back(t.srgb ? 1 : 0);
+        texture_float_file_.push_back(is_float_file(map.file));
+        texture_ids_.emplace(texture_name, index);
+    }
+    TextureSlot slot;
+    slot.texture = index;
+    slot.scale[0] = map.scale[0], slot.scale[1] = map.scale[1];
+    slot.offset[0] = map.offset[0], slot.offset[1] = map.offset[1];
+    return slot;
 }
 
 TextureSlot SceneSections::texture_slot(const json& value, const std::string& pointer) {

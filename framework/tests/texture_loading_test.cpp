@@ -1,0 +1,115 @@
+// The texture table as scene files fill it (docs/scene-format.md#textures): images read once,
+// stored as in the file, sRGB decided by file type and use, slots with scale and offset, and
+// the maps of OBJ/MTL materials (map_Kd, map_Ks, map_Ke, norm, map_Bump with -s, -o, -clamp).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "image/image.h"
+#include "scene/scene_loader.h"
+#include "temp_dir.h"
+
+namespace rt {
+namespace {
+
+using testing::TempDir;
+namespace fs = std::filesystem;
+
+// A 2 x 1 PNG: stored values (64, 128, 255) and (0, 0, 0).
+void write_two_texel_png(const fs::path& file) {
+    Image8 image;
+    image.width = 2, image.height = 1;
+    image.data = {64, 128, 255, 0, 0, 0};
+    write_image8(image, file);
+}
+
+TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
+    TempDir dir("textures");
+    write_two_texel_png(dir.path() / "t.png");
+    const fs::path scene = dir.write("s.json", R"({
+  "textures": [
+    {"name": "colour", "image": "t.png", "filter": "nearest", "wrap": "mirror"},
+    {"name": "bumps", "image": "t.png"},
+    {"name": "forced", "image": "t.png", "colour_space": "linear"},
+    {"name": "checks", "checker": {"a": [1, 0, 0]}}
+  ],
+  "materials": [
+    {"name": "m", "diffuse_map": {"texture": "colour", "scale": [4, 2], "offset": [0.5, 0]},
+     "normal_map": "bumps", "emissive_map": "checks"}
+  ],
+  "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]
+})");
+    const Scene s = load_scene(scene);
+    ASSERT_EQ(s.textures.size(), 4u);
+    EXPECT_EQ(s.texture_images.size(), 1u) << "one file, read once";
+    ASSERT_EQ(s.texels.size(), 2u);
+    EXPECT_NEAR(s.texels[0].r, 64.0f / 255, 1e-6f) << "texels as stored (encoded), not decoded";
+    EXPECT_EQ(s.textures[0].filter, TextureFilter::Nearest);
+    EXPECT_EQ(s.textures[0].wrap, TextureWrap::Mirror);
+    EXPECT_TRUE(s.textures[0].srgb) << "a colour texture from a PNG is sRGB";
+    EXPECT_FALSE(s.textures[1].srgb) << "a texture used as a normal map is data";
+    EXPECT_FALSE(s.textures[2].srgb) << "\"colour_space\": \"linear\" wins";
+    EXPECT_EQ(s.textures[3].kind, TextureKind::Checker2D);
+    EXPECT_EQ(s.textures[3].a, Color(1, 0, 0));
+    EXPECT_EQ(s.textures[3].b, Color(1)) << "b defaults to white";
+    const Material& m = s.materials[0];
+    EXPECT_EQ(m.diffuse_map.texture, 0);
+    EXPECT_EQ(m.diffuse_map.scale[0], 4.0f);
+    EXPECT_EQ(m.diffuse_map.offset[0], 0.5f);
+    EXPECT_EQ(m.normal_map.texture, 1);
+    EXPECT_EQ(m.emissive_map.texture, 3);
+    EXPECT_FALSE(m.specular_map.used());
+    EXPECT_TRUE(s.features.textures);
+    EXPECT_TRUE(s.features.normal_maps);
+}
+
+TEST(TextureLoading, MtlMapsBecomeTextures) {
+    TempDir dir("mtl-maps");
+    fs::create_directories(dir.path() / "maps");
+    write_two_texel_png(dir.path() / "maps" / "wood.png");
+    write_two_texel_png(dir.path() / "maps" / "n.png");
+    dir.write("m.mtl",
+              "newmtl wood\nKd 1 1 1\nmap_Kd -s 2 3 1 -o 0.25 0 0 maps/wood.png\n"
+              "map_Bump -clamp on maps/n.png\n"
+              "newmtl plain\nKd 0.5 0.5 0.5\n");
+    dir.write("m.obj",
+              "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+              "usemtl wood\nf 1/1 2/2 3/3\nusemtl plain\nf 1/1 3/3 2/2\n");
+    const fs::path scene =
+        dir.write("s.json", R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})");
+    const Scene s = load_scene(scene);
+    ASSERT_EQ(s.textures.size(), 2u);
+    const Material* wood = nullptr;
+    for (std::size_t i = 0; i < s.materials.size(); ++i)
+        if (s.material_name(int(i)) == "m.obj:wood") wood = &s.materials[i];
+    ASSERT_NE(wood, nullptr);
+    ASSERT_TRUE(wood->diffuse_map.used());
+    EXPECT_EQ(wood->diffuse_map.scale[0], 2.0f);
+    EXPECT_EQ(wood->diffuse_map.scale[1], 3.0f);
+    EXPECT_EQ(wood->diffuse_map.offset[0], 0.25f);
+    EXPECT_TRUE(s.textures[std::size_t(wood->diffuse_map.texture)].srgb) << "map_Kd is colour";
+    ASSERT_TRUE(wood->normal_map.used()) << "map_Bump is read as a normal map";
+    const Texture& normal = s.textures[std::size_t(wood->normal_map.texture)];
+    EXPECT_FALSE(normal.srgb) << "a normal map is data";
+    EXPECT_EQ(normal.wrap, TextureWrap::Clamp) << "-clamp on";
+    EXPECT_TRUE(s.features.textures);
+}
+
+TEST(TextureLoading, AMissingMapIsOneLineNamingTheFile) {
+    TempDir dir("mtl-missing");
+    dir.write("m.mtl", "newmtl wood\nmap_Kd nowhere.png\n");
+    dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\n");
+    const fs::path scene =
+        dir.write("s.json", R"({"surfaces": [{"type": "mesh", "file": "m.obj"}]})");
+    try {
+        load_scene(scene);
+        FAIL() << "a missing map_Kd file must be an error";
+    } catch (const std::exception& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("nowhere.png"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    }
+}
+
+}  // namespace
+}  // namespace rt
