@@ -133,8 +133,9 @@ Image8 read_image8(const std::filesystem::path& file) {
     return out;
 }
 
-Image read_image(const std::filesystem::path& file, Encoding integer_encoding) {
+Image read_image(const std::filesystem::path& file, Encoding integer_encoding, ImageInfo* info) {
     const files::DecodedImage in = decode(file);
+    if (info) *info = ImageInfo{in.channels, in.floating};
     const bool decode_srgb = !in.floating && integer_encoding == Encoding::Srgb;
     Image out(in.width, in.height);
     std::size_t bad = 0;

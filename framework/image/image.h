@@ -69,6 +69,12 @@ enum class Encoding { Srgb, Data };
 // EXR, 8- or 16-bit PNG, and what OpenImageIO reads (HDR, JPEG, TIFF, ...), as linear float RGB
 // (grey is spread to three channels, alpha dropped). Throws ImageError naming the file for a
 // missing or unreadable file, an impossible size, or NaN/infinite pixels.
-Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb);
+// What the file held, for callers that care (a normal map needs three channels).
+struct ImageInfo {
+    int channels = 0;       // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+    bool floating = false;  // a float file (EXR, HDR): linear values
+};
+Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb,
+                 ImageInfo* info = nullptr);
 
 }  // namespace rt

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
@@ -87,9 +88,11 @@ class SceneSections : public SceneReader {
     Scene scene_;
     std::map<std::string, int> material_ids_;
     std::map<std::string, int> texture_ids_;
-    std::map<std::string, int> image_ids_;   // texture images by normalised path, read once
-    std::vector<int> texture_colour_space_;  // per texture: -1 unsaid, 0 linear, 1 sRGB
-    std::vector<bool> texture_float_file_;   // per texture: reads an EXR or HDR file
+    std::map<std::string, int> image_ids_;      // texture images by normalised path, read once
+    std::vector<int> texture_colour_space_;     // per texture: -1 unsaid, 0 linear, 1 sRGB
+    std::vector<bool> texture_float_file_;      // per texture: reads an EXR or HDR file
+    std::vector<std::string> texture_pointer_;  // per texture: where errors about it point
+    std::vector<ImageInfo> image_info_;         // per texture image: channels, float or not
 };
 
 }  // namespace rt::scene_internal

@@ -16,14 +16,6 @@ namespace fs = std::filesystem;
 constexpr const char* kTextureExample =
     R"({"name": "bricks", "image": "bricks.png"} or {"name": "checks", "checker": {"a": [1, 1, 1], "b": [0, 0, 0]}})";
 
-// Float files hold linear values; integer files (PNG, JPEG, ...) hold encoded ones.
-bool is_float_file(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".exr" || ext == ".hdr";
-}
-
 }  // namespace
 
 void SceneSections::read_textures(const json& root) {
@@ -73,7 +65,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base_dir_ / file;
         t.kind = TextureKind::Image;
         t.image = texture_image(path, at("image"));
-        texture_float_file_.push_back(is_float_file(path));
+        texture_float_file_.push_back(image_info_[std::size_t(t.image)].floating);
     } else {
         const char* kind = given[0].c_str();
         const json& p = object[kind];
@@ -93,6 +85,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
                 *s, JsonPositions::child(pp, "scale"), [](double d) { return d > 0; }, "> 0",
                 "the size of a cube or vein in world units, e.g. 0.5"));
         texture_float_file_.push_back(false);
+        texture_pointer_.push_back(pointer);
         for (const char* key : {"filter", "wrap", "colour_space"})
             if (member(object, key))
                 fail_key(at(key), std::string("\"") + key + "\" applies to image textures only",
@@ -104,6 +97,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         t.wrap = TextureWrap(choice(*v, at("wrap"), {"repeat", "clamp", "mirror"}));
     if (const json* v = member(object, "colour_space"))
         colour_space = int(choice(*v, at("colour_space"), {"linear", "srgb"}));
+    if (t.kind == TextureKind::Image) texture_pointer_.push_back(at("image"));
     texture_colour_space_.push_back(colour_space);
     scene_.textures.push_back(t);
     scene_.texture_names.push_back(name);
@@ -113,14 +107,16 @@ int SceneSections::texture_image(const fs::path& path, const std::string& pointe
     const std::string key = path.lexically_normal().string();
     if (auto cached = image_ids_.find(key); cached != image_ids_.end()) return cached->second;
     Image image;
+    ImageInfo info;
     try {
         // As stored: decoding sRGB is the lookup's job (stage 07), per texel.
-        image = ::rt::read_image(path, Encoding::Data);
+        image = ::rt::read_image(path, Encoding::Data, &info);
     } catch (const ImageError& e) {
         fail_value(pointer, e.what());  // the reader's message names the file and the fix
     }
     const int index = scene_.add_texture_image(image.width, image.height, image.pixels);
     image_ids_.emplace(key, index);
+    image_info_.push_back(info);
     return index;
 }
 
@@ -136,12 +132,17 @@ TextureSlot SceneSections::mtl_texture_slot(const ObjTextureMap& map, bool data,
         t.kind = TextureKind::Image;
         t.image = texture_image(map.file, pointer);
         t.wrap = map.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
-        t.srgb = !data && !is_float_file(map.file);
+        if (data && image_info_[std::size_t(t.image)].channels < 3)
+            fail_value(pointer, map.file.string() + " is a normal map (norm or map_Bump) but has " +
+                                    std::to_string(image_info_[std::size_t(t.image)].channels) +
+                                    " channel(s); a normal map needs RGB");
+        t.srgb = !data && !image_info_[std::size_t(t.image)].floating;
         index = int(scene_.textures.size());
         scene_.textures.push_back(t);
         scene_.texture_names.push_back(texture_name);
         texture_colour_space_.push_back(t.srgb ? 1 : 0);
-        texture_float_file_.push_back(is_float_file(map.file));
+        texture_pointer_.push_back(pointer);
+        texture_float_file_.push_back(image_info_[std::size_t(t.image)].floating);
         texture_ids_.emplace(texture_name, index);
     }
     TextureSlot slot;
@@ -196,6 +197,13 @@ void SceneSections::finish_textures() {
     for (std::size_t i = 0; i < scene_.textures.size(); ++i) {
         Texture& t = scene_.textures[i];
         if (t.kind != TextureKind::Image) continue;
+        const int channels = image_info_[std::size_t(t.image)].channels;
+        if (normal_map[i] && channels < 3)
+            fail_value(texture_pointer_[i],
+                       "texture " + quote(scene_.texture_names[i]) +
+                           " is a normal map but its image has " + std::to_string(channels) +
+                           (channels == 1 ? " channel (grey)" : " channels (grey and alpha)"),
+                       "a normal map needs RGB (x, y, z in red, green, blue)");
         const int said = texture_colour_space_[i];
         t.srgb = said >= 0 ? said == 1 : !texture_float_file_[i] && !normal_map[i];
     }

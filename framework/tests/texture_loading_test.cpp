@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
 
+#include "core/source_dir.h"
 #include "image/image.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
@@ -108,6 +111,59 @@ TEST(TextureLoading, AMissingMapIsOneLineNamingTheFile) {
         const std::string message = e.what();
         EXPECT_NE(message.find("nowhere.png"), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    }
+}
+
+// Every damaged image of the committed corpus (framework/tests/bad_images), used as a texture:
+// one line naming the scene file, the line and column of "image", and the image file.
+TEST(TextureLoading, DamagedImagesGiveOneLineErrorsAtTheTexture) {
+    TempDir dir("bad-textures");
+    const fs::path corpus = source_dir() / "framework" / "tests" / "bad_images";
+    int checked = 0;
+    for (const auto& entry : fs::directory_iterator(corpus)) {
+        if (entry.path().extension() == ".txt") continue;
+        const std::string image = entry.path().string();
+        const fs::path scene = dir.write(
+            "s.json", "{\n  \"textures\": [{\"name\": \"t\", \"image\": \"" + image +
+                          "\"}],\n  \"surfaces\": [{\"type\": \"sphere\", \"radius\": 1}]\n}\n");
+        try {
+            load_scene(scene);
+            ADD_FAILURE() << image << " loaded as a texture without an error";
+        } catch (const std::exception& e) {
+            const std::string message = e.what();
+            EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+            EXPECT_NE(message.find("s.json:2:"), std::string::npos)
+                << "names the scene file and the line of \"image\": " << message;
+            EXPECT_NE(message.find(entry.path().filename().string()), std::string::npos)
+                << "names the image: " << message;
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 10) << "the corpus should hold at least 10 kinds of damage";
+}
+
+TEST(TextureLoading, AGreyNormalMapIsRefused) {
+    TempDir dir("grey-normal");
+    // A 1 x 1 one-channel (grey) PNG, by hand: the framework writes RGB only.
+    const unsigned char png[] = {
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+        0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x00, 0x00, 0x00,
+        0x00, 0x3a, 0x7e, 0x9b, 0x55, 0x00, 0x00, 0x00, 0x0a, 0x49, 0x44, 0x41, 0x54, 0x78,
+        0x9c, 0x63, 0x68, 0x00, 0x00, 0x00, 0x82, 0x00, 0x81, 0x77, 0xcd, 0x72, 0xb6, 0x00,
+        0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    std::ofstream(dir.path() / "grey.png", std::ios::binary)
+        .write(reinterpret_cast<const char*>(png), sizeof png);
+    const fs::path scene = dir.write("s.json", R"({
+  "textures": [{"name": "bumps", "image": "grey.png"}],
+  "materials": [{"name": "m", "normal_map": "bumps"}],
+  "surfaces": [{"type": "sphere", "radius": 1}]
+})");
+    try {
+        load_scene(scene);
+        FAIL() << "a one-channel normal map must be refused";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("needs RGB"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("s.json:2:"), std::string::npos) << e.what();
     }
 }
 
