@@ -25,7 +25,7 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",        "image",     "render",   "background",
+const Order kTopLevel{"camera",        "image",     "render",   "background", "environment",
                       "ambient_light", "materials", "surfaces", "lights"};
 const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
 const Order kImage{"width", "height"};
@@ -35,6 +35,8 @@ const Order kMaterial{"name",      "ambient",    "diffuse",      "specular", "em
 const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
                      "min",  "max",    "tiles",     "file",     "procedural", "triangles",
                      "seed", "scale",  "translate", "material", "materials"};
+const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
+const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
 const Order kLight{"type", "position", "direction", "intensity", "attenuation"};
 const Order kNone{};
 
@@ -60,6 +62,11 @@ std::string number_text(const json& v) {
     return canonical_number(v.get<double>());
 }
 
+// The order of the keys inside the object of `key` within a one-line value ("cube" faces).
+const Order& order_of_member(const std::string& key) {
+    return key == "cube" ? kCubeFaces : kNone;
+}
+
 // A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself.
 void write_inline(const json& v, const Order& order, std::string& out) {
     switch (v.type()) {
@@ -70,7 +77,7 @@ void write_inline(const json& v, const Order& order, std::string& out) {
                 if (!first) out += ", ";
                 first = false;
                 out += string_text(key) + ": ";
-                write_inline(v.at(key), kNone, out);
+                write_inline(v.at(key), order_of_member(key), out);
             }
             out += '}';
             break;
@@ -103,6 +110,7 @@ const Order& order_of_section(const std::string& key) {
     if (key == "camera") return kCamera;
     if (key == "image") return kImage;
     if (key == "render") return kRender;
+    if (key == "environment") return kEnvironment;
     return kNone;
 }
 

@@ -1,6 +1,7 @@
-// The sections of a scene file (camera, image, render, materials, surfaces, meshes, lights), each
-// read into a Scene on top of the typed reader. The readers live in scene_settings.cpp,
-// scene_materials.cpp, scene_surfaces.cpp and scene_meshes.cpp.
+// The sections of a scene file (camera, image, render, environment, materials, surfaces, meshes,
+// lights), each read into a Scene on top of the typed reader. The readers live in
+// scene_settings.cpp, scene_environment.cpp, scene_materials.cpp, scene_surfaces.cpp and
+// scene_meshes.cpp.
 #pragma once
 
 #include <array>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 
@@ -36,6 +38,11 @@ class SceneSections : public SceneReader {
     void read_camera(const json& root);
     void read_lights(const json& root);
     void read_light(const json& object, const std::string& pointer);
+
+    // scene_environment.cpp
+    void read_environment(const json& root);
+    // The image file named by the string at `pointer` (relative to base_dir_), linear.
+    Image read_environment_image(const json& value, const std::string& pointer);
 
     // scene_materials.cpp
     void read_materials(const json& root);
