@@ -369,6 +369,14 @@ const BadScene kBadScenesTable[] = {
      R"("triangles" must be between 1 and 20000000, got 1e9)"},
     {"60-unknown-accelerator", 2, 48, R"(unknown "accelerator" "kdtree"; use "none" or "bvh")"},
     {"61-heat-map-without-bvh", 2, 22, R"(add "accelerator": "bvh" to "render")"},
+    {"70-environment-missing-image", 2, 30,
+     R"(environment image "no-such-sky.exr": no such image file; check the path)"},
+    {"71-environment-unknown-key", 2, 79,
+     R"(unknown key "rotate" in "environment"; did you mean "rotate_y"?)"},
+    {"72-cube-face-not-square", 2, 34, R"(cube face "px" is 2x1, not square)"},
+    {"73-cube-faces-differ-in-size", 2, 329, R"(cube face "nz" is 16x16 but "px" is 32x32)"},
+    {"74-cube-missing-face", 2, 27, R"(a cube map needs "nz")"},
+    {"75-environment-latlong-and-cube", 2, 79, R"(an environment is either "latlong" or "cube")"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};
