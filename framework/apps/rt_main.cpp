@@ -49,8 +49,9 @@ struct RenderArgs {
     bool quiet = false;
     std::string debug_pixel, overlay_pixel;  // "X,Y"
     std::string debug_format = "text";
-    std::string accelerator;  // "", "none" or "bvh": overrides the scene's
-    double yaw_degrees = 0;   // turns the camera about its up axis (the grader's unseen views)
+    std::string accelerator;     // "", "none" or "bvh": overrides the scene's
+    std::string texture_filter;  // "", "nearest" or "bilinear": overrides every image texture's
+    double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
 };
 
 // Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal.
@@ -88,6 +89,9 @@ int run_render(const RenderArgs& args) {
     if (args.yaw_degrees != 0) turn_camera(scene.camera, args.yaw_degrees);
     if (!args.accelerator.empty())
         scene.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
+    if (!args.texture_filter.empty())
+        scene.texture_lookup =
+            args.texture_filter == "nearest" ? TextureLookup::Nearest : TextureLookup::Bilinear;
     const RenderMode mode = args.mode.value_or(scene.mode);
     const AccelerationReport accel = build_acceleration(scene);
     if (accel.built && !args.quiet)
@@ -264,6 +268,11 @@ int main(int argc, char** argv) {
         ->add_option("--accelerator", render_args.accelerator,
                      "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
         ->check(CLI::IsMember({"none", "bvh"}));
+    render_cmd
+        ->add_option("--texture-filter", render_args.texture_filter,
+                     "filter every image texture nearest or bilinear (stage 07), whatever the "
+                     "scene says")
+        ->check(CLI::IsMember({"nearest", "bilinear"}));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--height", render_args.height, "override the image height")

@@ -6,6 +6,7 @@
 #include "render/accelerate.h"
 #include "render/background.h"
 #include "render/camera_ray.h"
+#include "render/texturing.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage03.h"
 #include "stage_api/stage04.h"
@@ -90,9 +91,9 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
     // A scene built in code may lack materials; an out-of-range index must not crash.
     static const Material kDefaultMaterial;
     const bool known = hit.material >= 0 && std::size_t(hit.material) < scene.materials.size();
-    const Material& material =
+    const Material& scene_material =
         known ? scene.materials[std::size_t(hit.material)] : kDefaultMaterial;
-    const SurfacePoint at = surface_point(scene, f.ray, hit);
+    SurfacePoint at = surface_point(scene, f.ray, hit);
     const Vec3 to_viewer = -glm::normalize(f.ray.direction);
     // Meshes with vertex normals are lit with the interpolated normal (smooth shading); ray
     // origins and mirror directions keep the geometric one, which the offsets are built on.
@@ -104,6 +105,15 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
             if (smooth != Vec3(0)) lighting_normal = hit.front_face ? smooth : -smooth;
         }
     }
+    // Stage 07: the material as its maps colour it here, and the normal-mapped normal. Only
+    // textured scenes pay for the copy (and run stage 07 code).
+    Material textured;
+    const bool has_maps = scene.features.textures || scene.features.normal_maps;
+    if (has_maps) {
+        textured = scene_material;
+        apply_textures(scene, hit, at, to_viewer, textured, lighting_normal);
+    }
+    const Material& material = has_maps ? textured : scene_material;
 
     Color local;
     if (scene.features.shadows) {

@@ -105,6 +105,7 @@ struct Scene {
     bool shadows = false;    // trace shadow rays (stage 04)
     bool fresnel = false;    // Schlick-weighted reflection on transmissive materials (stage 05)
     Accelerator accelerator = Accelerator::None;
+    TextureLookup texture_lookup = TextureLookup::PerTexture;  // stage 07
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;

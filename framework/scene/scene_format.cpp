@@ -25,13 +25,18 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",        "image",     "render",   "background", "environment",
-                      "ambient_light", "materials", "surfaces", "lights"};
+const Order kTopLevel{"camera",        "image",    "render",    "background", "environment",
+                      "ambient_light", "textures", "materials", "surfaces",   "lights"};
 const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
 const Order kImage{"width", "height"};
 const Order kRender{"mode", "max_depth", "shadows", "fresnel", "accelerator"};
-const Order kMaterial{"name",      "ambient",    "diffuse",      "specular", "emissive",
-                      "shininess", "reflective", "transmissive", "ior"};
+const Order kMaterial{"name",         "ambient",      "diffuse",      "specular", "emissive",
+                      "shininess",    "reflective",   "transmissive", "ior",      "diffuse_map",
+                      "specular_map", "emissive_map", "normal_map"};
+const Order kTexture{"name",   "image",  "checker", "checker_3d",
+                     "marble", "filter", "wrap",    "colour_space"};
+const Order kTextureSlot{"texture", "scale", "offset"};
+const Order kProcedural{"a", "b", "scale"};
 const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
                      "min",  "max",    "tiles",     "file",     "procedural", "triangles",
                      "seed", "scale",  "translate", "material", "materials"};
@@ -62,9 +67,13 @@ std::string number_text(const json& v) {
     return canonical_number(v.get<double>());
 }
 
-// The order of the keys inside the object of `key` within a one-line value ("cube" faces).
+// The key order of an object nested under `key` (texture slots, procedural textures, the
+// environment's "cube" faces).
 const Order& order_of_member(const std::string& key) {
-    return key == "cube" ? kCubeFaces : kNone;
+    if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
+    if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
+    if (key == "cube") return kCubeFaces;
+    return kNone;
 }
 
 // A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself.
@@ -115,6 +124,7 @@ const Order& order_of_section(const std::string& key) {
 }
 
 const Order& order_of_items(const std::string& key) {
+    if (key == "textures") return kTexture;
     if (key == "materials") return kMaterial;
     if (key == "surfaces") return kSurface;
     if (key == "lights") return kLight;

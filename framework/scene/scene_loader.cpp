@@ -20,7 +20,7 @@ Scene SceneSections::load() {
                    "wrap the scene in { ... }");
     check_keys(root, "", "the scene",
                {"camera", "image", "render", "background", "environment", "ambient_light",
-                "materials", "surfaces", "lights"});
+                "textures", "materials", "surfaces", "lights"});
     scene_.source = name_;
     read_image(root);
     read_render(root);
@@ -29,7 +29,9 @@ Scene SceneSections::load() {
     if (const json* v = member(root, "ambient_light"))
         scene_.ambient_light = color(*v, "/ambient_light");
     read_camera(root);
+    read_textures(root);
     read_materials(root);
+    finish_textures();
     read_surfaces(root);
     read_lights(root);
     scene_.update_features();

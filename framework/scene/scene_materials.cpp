@@ -18,9 +18,10 @@ void SceneSections::read_materials(const json& root) {
 
 void SceneSections::read_material(const json& object, const std::string& pointer) {
     require_object(object, pointer, "{\"name\": \"red\", \"diffuse\": [0.8, 0.1, 0.1]}");
-    check_keys(object, pointer, "a material",
-               {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
-                "transmissive", "ior"});
+    check_keys(
+        object, pointer, "a material",
+        {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
+         "transmissive", "ior", "diffuse_map", "specular_map", "emissive_map", "normal_map"});
     Material m;
     std::string name;
     if (const json* v = member(object, "name")) {
@@ -56,6 +57,16 @@ void SceneSections::read_material(const json& object, const std::string& pointer
         m.ior = float(real_in(
             *v, JsonPositions::child(pointer, "ior"), [](double d) { return d > 0; }, "> 0",
             "glass is about 1.5, water 1.33"));
+    struct SlotField {
+        const char* key;
+        TextureSlot Material::*slot;
+    };
+    for (SlotField f : {SlotField{"diffuse_map", &Material::diffuse_map},
+                        {"specular_map", &Material::specular_map},
+                        {"emissive_map", &Material::emissive_map},
+                        {"normal_map", &Material::normal_map}})
+        if (const json* v = member(object, f.key))
+            m.*f.slot = texture_slot(*v, JsonPositions::child(pointer, f.key));
     scene_.add_material(m, name);
 }
 

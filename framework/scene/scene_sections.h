@@ -52,6 +52,14 @@ class SceneSections : public SceneReader {
     // A material name (string) or index (whole number) at `at`.
     int material_ref(const json& value, const std::string& at) const;
 
+    // scene_textures.cpp
+    void read_textures(const json& root);
+    void read_texture(const json& object, const std::string& pointer);
+    // A material's texture slot: a texture name, or {"texture", "scale", "offset"}.
+    TextureSlot texture_slot(const json& value, const std::string& pointer);
+    // After the materials: which image textures are sRGB-decoded (by file type and use).
+    void finish_textures();
+
     // scene_surfaces.cpp
     void read_surfaces(const json& root);
     void read_surface(const json& s, const std::string& pointer);
@@ -79,6 +87,10 @@ class SceneSections : public SceneReader {
     std::filesystem::path base_dir_;
     Scene scene_;
     std::map<std::string, int> material_ids_;
+    std::map<std::string, int> texture_ids_;
+    std::map<std::string, int> image_ids_;   // texture images by normalised path, read once
+    std::vector<int> texture_colour_space_;  // per texture: -1 unsaid, 0 linear, 1 sRGB
+    std::vector<bool> texture_float_file_;   // per texture: reads an EXR or HDR file
 };
 
 }  // namespace rt::scene_internal

@@ -1,0 +1,176 @@
+// The scene's texture table (stage 07): the "textures" list, the texture slots of materials
+// ("diffuse_map": "bricks" or {"texture": "bricks", "scale": [4, 4], "offset": [0, 0]}) and the
+// images they read. Syntax: docs/scene-format.md#textures.
+#include <algorithm>
+#include <cctype>
+
+#include "image/image.h"
+#include "scene/message_text.h"
+#include "scene/scene_sections.h"
+
+namespace rt::scene_internal {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kTextureExample =
+    R"({"name": "bricks", "image": "bricks.png"} or {"name": "checks", "checker": {"a": [1, 1, 1], "b": [0, 0, 0]}})";
+
+// Float files hold linear values; integer files (PNG, JPEG, ...) hold encoded ones.
+bool is_float_file(const fs::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".exr" || ext == ".hdr";
+}
+
+}  // namespace
+
+void SceneSections::read_textures(const json& root) {
+    const json* list = member(root, "textures");
+    if (!list) return;
+    require_array(*list, "/textures", std::string("[") + kTextureExample + "]");
+    for (std::size_t i = 0; i < list->size(); ++i)
+        read_texture((*list)[i], JsonPositions::child("/textures", i));
+}
+
+void SceneSections::read_texture(const json& object, const std::string& pointer) {
+    require_object(object, pointer, kTextureExample);
+    check_keys(
+        object, pointer, "a texture",
+        {"name", "image", "filter", "wrap", "colour_space", "checker", "checker_3d", "marble"});
+    auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    const std::string name_pointer = at("name");
+    const std::string name =
+        string(required(object, pointer, "name", "a texture name", "\"bricks\""), name_pointer,
+               "\"bricks\"");
+    if (name.empty())
+        fail_value(name_pointer, "a texture name must not be empty", "name it, e.g. \"bricks\"");
+    const int index = int(scene_.textures.size());
+    if (auto [it, added] = texture_ids_.emplace(name, index); !added)
+        fail_value(name_pointer,
+                   "duplicate texture name " + quote(name) + " (texture " +
+                       std::to_string(it->second) + " has it too)",
+                   "give each texture its own name");
+
+    // Exactly one source: an image file or one procedural kind.
+    const char* sources[] = {"image", "checker", "checker_3d", "marble"};
+    std::vector<std::string> given;
+    for (const char* s : sources)
+        if (member(object, s)) given.push_back(s);
+    if (given.size() != 1)
+        fail_value(pointer,
+                   given.empty() ? "a texture needs a source"
+                                 : "a texture has one source, got \"" + given[0] + "\" and \"" +
+                                       given[1] + "\"",
+                   "give one of \"image\", \"checker\", \"checker_3d\", \"marble\"");
+
+    Texture t;
+    int colour_space = -1;  // -1: by file and use (finish_textures), 0 linear, 1 sRGB
+    if (const json* v = member(object, "image")) {
+        const std::string file = string(*v, at("image"), "\"bricks.png\"");
+        if (file.empty()) fail_value(at("image"), "\"image\" is empty", "name an image file");
+        const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base_dir_ / file;
+        t.kind = TextureKind::Image;
+        auto cached = image_ids_.find(path.lexically_normal().string());
+        if (cached != image_ids_.end()) {
+            t.image = cached->second;
+        } else {
+            Image image;
+            try {
+                // As stored: decoding sRGB is the lookup's job (stage 07), per texel.
+                image = ::rt::read_image(path, Encoding::Data);
+            } catch (const ImageError& e) {
+                // The image reader's message names the file and the fix already.
+                fail_value(at("image"), e.what());
+            }
+            t.image = scene_.add_texture_image(image.width, image.height, image.pixels);
+            image_ids_.emplace(path.lexically_normal().string(), t.image);
+        }
+        texture_float_file_.push_back(is_float_file(path));
+    } else {
+        const char* kind = given[0].c_str();
+        const json& p = object[kind];
+        const std::string pp = at(kind);
+        if (given[0] == "checker") t.kind = TextureKind::Checker2D;
+        if (given[0] == "checker_3d") t.kind = TextureKind::Checker3D;
+        if (given[0] == "marble") t.kind = TextureKind::Marble;
+        require_object(p, pp, R"({"a": [1, 1, 1], "b": [0, 0, 0]})");
+        const bool sized = t.kind != TextureKind::Checker2D;
+        check_keys(p, pp, std::string("a ") + kind + " texture",
+                   sized ? std::vector<std::string>{"a", "b", "scale"}
+                         : std::vector<std::string>{"a", "b"});
+        if (const json* a = member(p, "a")) t.a = color(*a, JsonPositions::child(pp, "a"));
+        if (const json* b = member(p, "b")) t.b = color(*b, JsonPositions::child(pp, "b"));
+        if (const json* s = member(p, "scale"))
+            t.scale = float(real_in(
+                *s, JsonPositions::child(pp, "scale"), [](double d) { return d > 0; }, "> 0",
+                "the size of a cube or vein in world units, e.g. 0.5"));
+        texture_float_file_.push_back(false);
+        for (const char* key : {"filter", "wrap", "colour_space"})
+            if (member(object, key))
+                fail_key(at(key), std::string("\"") + key + "\" applies to image textures only",
+                         "remove it");
+    }
+    if (const json* v = member(object, "filter"))
+        t.filter = TextureFilter(choice(*v, at("filter"), {"nearest", "bilinear"}));
+    if (const json* v = member(object, "wrap"))
+        t.wrap = TextureWrap(choice(*v, at("wrap"), {"repeat", "clamp", "mirror"}));
+    if (const json* v = member(object, "colour_space"))
+        colour_space = int(choice(*v, at("colour_space"), {"linear", "srgb"}));
+    texture_colour_space_.push_back(colour_space);
+    scene_.textures.push_back(t);
+    scene_.texture_names.push_back(name);
+}
+
+TextureSlot SceneSections::texture_slot(const json& value, const std::string& pointer) {
+    TextureSlot slot;
+    const json* name = &value;
+    const std::string example = R"("bricks" or {"texture": "bricks", "scale": [4, 4]})";
+    std::string name_pointer = pointer;
+    if (value.is_object()) {
+        check_keys(value, pointer, "a texture slot", {"texture", "scale", "offset"});
+        name_pointer = JsonPositions::child(pointer, "texture");
+        name = &required(value, pointer, "texture", "the texture's name", "\"bricks\"");
+        auto pair = [&](const char* key, float out[2]) {
+            const json* v = member(value, key);
+            if (!v) return;
+            const std::string at = JsonPositions::child(pointer, key);
+            require_array_of(*v, at, 2, "numbers",
+                             "got " + std::to_string(v->is_array() ? v->size() : 0),
+                             std::string("write e.g. \"") + key + "\": [2, 2]");
+            for (std::size_t i = 0; i < 2; ++i)
+                out[i] = float(real((*v)[i], JsonPositions::child(at, i)));
+        };
+        pair("scale", slot.scale);
+        pair("offset", slot.offset);
+    }
+    const std::string texture = string(*name, name_pointer, example);
+    auto it = texture_ids_.find(texture);
+    if (it == texture_ids_.end()) {
+        const std::vector<std::string>& names = scene_.texture_names;
+        fail_value(name_pointer, "unknown texture " + quote(texture),
+                   names.empty() ? std::string("define it under \"textures\"")
+                   : closest(texture, names)
+                       ? suggestion(texture, names)
+                       : "define it under \"textures\" or use " + list_of(names));
+    }
+    slot.texture = it->second;
+    return slot;
+}
+
+void SceneSections::finish_textures() {
+    // A texture is sRGB-decoded when it says so, or when it reads an integer file and no
+    // material uses it as a normal map (normal maps hold data: docs/conventions.md#textures).
+    std::vector<bool> normal_map(scene_.textures.size(), false);
+    for (const Material& m : scene_.materials)
+        if (m.normal_map.used()) normal_map[std::size_t(m.normal_map.texture)] = true;
+    for (std::size_t i = 0; i < scene_.textures.size(); ++i) {
+        Texture& t = scene_.textures[i];
+        if (t.kind != TextureKind::Image) continue;
+        const int said = texture_colour_space_[i];
+        t.srgb = said >= 0 ? said == 1 : !texture_float_file_[i] && !normal_map[i];
+    }
+}
+
+}  // namespace rt::scene_internal
