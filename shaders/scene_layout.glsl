@@ -19,6 +19,9 @@ struct Material {
 };
 struct Texture { ivec4 kind_image_filter_wrap; vec4 a_srgb; vec4 b_scale; };
 struct TextureImage { ivec4 width_height_first; };
+// Exactly one: kind_image.x 0 none, 1 lat-long (image kind_image.y), 2 cube map (faces in
+// OpenGL's order +x -x +y -y | +z -z); intensity_rotate_y.y in degrees.
+struct Environment { ivec4 kind_image; ivec4 faces_px_nx_py_ny; ivec4 faces_pz_nz; vec4 intensity_rotate_y; };
 struct Light { vec4 position_kind; vec4 direction; vec4 intensity; vec4 attenuation; };
 struct BvhNode { vec3 min; uint first; vec3 max; uint count; };
 
@@ -36,3 +39,4 @@ layout(std430, binding = 10) readonly buffer BvhPrimitives { uint bvh_primitives
 layout(std430, binding = 11) readonly buffer Textures { Texture textures[]; };
 layout(std430, binding = 12) readonly buffer TextureImages { TextureImage texture_images[]; };
 layout(std430, binding = 13) readonly buffer Texels { vec4 texels[]; };
+layout(std430, binding = 14) readonly buffer Environments { Environment environment[]; };

@@ -46,6 +46,11 @@ GpuScene pack_scene(const Scene& scene) {
     for (const TextureImage& i : scene.texture_images)
         g.texture_images.push_back({glm::ivec4(i.width, i.height, int(i.first), 0)});
     for (const Color& c : scene.texels) g.texels.push_back(glm::vec4(c, 1));
+    const Environment& e = scene.environment;
+    g.environment.push_back({glm::ivec4(int(e.kind), e.image, 0, 0),
+                             glm::ivec4(e.faces[0], e.faces[1], e.faces[2], e.faces[3]),
+                             glm::ivec4(e.faces[4], e.faces[5], 0, 0),
+                             glm::vec4(e.intensity, e.rotate_y, 0, 0)});
     for (const Light& l : scene.lights)
         g.lights.push_back({v4(l.position, int_bits(l.kind == LightKind::Point ? 0 : 1)),
                             v4(l.direction), v4(l.intensity), v4(l.attenuation)});

@@ -34,6 +34,7 @@ enum Binding : int {
     kTextures = 11,
     kTextureImages = 12,
     kTexels = 13,
+    kEnvironment = 14,
 };
 
 struct alignas(16) GpuSphere {
@@ -69,6 +70,13 @@ struct alignas(16) GpuTexture {
 struct alignas(16) GpuTextureImage {
     glm::ivec4 width_height_first;  // x width, y height, z first texel, w unused
 };
+// Always exactly one (kind None when the scene has none); images index texture_images.
+struct alignas(16) GpuEnvironment {
+    glm::ivec4 kind_image;         // x EnvironmentKind, y lat-long image, zw unused
+    glm::ivec4 faces_px_nx_py_ny;  // cube-face images, OpenGL's order
+    glm::ivec4 faces_pz_nz;        // xy the last two faces, zw unused
+    glm::vec4 intensity_rotate_y;  // x intensity, y rotate_y in degrees, zw unused
+};
 struct alignas(16) GpuLight {
     glm::vec4 position_kind;  // xyz position, w kind (int bits: 0 point, 1 directional)
     glm::vec4 direction;
@@ -87,6 +95,7 @@ RT_GPU_CHECK(GpuTriangle, 16);
 RT_GPU_CHECK(GpuMaterial, 176);
 RT_GPU_CHECK(GpuTexture, 48);
 RT_GPU_CHECK(GpuTextureImage, 16);
+RT_GPU_CHECK(GpuEnvironment, 64);
 RT_GPU_CHECK(GpuLight, 64);
 RT_GPU_CHECK(BvhNode, 32);
 static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::vec2) == 8, "GLSL vec4 / vec2 sizes");
@@ -114,7 +123,8 @@ struct GpuScene {
     std::vector<std::uint32_t> bvh_primitives;
     std::vector<GpuTexture> textures;
     std::vector<GpuTextureImage> texture_images;
-    std::vector<glm::vec4> texels;  // w 1
+    std::vector<glm::vec4> texels;            // w 1
+    std::vector<GpuEnvironment> environment;  // one entry
 };
 
 // Every array of `scene`, converted to float and packed as above.

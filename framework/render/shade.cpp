@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "render/accelerate.h"
+#include "render/background.h"
 #include "render/camera_ray.h"
 #include "render/texturing.h"
 #include "stage_api/stage02.h"

@@ -84,6 +84,7 @@ void Scene::update_features() {
         f.directional_lights |= l.kind == LightKind::Directional;
     }
     f.shadows = shadows && !lights.empty();
+    f.environment = environment.kind != EnvironmentKind::None;
     features = f;
 }
 
@@ -106,6 +107,7 @@ std::string Features::describe() const {
         s += " |";
         add(textures, "textures"), add(normal_maps, "normal-maps");
     }
+    if (environment) s += " | environment";
     return s;
 }
 
@@ -161,10 +163,6 @@ const char* to_string(RenderMode mode) {
 
 const char* to_string(Accelerator accelerator) {
     return accelerator == Accelerator::Bvh ? "bvh" : "none";
-}
-
-Color background(const Scene& scene, const Vec3& /*direction*/) {
-    return scene.background;
 }
 
 }  // namespace rt

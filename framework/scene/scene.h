@@ -13,6 +13,7 @@
 
 #include "accel/bvh.h"
 #include "camera/camera.h"
+#include "scene/environment.h"
 #include "scene/texture.h"
 
 namespace rt {
@@ -82,6 +83,7 @@ struct Features {
     bool shadows = false;      // the scene asks for shadows and has lights
     bool textures = false;     // a material has a diffuse, specular or emissive map (stage 07)
     bool normal_maps = false;  // a material has a normal map (stage 07)
+    bool environment = false;  // rays that miss look up an environment map (stage 08)
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
 };
@@ -129,6 +131,9 @@ struct Scene {
     std::vector<std::string> texture_names;
     std::vector<TextureImage> texture_images;
     std::vector<Color> texels;
+    // Stage 08: what rays that hit nothing see when it is more than `background`. Its images are
+    // entries of texture_images, stored linear (8-bit files decoded from sRGB on loading).
+    Environment environment;
 
     Features features;  // filled by update_features()
     Bvh bvh;            // built by build_acceleration when accelerator == Bvh
@@ -189,10 +194,6 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
 // any, (0, 0), (1, 0) and (0, 1), so that a texture spans each triangle; a vertex without uvs
 // in a scene that has some holds (0, 0).
 void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2& b, Vec2& c);
-
-// What a ray that hits nothing sees, looking along `direction` (unit or not): today the scene's
-// one background colour; the hook for stage 08's environment maps.
-Color background(const Scene& scene, const Vec3& direction);
 
 const char* to_string(RenderMode mode);
 const char* to_string(Accelerator accelerator);

@@ -25,8 +25,8 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",   "image",     "render",   "background", "ambient_light",
-                      "textures", "materials", "surfaces", "lights"};
+const Order kTopLevel{"camera",        "image",    "render",    "background", "environment",
+                      "ambient_light", "textures", "materials", "surfaces",   "lights"};
 const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
 const Order kImage{"width", "height"};
 const Order kRender{"mode", "max_depth", "shadows", "fresnel", "accelerator"};
@@ -40,6 +40,8 @@ const Order kProcedural{"a", "b", "scale"};
 const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
                      "min",  "max",    "tiles",     "file",     "procedural", "triangles",
                      "seed", "scale",  "translate", "material", "materials"};
+const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
+const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
 const Order kLight{"type", "position", "direction", "intensity", "attenuation"};
 const Order kNone{};
 
@@ -65,10 +67,12 @@ std::string number_text(const json& v) {
     return canonical_number(v.get<double>());
 }
 
-// The key order of an object nested under `key` (texture slots, procedural textures).
+// The key order of an object nested under `key` (texture slots, procedural textures, the
+// environment's "cube" faces).
 const Order& order_of_member(const std::string& key) {
     if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
     if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
+    if (key == "cube") return kCubeFaces;
     return kNone;
 }
 
@@ -115,6 +119,7 @@ const Order& order_of_section(const std::string& key) {
     if (key == "camera") return kCamera;
     if (key == "image") return kImage;
     if (key == "render") return kRender;
+    if (key == "environment") return kEnvironment;
     return kNone;
 }
 

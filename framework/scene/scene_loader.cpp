@@ -19,12 +19,13 @@ Scene SceneSections::load() {
         fail_value("", "the top level must be a JSON object, got " + describe(root),
                    "wrap the scene in { ... }");
     check_keys(root, "", "the scene",
-               {"camera", "image", "render", "background", "ambient_light", "textures", "materials",
-                "surfaces", "lights"});
+               {"camera", "image", "render", "background", "environment", "ambient_light",
+                "textures", "materials", "surfaces", "lights"});
     scene_.source = name_;
     read_image(root);
     read_render(root);
     if (const json* v = member(root, "background")) scene_.background = color(*v, "/background");
+    read_environment(root);
     if (const json* v = member(root, "ambient_light"))
         scene_.ambient_light = color(*v, "/ambient_light");
     read_camera(root);

@@ -1,6 +1,7 @@
-// The sections of a scene file (camera, image, render, materials, surfaces, meshes, lights), each
-// read into a Scene on top of the typed reader. The readers live in scene_settings.cpp,
-// scene_materials.cpp, scene_surfaces.cpp and scene_meshes.cpp.
+// The sections of a scene file (camera, image, render, environment, materials, surfaces, meshes,
+// lights), each read into a Scene on top of the typed reader. The readers live in
+// scene_settings.cpp, scene_environment.cpp, scene_materials.cpp, scene_surfaces.cpp and
+// scene_meshes.cpp.
 #pragma once
 
 #include <array>
@@ -38,6 +39,11 @@ class SceneSections : public SceneReader {
     void read_camera(const json& root);
     void read_lights(const json& root);
     void read_light(const json& object, const std::string& pointer);
+
+    // scene_environment.cpp
+    void read_environment(const json& root);
+    // The image file named by the string at `pointer` (relative to base_dir_), linear.
+    Image read_environment_image(const json& value, const std::string& pointer);
 
     // scene_materials.cpp
     void read_materials(const json& root);
@@ -92,7 +98,7 @@ class SceneSections : public SceneReader {
     std::vector<int> texture_colour_space_;     // per texture: -1 unsaid, 0 linear, 1 sRGB
     std::vector<bool> texture_float_file_;      // per texture: reads an EXR or HDR file
     std::vector<std::string> texture_pointer_;  // per texture: where errors about it point
-    std::vector<ImageInfo> image_info_;         // per texture image: channels, float or not
+    std::map<int, ImageInfo> image_info_;       // by texture image index: channels, float or not
 };
 
 }  // namespace rt::scene_internal

@@ -65,7 +65,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base_dir_ / file;
         t.kind = TextureKind::Image;
         t.image = texture_image(path, at("image"));
-        texture_float_file_.push_back(image_info_[std::size_t(t.image)].floating);
+        texture_float_file_.push_back(image_info_.at(t.image).floating);
     } else {
         const char* kind = given[0].c_str();
         const json& p = object[kind];
@@ -116,7 +116,7 @@ int SceneSections::texture_image(const fs::path& path, const std::string& pointe
     }
     const int index = scene_.add_texture_image(image.width, image.height, image.pixels);
     image_ids_.emplace(key, index);
-    image_info_.push_back(info);
+    image_info_[index] = info;
     return index;
 }
 
@@ -132,17 +132,17 @@ TextureSlot SceneSections::mtl_texture_slot(const ObjTextureMap& map, bool data,
         t.kind = TextureKind::Image;
         t.image = texture_image(map.file, pointer);
         t.wrap = map.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
-        if (data && image_info_[std::size_t(t.image)].channels < 3)
+        if (data && image_info_.at(t.image).channels < 3)
             fail_value(pointer, map.file.string() + " is a normal map (norm or map_Bump) but has " +
-                                    std::to_string(image_info_[std::size_t(t.image)].channels) +
+                                    std::to_string(image_info_.at(t.image).channels) +
                                     " channel(s); a normal map needs RGB");
-        t.srgb = !data && !image_info_[std::size_t(t.image)].floating;
+        t.srgb = !data && !image_info_.at(t.image).floating;
         index = int(scene_.textures.size());
         scene_.textures.push_back(t);
         scene_.texture_names.push_back(texture_name);
         texture_colour_space_.push_back(t.srgb ? 1 : 0);
         texture_pointer_.push_back(pointer);
-        texture_float_file_.push_back(image_info_[std::size_t(t.image)].floating);
+        texture_float_file_.push_back(image_info_.at(t.image).floating);
         texture_ids_.emplace(texture_name, index);
     }
     TextureSlot slot;
@@ -197,7 +197,7 @@ void SceneSections::finish_textures() {
     for (std::size_t i = 0; i < scene_.textures.size(); ++i) {
         Texture& t = scene_.textures[i];
         if (t.kind != TextureKind::Image) continue;
-        const int channels = image_info_[std::size_t(t.image)].channels;
+        const int channels = image_info_.at(t.image).channels;
         if (normal_map[i] && channels < 3)
             fail_value(texture_pointer_[i],
                        "texture " + quote(scene_.texture_names[i]) +

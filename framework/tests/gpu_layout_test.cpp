@@ -57,6 +57,14 @@ const std::vector<Member>& members() {
         RT_MEMBER(GpuTextureImage, "texture_images", width_height_first,
                   "acc += vec4(texture_images[0].width_height_first);"),
         Member{"texels[0]", 0, sizeof(glm::vec4), "acc += texels[0];"},
+        RT_MEMBER(GpuEnvironment, "environment", kind_image,
+                  "acc += vec4(environment[0].kind_image);"),
+        RT_MEMBER(GpuEnvironment, "environment", faces_px_nx_py_ny,
+                  "acc += vec4(environment[0].faces_px_nx_py_ny);"),
+        RT_MEMBER(GpuEnvironment, "environment", faces_pz_nz,
+                  "acc += vec4(environment[0].faces_pz_nz);"),
+        RT_MEMBER(GpuEnvironment, "environment", intensity_rotate_y,
+                  "acc += environment[0].intensity_rotate_y;"),
         RT_MEMBER(GpuLight, "lights", position_kind, "acc += lights[0].position_kind;"),
         RT_MEMBER(GpuLight, "lights", direction, "acc += lights[0].direction;"),
         RT_MEMBER(GpuLight, "lights", intensity, "acc += lights[0].intensity;"),
@@ -178,6 +186,18 @@ TEST(GpuLayout, PackKeepsEveryValue) {
     EXPECT_EQ(h.textures[0].a_srgb.w, 1.0f);
     EXPECT_EQ(h.texture_images[0].width_height_first, glm::ivec4(2, 1, 0, 0));
     EXPECT_EQ(h.texels[1], glm::vec4(1, 0, 0, 1));
+
+    // The environment: always one entry, kind None without one.
+    ASSERT_EQ(h.environment.size(), 1u);
+    EXPECT_EQ(h.environment[0].kind_image, glm::ivec4(int(EnvironmentKind::None), -1, 0, 0));
+    scene.environment.kind = EnvironmentKind::CubeMap;
+    for (int f = 0; f < kCubeFaces; ++f) scene.environment.faces[f] = 10 + f;
+    scene.environment.intensity = 2.5f, scene.environment.rotate_y = -30;
+    const GpuScene e = pack_scene(scene);
+    EXPECT_EQ(e.environment[0].kind_image.x, int(EnvironmentKind::CubeMap));
+    EXPECT_EQ(e.environment[0].faces_px_nx_py_ny, glm::ivec4(10, 11, 12, 13));
+    EXPECT_EQ(e.environment[0].faces_pz_nz, glm::ivec4(14, 15, 0, 0));
+    EXPECT_EQ(e.environment[0].intensity_rotate_y, glm::vec4(2.5f, -30, 0, 0));
 }
 
 }  // namespace

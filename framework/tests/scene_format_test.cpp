@@ -308,3 +308,25 @@ TEST(Checkerboard, Mistakes) {
 }
 
 }  // namespace
+
+namespace {
+
+// The environment section: after "background", its keys and the cube faces in table order.
+TEST(SceneFormat, EnvironmentKeysInTableOrder) {
+    const fs::path cube = kSource / "stages/08-environment/scenes/cube";
+    std::string faces;
+    for (const char* f : {"nz", "pz", "ny", "py", "nx", "px"})
+        faces += std::string(faces.empty() ? "" : ", ") + "\"" + f + "\": \"" +
+                 (cube / (std::string(f) + ".png")).string() + "\"";
+    const std::string text = "{\"environment\": {\"rotate_y\": 10, \"cube\": {" + faces +
+                             "}, \"intensity\": 2}, \"background\": [0, 0, 0]}";
+    const std::string out = canonical(text);
+    EXPECT_LT(out.find("\"background\""), out.find("\"environment\""));
+    EXPECT_LT(out.find("\"cube\""), out.find("\"intensity\""));
+    EXPECT_LT(out.find("\"intensity\""), out.find("\"rotate_y\""));
+    const char* order[] = {"\"px\"", "\"nx\"", "\"py\"", "\"ny\"", "\"pz\"", "\"nz\""};
+    for (int i = 0; i + 1 < 6; ++i) EXPECT_LT(out.find(order[i]), out.find(order[i + 1])) << out;
+    EXPECT_EQ(canonical(out), out);
+}
+
+}  // namespace

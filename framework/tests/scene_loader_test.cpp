@@ -373,6 +373,14 @@ const BadScene kBadScenesTable[] = {
     {"63-missing-texture-image", 2, 42, R"(no_such_wood.png: error: no such image file)"},
     {"64-texture-with-two-sources", 2, 16, R"(a texture has one source, got "image" and "marble")"},
     {"65-unknown-wrap-mode", 2, 115, R"(unknown "wrap" "tile"; use "repeat", "clamp" or "mirror")"},
+    {"70-environment-missing-image", 2, 30,
+     R"(environment image "no-such-sky.exr": no such image file; check the path)"},
+    {"71-environment-unknown-key", 2, 79,
+     R"(unknown key "rotate" in "environment"; did you mean "rotate_y"?)"},
+    {"72-cube-face-not-square", 2, 34, R"(cube face "px" is 2x1, not square)"},
+    {"73-cube-faces-differ-in-size", 2, 329, R"(cube face "nz" is 16x16 but "px" is 32x32)"},
+    {"74-cube-missing-face", 2, 27, R"(a cube map needs "nz")"},
+    {"75-environment-latlong-and-cube", 2, 79, R"(an environment is either "latlong" or "cube")"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};

@@ -1,4 +1,5 @@
-// The surface point and the background hook.
+// The surface point. (The background hook, which calls stage 08 code, is tested in
+// stages/08-environment/tests/radiance_test.cpp.)
 #include <gtest/gtest.h>
 
 #include "geometry/offset.h"
@@ -16,13 +17,6 @@ TEST(SurfacePoint, TexcoordIsLeftToTheTexturingStep) {
     hit.primitive = scene.primitive_id(Scene::Kind::Sphere, 0);
     hit.uv = Vec2(0.25f, 0.5f);
     EXPECT_EQ(surface_point(scene, Ray{Vec3(0, 0, 2), Vec3(0, 0, -1)}, hit).texcoord, Vec2(0));
-}
-
-TEST(Background, IsTheScenesColourInEveryDirection) {
-    Scene scene;
-    scene.background = Color(0.1f, 0.2f, 0.3f);
-    EXPECT_EQ(background(scene, Vec3(0, 0, -1)), scene.background);
-    EXPECT_EQ(background(scene, Vec3(5, 1, 0)), scene.background);
 }
 
 }  // namespace

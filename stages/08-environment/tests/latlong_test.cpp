@@ -1,0 +1,91 @@
+// Stage 08 tests: latlong_uv at the axes, the poles, the seam, for any length, and the mapping's
+// inverse (docs/conventions.md#environment-maps).
+#include <cmath>
+#include <numbers>
+
+#include "stage_api/stage08.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+RT_TEST_SUITE(LatLong);
+
+constexpr Real kPi = std::numbers::pi_v<Real>;
+constexpr Real kTol = 1e-5f;
+
+void expect_uv(const Vec3& d, Real u, Real v) {
+    const Vec2 uv = latlong_uv(d);
+    EXPECT_NEAR(uv.x, u, kTol) << "u of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
+    EXPECT_NEAR(uv.y, v, kTol) << "v of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
+}
+
+TEST_F(LatLong, HorizontalAxesAreQuartersOfU) {
+    expect_uv(Vec3(1, 0, 0), 0, 0.5f);
+    expect_uv(Vec3(0, 0, -1), 0.25f, 0.5f);
+    expect_uv(Vec3(-1, 0, 0), 0.5f, 0.5f);
+    expect_uv(Vec3(0, 0, 1), 0.75f, 0.5f);
+}
+
+TEST_F(LatLong, VIsZeroStraightUpAndOneStraightDown) {
+    EXPECT_NEAR(latlong_uv(Vec3(0, 1, 0)).y, 0, kTol);
+    EXPECT_NEAR(latlong_uv(Vec3(0, -1, 0)).y, 1, kTol);
+    expect_uv(Vec3(1, 1, 0), 0, 0.25f);       // 45 degrees above +x
+    expect_uv(Vec3(0, -1, 1), 0.75f, 0.75f);  // 45 degrees below +z
+}
+
+TEST_F(LatLong, AnyLengthGivesTheSameCoordinates) {
+    for (Real scale : {Real(1e-3), Real(0.5), Real(7), Real(1e4)}) {
+        expect_uv(scale * Vec3(0, 0, -1), 0.25f, 0.5f);
+        expect_uv(scale * Vec3(-1, 1, 0), 0.5f, 0.25f);
+    }
+}
+
+TEST_F(LatLong, PolesNeverGiveNaN) {
+    // Nearly vertical directions whose normalised y may round above 1.
+    for (const Vec3& d : {Vec3(1e-20f, 5, 0), Vec3(0, -3, 1e-30f), Vec3(0, 1, 0)}) {
+        const Vec2 uv = latlong_uv(d);
+        EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
+        EXPECT_GE(uv.x, 0);
+        EXPECT_LT(uv.x, 1);
+        EXPECT_NEAR(uv.y, d.y > 0 ? 0 : 1, kTol);
+    }
+}
+
+TEST_F(LatLong, TheSeamIsAtPlusXAndUStaysBelowOne) {
+    // Just past +x towards +z, u is just below 1; just past towards -z, just above 0.
+    const Real eps = 0.01f;
+    expect_uv(Vec3(1, 0, eps), 1 - std::atan(eps) / (2 * kPi), 0.5f);
+    expect_uv(Vec3(1, 0, -eps), std::atan(eps) / (2 * kPi), 0.5f);
+    for (Real z : {Real(1e-9), Real(1e-30), Real(1e-7)}) {
+        const Real u = latlong_uv(Vec3(1, 0, z)).x;
+        EXPECT_GE(u, 0) << "z = " << z;
+        EXPECT_LT(u, 1) << "z = " << z << ": u must stay in [0, 1)";
+    }
+}
+
+// The inverse of the mapping: phi = 2 pi u, theta = pi v.
+Vec3 direction_of(Vec2 uv) {
+    const Real phi = 2 * kPi * uv.x, theta = kPi * uv.y;
+    return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+}
+
+TEST_F(LatLong, RoundTripThroughTheInverse) {
+    // Directions spread over the sphere (a Fibonacci lattice), poles excluded.
+    const int n = 500;
+    for (int k = 0; k < n; ++k) {
+        const Real y = 1 - 2 * (Real(k) + 0.5f) / Real(n);
+        const Real r = std::sqrt(1 - y * y), a = Real(k) * 2.39996323f;
+        const Vec3 d(r * std::cos(a), y, r * std::sin(a));
+        const Vec2 uv = latlong_uv(Real(3) * d);
+        ASSERT_GE(uv.x, 0);
+        ASSERT_LT(uv.x, 1);
+        ASSERT_GE(uv.y, 0);
+        ASSERT_LE(uv.y, 1);
+        const Vec3 back = direction_of(uv);
+        EXPECT_NEAR(glm::length(back - d), 0, 1e-4f) << "direction " << k;
+    }
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,195 @@
+// Stage 08 tests: environment_radiance on small images built in code (texel centres, the seam,
+// the poles, cube faces without bleeding, rotation, intensity), the background hook, and the
+// committed environment images against their generator.
+#include <cmath>
+#include <numbers>
+
+#include "core/not_implemented.h"
+#include "render/background.h"
+#include "scene/scene_loader.h"
+#include "stage_api/stage08.h"
+#include "testing/environment_images.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+RT_TEST_SUITE(Radiance);
+
+constexpr Real kPi = std::numbers::pi_v<Real>;
+
+void expect_colour(const Color& got, const Color& want, const std::string& what) {
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[c], want[c], 1e-4f * std::max(1.0f, want[c])) << what << ", channel " << c;
+}
+
+// A w x h lat-long image whose texel (i, j) is (i, j, 1 + i + j) / 10.
+Scene latlong_scene(int w, int h) {
+    Scene scene;
+    std::vector<Color> texels;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            texels.push_back(Color(float(i), float(j), float(1 + i + j)) / 10.0f);
+    scene.environment.kind = EnvironmentKind::LatLong;
+    scene.environment.image = scene.add_texture_image(w, h, texels);
+    scene.update_features();
+    return scene;
+}
+
+Color texel(int i, int j) {
+    return Color(float(i), float(j), float(1 + i + j)) / 10.0f;
+}
+
+Vec3 latlong_direction(Real u, Real v) {
+    const Real phi = 2 * kPi * u, theta = kPi * v;
+    return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+}
+
+TEST_F(Radiance, LatLongTexelCentresGiveTheirTexel) {
+    const Scene scene = latlong_scene(8, 4);
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 8; ++i) {
+            const Vec3 d = latlong_direction((Real(i) + 0.5f) / 8, (Real(j) + 0.5f) / 4);
+            expect_colour(environment_radiance(scene, Real(2) * d), texel(i, j),
+                          "texel (" + std::to_string(i) + ", " + std::to_string(j) + ")");
+        }
+}
+
+TEST_F(Radiance, LatLongWrapsAcrossTheSeam) {
+    // At +x (u = 0) on row 1's centre: half of column 0, half of column 7.
+    const Scene scene = latlong_scene(8, 4);
+    const Vec3 d = latlong_direction(0, 1.5f / 4);
+    expect_colour(environment_radiance(scene, d), (texel(0, 1) + texel(7, 1)) * 0.5f,
+                  "u = 0 blends the first and the last column");
+}
+
+TEST_F(Radiance, PolesDoNotBlendWithTheOtherEdge) {
+    // Straight up is v = 0: row 0 only (the bottom row would add green 0.3).
+    const Scene scene = latlong_scene(8, 4);
+    const Color up = environment_radiance(scene, Vec3(0, 1, 0));
+    EXPECT_NEAR(up.g, 0, 1e-6f) << "straight up must read row 0 only";
+    const Color down = environment_radiance(scene, Vec3(0, -2, 0));
+    EXPECT_NEAR(down.g, 0.3f, 1e-6f) << "straight down must read the last row only";
+}
+
+TEST_F(Radiance, RotationTurnsTheEnvironmentAboutY) {
+    Scene scene = latlong_scene(8, 4);
+    const Scene unrotated = scene;
+    scene.environment.rotate_y = 90;
+    // Turned by +90 degrees (right-hand rule about +y): +z goes to +x, +x to -z.
+    expect_colour(environment_radiance(scene, Vec3(1, 0.3f, 0)),
+                  environment_radiance(unrotated, Vec3(0, 0.3f, 1)), "+x shows what was at +z");
+    expect_colour(environment_radiance(scene, Vec3(0, -0.2f, -1)),
+                  environment_radiance(unrotated, Vec3(1, -0.2f, 0)), "-z shows what was at +x");
+    scene.environment.rotate_y = -45;
+    const Vec3 d(0.3f, 0.1f, -0.8f);
+    const Real c = std::cos(kPi / 4), s = std::sin(kPi / 4);  // turning d by +45 degrees
+    expect_colour(environment_radiance(scene, d),
+                  environment_radiance(unrotated, Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z)),
+                  "-45 degrees");
+}
+
+TEST_F(Radiance, IntensityScalesTheImage) {
+    Scene scene = latlong_scene(8, 4);
+    scene.environment.intensity = 2.5f;
+    const Vec3 d = latlong_direction(2.5f / 8, 2.5f / 4);
+    expect_colour(environment_radiance(scene, d), texel(2, 2) * 2.5f, "intensity 2.5");
+}
+
+// Six 2x2 faces; face f's texel (i, j) is colour (f + 1, i, j) / 10.
+Scene cube_scene() {
+    Scene scene;
+    scene.environment.kind = EnvironmentKind::CubeMap;
+    for (int f = 0; f < 6; ++f) {
+        std::vector<Color> texels;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                texels.push_back(Color(float(f + 1), float(i), float(j)) / 10.0f);
+        scene.environment.faces[f] = scene.add_texture_image(2, 2, texels);
+    }
+    scene.update_features();
+    return scene;
+}
+
+TEST_F(Radiance, CubeFacesAreLookedUpWithClampAndNoBleeding) {
+    const Scene scene = cube_scene();
+    const Vec3 axes[6] = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
+                          Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
+    for (int f = 0; f < 6; ++f)  // the centre: the four texels equally
+        expect_colour(environment_radiance(scene, Real(3) * axes[f]),
+                      Color(float(f + 1), 0.5f, 0.5f) / 10.0f,
+                      "centre of face " + std::to_string(f));
+    // The corner (u, v) = (0, 0) of +x, (1, 1, 1): texel (0, 0) of +x alone, nothing of +y or +z.
+    expect_colour(environment_radiance(scene, Vec3(1, 1, 1)), Color(0.1f, 0, 0), "corner of +x");
+    // Texel centres: (u, v) = (0.25, 0.75) on -z is texel (0, 1).
+    expect_colour(environment_radiance(scene, Vec3(0.5f, -0.5f, -1)), Color(0.6f, 0, 0.1f),
+                  "texel (0, 1) of -z");
+}
+
+TEST_F(Radiance, NoEnvironmentIsTheBackgroundColour) {
+    Scene scene;
+    scene.background = Color(0.1f, 0.2f, 0.3f);
+    scene.update_features();
+    EXPECT_EQ(environment_radiance(scene, Vec3(0, 0, -1)), scene.background);
+}
+
+// The hook: a scene without an environment never reaches stage 08 code (no stub is counted even
+// in a starter tree), one with an environment gets environment_radiance.
+TEST(Background, WithoutAnEnvironmentIsTheScenesColourAndCallsNoStageCode) {
+    Scene scene;
+    scene.background = Color(0.1f, 0.2f, 0.3f);
+    scene.update_features();
+    const auto stubs = stub_calls_total();
+    EXPECT_EQ(background(scene, Vec3(0, 0, -1)), scene.background);
+    EXPECT_EQ(background(scene, Vec3(5, 1, 0)), scene.background);
+    EXPECT_EQ(stub_calls_total(), stubs);
+    EXPECT_FALSE(scene.features.environment);
+}
+
+TEST_F(Radiance, BackgroundUsesTheEnvironment) {
+    const Scene scene = latlong_scene(8, 4);
+    ASSERT_TRUE(scene.features.environment);
+    const Vec3 d(0.2f, 0.4f, -1);
+    EXPECT_EQ(background(scene, d), environment_radiance(scene, d));
+}
+
+// ---- the committed images -------------------------------------------------------------------
+
+const std::filesystem::path kScenes = testing::source_dir() / "stages/08-environment/scenes";
+
+TEST(EnvironmentImages, CommittedFilesAreTheGeneratorsOutput) {
+    // Regenerate with: build/bin/make-environment-images stages/08-environment/scenes
+    const Image sky = read_image(kScenes / "sky.exr");
+    const Image made = testing::make_latlong_sky();
+    ASSERT_EQ(sky.width, made.width);
+    ASSERT_EQ(sky.height, made.height);
+    for (std::size_t k = 0; k < sky.pixels.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(sky.pixels[k][c], made.pixels[k][c],
+                        2e-3f * std::max(1.0f, made.pixels[k][c]))
+                << "sky.exr pixel " << k;
+    for (int f = 0; f < kCubeFaces; ++f) {
+        const auto file = kScenes / "cube" / (std::string(kCubeFaceNames[f]) + ".png");
+        const Image8 face = read_image8(file);
+        const Image8 want = to_image8(testing::make_cube_face(f));
+        EXPECT_EQ(face.width, want.width) << file;
+        EXPECT_TRUE(face.data == want.data) << file << " differs from make_cube_face(" << f << ")";
+    }
+}
+
+TEST(EnvironmentScenes, LoadWithTheirEnvironment) {
+    const Scene sky = load_scene(kScenes / "sky.json");
+    EXPECT_EQ(sky.environment.kind, EnvironmentKind::LatLong);
+    EXPECT_TRUE(sky.features.environment);
+    EXPECT_NE(sky.features.describe().find("environment"), std::string::npos);
+    const Scene cube = load_scene(kScenes / "cube_mirror.json");
+    ASSERT_EQ(cube.environment.kind, EnvironmentKind::CubeMap);
+    for (int f = 0; f < kCubeFaces; ++f) {
+        const TextureImage& image = cube.texture_images[std::size_t(cube.environment.faces[f])];
+        EXPECT_EQ(image.width, 32);
+        EXPECT_EQ(image.height, 32);
+    }
+}
+
+}  // namespace
+}  // namespace rt
