@@ -30,8 +30,9 @@ extern "C" RtOiioTextures* rt_oiio_textures_create(char* error, std::size_t erro
     std::error_code ec;
     std::string pattern = (std::filesystem::temp_directory_path(ec) / "rt-oiio-XXXXXX").string();
     if (ec || !mkdtemp(pattern.data())) {
-        report(error, error_size, "cannot create a temporary directory for mip-mapped textures " +
-                                      pattern + " (set TMPDIR to a writable directory)");
+        report(error, error_size,
+               "cannot create a temporary directory for mip-mapped textures " + pattern +
+                   " (set TMPDIR to a writable directory)");
         return nullptr;
     }
     auto* textures = new RtOiioTextures;
@@ -51,8 +52,7 @@ extern "C" int rt_oiio_textures_add(RtOiioTextures* textures, const float* rgb, 
     OIIO::ImageSpec config;
     config.format = OIIO::TypeDesc::FLOAT;  // linear values: no 8-bit rounding of the levels
     config.attribute("maketx:filtername", "box");
-    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, image, file,
-                                          config)) {
+    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, image, file, config)) {
         report(error, error_size, "make_texture failed for " + file + ": " + OIIO::geterror());
         return -1;
     }

@@ -55,9 +55,10 @@ OiioTextures::OiioTextures(const Scene& scene, bool anisotropic)
         const int index =
             plugin.textures_add(system_, rgb.data(), view.width, view.height, error, sizeof error);
         if (index < 0)
-            throw failure("texture \"" + (i < scene.texture_names.size() ? scene.texture_names[i]
-                                                                          : std::to_string(i)) +
-                          "\": " + error);
+            throw failure(
+                "texture \"" +
+                (i < scene.texture_names.size() ? scene.texture_names[i] : std::to_string(i)) +
+                "\": " + error);
         index_[i] = made[key] = index;
     }
 }

@@ -231,9 +231,8 @@ Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
     if (tree) *tree = RayNode{};
     // The OpenImageIO texture lookups filter over the pixel's footprint, which the neighbouring
     // pixels' camera rays give; the other lookups need none, so skip the two rays.
-    if (scene.oiio_textures &&
-        (scene.texture_lookup == TextureLookup::Oiio ||
-         scene.texture_lookup == TextureLookup::OiioAniso)) {
+    if (scene.oiio_textures && (scene.texture_lookup == TextureLookup::Oiio ||
+                                scene.texture_lookup == TextureLookup::OiioAniso)) {
         const Vec2 centre(Real(x) + Real(0.5), Real(y) + Real(0.5));
         const RayDifferential rays{camera_ray(scene.camera, centre + Vec2(1, 0), scene.image),
                                    camera_ray(scene.camera, centre + Vec2(0, 1), scene.image)};

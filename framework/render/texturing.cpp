@@ -126,7 +126,8 @@ Vec2 texcoord_step(const Scene& scene, const Hit& hit, const SurfacePoint& at, V
     Hit moved_hit = hit;
     std::size_t i = 0;
     const bool primitive = scene.is_primitive(hit.primitive);
-    const Scene::Kind kind = primitive ? scene.primitive_kind(hit.primitive, i) : Scene::Kind::Plane;
+    const Scene::Kind kind =
+        primitive ? scene.primitive_kind(hit.primitive, i) : Scene::Kind::Plane;
     if (primitive && kind == Scene::Kind::Triangle)
         moved_hit.uv = barycentrics(scene, i, moved.point);
     Vec2 step = surface_texcoord(scene, moved_hit, moved) - uv;
@@ -137,8 +138,8 @@ Vec2 texcoord_step(const Scene& scene, const Hit& hit, const SurfacePoint& at, V
 
 }  // namespace
 
-TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit,
-                                         const SurfacePoint& at, const RayDifferential& rays) {
+TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit, const SurfacePoint& at,
+                                         const RayDifferential& rays) {
     TexcoordDerivatives d;
     d.dx = texcoord_step(scene, hit, at, at.texcoord, rays.x);
     d.dy = texcoord_step(scene, hit, at, at.texcoord, rays.y);

@@ -35,8 +35,8 @@ struct RayDifferential {
 // The texture-coordinate derivatives at `at` (pbrt-v4 section 10.1): each neighbour ray meets
 // the tangent plane of the hit at p', and du = uv(p') - uv(p) with the surface's own mapping.
 // Zero where a neighbour misses the plane (grazing, or the plane behind it).
-TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit,
-                                         const SurfacePoint& at, const RayDifferential& rays);
+TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit, const SurfacePoint& at,
+                                         const RayDifferential& rays);
 
 // Applies the material's maps at `at`: fills at.texcoord, multiplies the material's colours by
 // their maps and replaces `lighting_normal` by the normal-mapped one. `rays` (camera rays only,

@@ -10,8 +10,11 @@
 #include "core/source_dir.h"
 #include "image/image.h"
 #include "image/oiio_loader.h"
+#include "render/accelerate.h"
+#include "render/camera_ray.h"
 #include "render/oiio_textures.h"
 #include "render/render.h"
+#include "render/texturing.h"
 #include "scene/scene_loader.h"
 
 namespace rt {
@@ -68,6 +71,30 @@ int far_edge(const Image& image, const Color& sky) {
     return image.height;
 }
 
+// A camera 1 above the plane y = 0 looking straight down, 90 degrees over 100 rows: each pixel
+// spans 0.02 world units on the plane, which plane_texcoord measures in world units.
+TEST(OiioTextures, RayDifferentialsGiveThePixelFootprint) {
+    Scene scene;
+    scene.image = ImageSize{100, 100};
+    scene.camera = make_look_at_camera(Projection::Perspective, Vec3(0, 1, 0), Vec3(0, 0, 0),
+                                       Vec3(0, 0, -1), 90, 2);
+    scene.planes.push_back(Plane{Vec3(0), Vec3(0, 1, 0), 0});
+    for (const auto& [x, y] : {std::pair{50, 50}, std::pair{10, 80}}) {
+        const Vec2 centre(Real(x) + Real(0.5), Real(y) + Real(0.5));
+        const Ray ray = camera_ray(scene.camera, centre, scene.image);
+        Hit hit;
+        ASSERT_TRUE(nearest_hit(scene, ray, Interval{0, kInfinity}, hit));
+        SurfacePoint at = surface_point(scene, ray, hit);
+        at.texcoord = surface_texcoord(scene, hit, at);
+        const RayDifferential rays{camera_ray(scene.camera, centre + Vec2(1, 0), scene.image),
+                                   camera_ray(scene.camera, centre + Vec2(0, 1), scene.image)};
+        const TexcoordDerivatives d = texcoord_derivatives(scene, hit, at, rays);
+        EXPECT_NEAR(glm::length(d.dx), 0.02, 1e-5) << x << "," << y;
+        EXPECT_NEAR(glm::length(d.dy), 0.02, 1e-5) << x << "," << y;
+        EXPECT_NEAR(glm::dot(d.dx, d.dy), 0, 1e-7) << "the pixel's sides are perpendicular";
+    }
+}
+
 TEST(OiioTextures, AgreesWithBilinearWhereMagnified) {
     const Image oiio = render_with(TextureLookup::Oiio);
     const Image bilinear = render_with(TextureLookup::Bilinear);
@@ -77,6 +104,15 @@ TEST(OiioTextures, AgreesWithBilinearWhereMagnified) {
         for (int x = 0; x < kWidth; ++x)
             for (int c = 0; c < 3; ++c)
                 worst = std::max(worst, double(std::abs(oiio.at(x, y)[c] - bilinear.at(x, y)[c])));
+    int between = 0;  // pixels on the checks' edges, where bilinear blends two texels
+    for (int x = 0; x < kWidth; ++x) {
+        const float g = bilinear.at(x, kHeight - 1).g;
+        between += g > 0.01f && g < 0.8f;
+    }
+    std::printf(
+        "bottom 20 rows: largest |oiio - bilinear| %.2e (%d blended pixels in the last row)\n",
+        worst, between);
+    EXPECT_GT(between, 20) << "the rows compared should cross the checks' edges";
     EXPECT_LT(worst, 0.01) << "OIIO's finest level should be the student's bilinear lookup";
 }
 
