@@ -39,7 +39,7 @@ OiioPlugin open_oiio_plugin(const std::vector<fs::path>& candidates) {
             tried += (tried.empty() ? "" : ", ") + path.string();
         }
     }
-    loaded.problem = "the OpenImageIO plug-in librt_oiio.so was not found (tried " + tried +
+    loaded.problem = "the OpenImageIO plug-in librt_oiio.so, which was not found (tried " + tried +
                      "); build the target rt_oiio or set RT_OIIO_PLUGIN to its path";
     return loaded;
 }

@@ -19,7 +19,7 @@ struct OiioPlugin {
     decltype(&rt_oiio_textures_add) textures_add = nullptr;
     decltype(&rt_oiio_textures_lookup) textures_lookup = nullptr;
     decltype(&rt_oiio_textures_destroy) textures_destroy = nullptr;
-    std::string problem;  // "was not found (tried ...)" when it could not be loaded
+    std::string problem;  // "the ... plug-in ..., which was not found (tried ...); <fix>"
 };
 
 // Loads the first of `candidates` that is the plug-in (tests name a missing one).
