@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -24,7 +25,12 @@ bool find(void* module, const char* name, F& out) {
 OiioPlugin open_oiio_plugin(const std::vector<fs::path>& candidates) {
     OiioPlugin loaded;
     std::string tried;
-    for (const fs::path& path : candidates) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const fs::path& path = candidates[k];
+        // The program's ../lib is usually where the build put it: try (and name) it once.
+        if (std::find(candidates.begin(), candidates.begin() + long(k), path) !=
+            candidates.begin() + long(k))
+            continue;
         if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
             if (find(module, "rt_oiio_read", loaded.read) &&
                 find(module, "rt_oiio_free", loaded.free) &&
