@@ -25,6 +25,7 @@
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "render/accelerate.h"
+#include "render/oiio_textures.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
@@ -50,7 +51,7 @@ struct RenderArgs {
     std::string debug_pixel, overlay_pixel;  // "X,Y"
     std::string debug_format = "text";
     std::string accelerator;     // "", "none" or "bvh": overrides the scene's
-    std::string texture_filter;  // "", "nearest" or "bilinear": overrides every image texture's
+    std::string texture_filter;  // "", nearest, bilinear, oiio, oiio-aniso: for every image
     double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
 };
 
@@ -89,7 +90,10 @@ int run_render(const RenderArgs& args) {
     if (args.yaw_degrees != 0) turn_camera(scene.camera, args.yaw_degrees);
     if (!args.accelerator.empty())
         scene.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
-    if (!args.texture_filter.empty())
+    // OpenImageIO's TextureSystem (and the plug-in) are loaded only when asked for.
+    if (args.texture_filter == "oiio" || args.texture_filter == "oiio-aniso")
+        use_oiio_textures(scene, args.texture_filter == "oiio-aniso");
+    else if (!args.texture_filter.empty())
         scene.texture_lookup =
             args.texture_filter == "nearest" ? TextureLookup::Nearest : TextureLookup::Bilinear;
     const RenderMode mode = args.mode.value_or(scene.mode);
@@ -271,8 +275,10 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--texture-filter", render_args.texture_filter,
                      "filter every image texture nearest or bilinear (stage 07), whatever the "
-                     "scene says")
-        ->check(CLI::IsMember({"nearest", "bilinear"}));
+                     "scene says; or oiio (OpenImageIO's TextureSystem, mip-mapped, trilinear) "
+                     "or oiio-aniso (anisotropic): footprints from camera-ray differentials, "
+                     "none (bilinear) for reflected and refracted rays")
+        ->check(CLI::IsMember({"nearest", "bilinear", "oiio", "oiio-aniso"}));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--height", render_args.height, "override the image height")

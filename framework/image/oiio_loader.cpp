@@ -2,30 +2,56 @@
 
 #include <dlfcn.h>
 
-#include <mutex>
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "core/diagnostics.h"
 #include "image/image.h"
-#include "image/oiio_plugin.h"
 
 namespace rt::image_files {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Plugin {
-    decltype(&rt_oiio_read) read = nullptr;
-    decltype(&rt_oiio_free) free = nullptr;
-    std::string problem;  // why it could not be loaded
-};
+template <typename F>
+bool find(void* module, const char* name, F& out) {
+    out = reinterpret_cast<F>(dlsym(module, name));
+    return out != nullptr;
+}
 
-// RT_OIIO_PLUGIN names the module; otherwise it sits in ../lib beside the program (the build
-// tree's and an install's layout), or where the build put it.
-const Plugin& plugin() {
-    static Plugin loaded;
-    static std::once_flag once;
-    std::call_once(once, [] {
+}  // namespace
+
+OiioPlugin open_oiio_plugin(const std::vector<fs::path>& candidates) {
+    OiioPlugin loaded;
+    std::string tried;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const fs::path& path = candidates[k];
+        // The program's ../lib is usually where the build put it: try (and name) it once.
+        if (std::find(candidates.begin(), candidates.begin() + long(k), path) !=
+            candidates.begin() + long(k))
+            continue;
+        if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
+            if (find(module, "rt_oiio_read", loaded.read) &&
+                find(module, "rt_oiio_free", loaded.free) &&
+                find(module, "rt_oiio_textures_create", loaded.textures_create) &&
+                find(module, "rt_oiio_textures_add", loaded.textures_add) &&
+                find(module, "rt_oiio_textures_lookup", loaded.textures_lookup) &&
+                find(module, "rt_oiio_textures_destroy", loaded.textures_destroy))
+                return loaded;
+            loaded = OiioPlugin{};
+            tried += (tried.empty() ? "" : ", ") + path.string() + " (not the plug-in)";
+        } else {
+            tried += (tried.empty() ? "" : ", ") + path.string();
+        }
+    }
+    loaded.problem = "the OpenImageIO plug-in librt_oiio.so, which was not found (tried " + tried +
+                     "); build the target rt_oiio or set RT_OIIO_PLUGIN to its path";
+    return loaded;
+}
+
+const OiioPlugin& oiio_plugin() {
+    static const OiioPlugin loaded = [] {
         std::vector<fs::path> candidates;
         if (const char* env = std::getenv("RT_OIIO_PLUGIN")) candidates.emplace_back(env);
         std::error_code ec;
@@ -34,34 +60,16 @@ const Plugin& plugin() {
 #ifdef RT_OIIO_PLUGIN_PATH
         candidates.emplace_back(RT_OIIO_PLUGIN_PATH);
 #endif
-        std::string tried;
-        for (const fs::path& path : candidates) {
-            if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-                loaded.read =
-                    reinterpret_cast<decltype(&rt_oiio_read)>(dlsym(module, "rt_oiio_read"));
-                loaded.free =
-                    reinterpret_cast<decltype(&rt_oiio_free)>(dlsym(module, "rt_oiio_free"));
-                if (loaded.read && loaded.free) return;
-                tried += (tried.empty() ? "" : ", ") + path.string() + " (not the plug-in)";
-            } else {
-                tried += (tried.empty() ? "" : ", ") + path.string();
-            }
-        }
-        loaded.problem =
-            "reading this format needs the OpenImageIO plug-in librt_oiio.so, which "
-            "was not found (tried " +
-            tried +
-            "); build the target rt_oiio, set "
-            "RT_OIIO_PLUGIN to its path, or convert the image to PNG or EXR";
-    });
+        return open_oiio_plugin(candidates);
+    }();
     return loaded;
 }
 
-}  // namespace
-
 DecodedImage read_with_oiio(const fs::path& file) {
-    const Plugin& p = plugin();
-    if (!p.read) throw ImageError(one_line(file.string() + ": error: " + p.problem));
+    const OiioPlugin& p = oiio_plugin();
+    if (!p.read)
+        throw ImageError(one_line(file.string() + ": error: reading this format needs " +
+                                  p.problem + ", or convert the image to PNG or EXR"));
     RtOiioImage raw{};
     char error[512] = "";
     if (!p.read(file.c_str(), kMaxSide, kMaxPixels, &raw, error, sizeof error))

@@ -24,4 +24,24 @@ int rt_oiio_read(const char* path, long long max_side, long long max_pixels, RtO
                  char* error, std::size_t error_size);
 void rt_oiio_free(RtOiioImage* image);
 
+// OpenImageIO's TextureSystem over the scene's own texels (`rt render --texture-filter oiio`):
+// each image is written once as a tiled, mip-mapped file into a private temporary directory
+// (make_texture), since OIIO 2.4's TextureSystem only reads through its ImageCache, which reads
+// files. Removed by rt_oiio_textures_destroy.
+struct RtOiioTextures;
+
+// A TextureSystem of its own (not OIIO's shared one); null with a one-line reason in `error`.
+RtOiioTextures* rt_oiio_textures_create(char* error, std::size_t error_size);
+// Adds an image of width * height linear RGB texels (row 0 at the top): mip levels are averaged
+// from these, so sRGB texels must be decoded first. Returns its index, or -1 and `error`.
+int rt_oiio_textures_add(RtOiioTextures* textures, const float* rgb, int width, int height,
+                         char* error, std::size_t error_size);
+// Filtered lookup at (s, t) = (u, v) with the footprint's derivatives in texture coordinates
+// (all 0: bilinear in the finest level). wrap: 0 periodic, 1 clamp, 2 mirror. anisotropic: 0
+// trilinear, else the largest anisotropy ratio. Thread-safe. Writes linear RGB into `rgb`.
+void rt_oiio_textures_lookup(RtOiioTextures* textures, int index, int wrap, int anisotropic,
+                             float s, float t, float dsdx, float dtdx, float dsdy, float dtdy,
+                             float* rgb);
+void rt_oiio_textures_destroy(RtOiioTextures* textures);
+
 }  // extern "C"

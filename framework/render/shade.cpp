@@ -80,7 +80,9 @@ void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& m
 
 // A frame's own work: the nearest hit, direct light (with stage 04's shadows when the scene has
 // them), and the secondary rays (stage 05) when the material reflects or transmits.
-void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
+// `rays`: the camera ray's differentials (texture filter footprints), null for other rays.
+void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
+                 const RayDifferential* rays = nullptr) {
     Hit hit;
     if (!nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit)) {
         f.colour = background(scene, f.ray.direction);
@@ -111,7 +113,7 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer) {
     const bool has_maps = scene.features.textures || scene.features.normal_maps;
     if (has_maps) {
         textured = scene_material;
-        apply_textures(scene, hit, at, to_viewer, textured, lighting_normal);
+        apply_textures(scene, hit, at, to_viewer, textured, lighting_normal, rays);
     }
     const Material& material = has_maps ? textured : scene_material;
 
@@ -177,14 +179,16 @@ class RayTreeRecorder : public TraceObserver {
 
 }  // namespace
 
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
-                TraceObserver* observer) {
+namespace {
+
+Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+            TraceObserver* observer, const RayDifferential* rays) {
     // Once per thread: constructing 65 frames per pixel would cost more than most pixels do.
     static thread_local Frame stack[kMaxTraceDepth + 1];
     int top = 0;
     stack[0].ray = ray, stack[0].depth = depth, stack[0].weight = weight;
     if (observer) observer->begin_ray(RayNode::Kind::Camera, depth, ray, Color(1), weight);
-    start_frame(scene, stack[0], observer);
+    start_frame(scene, stack[0], observer, rays);
     for (;;) {
         Frame& f = stack[top];
         while (f.recurse && f.next < 2 && !branch(f, f.next).valid) ++f.next;
@@ -209,6 +213,13 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weig
     }
 }
 
+}  // namespace
+
+Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+                TraceObserver* observer) {
+    return trace(scene, ray, depth, weight, observer, nullptr);
+}
+
 Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight) {
     if (!node) return trace_ray(scene, ray, depth, weight, nullptr);
     RayTreeRecorder recorder(scene, *node);
@@ -219,6 +230,17 @@ Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
     const Ray ray =
         camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
     if (tree) *tree = RayNode{};
+    // The OpenImageIO texture lookups filter over the pixel's footprint, which the neighbouring
+    // pixels' camera rays give; the other lookups need none, so skip the two rays.
+    if (scene.oiio_textures && (scene.texture_lookup == TextureLookup::Oiio ||
+                                scene.texture_lookup == TextureLookup::OiioAniso)) {
+        const Vec2 centre(Real(x) + Real(0.5), Real(y) + Real(0.5));
+        const RayDifferential rays{camera_ray(scene.camera, centre + Vec2(1, 0), scene.image),
+                                   camera_ray(scene.camera, centre + Vec2(0, 1), scene.image)};
+        if (!tree) return trace(scene, ray, 0, Color(1), nullptr, &rays);
+        RayTreeRecorder recorder(scene, *tree);
+        return trace(scene, ray, 0, Color(1), &recorder, &rays);
+    }
     return trace_ray(scene, ray, 0, tree);
 }
 

@@ -94,7 +94,60 @@ Vec3 surface_tangent(const Scene& scene, const Hit& hit, const SurfacePoint& at)
     return any_perpendicular(at.normal);
 }
 
-Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const Vec3& point) {
+namespace {
+
+bool oiio_lookup(const Scene& scene) {
+    return (scene.texture_lookup == TextureLookup::Oiio ||
+            scene.texture_lookup == TextureLookup::OiioAniso) &&
+           scene.oiio_textures;
+}
+
+// The barycentrics (beta, gamma) of `p` (in the triangle's plane) in triangle i.
+Vec2 barycentrics(const Scene& scene, std::size_t i, const Vec3& p) {
+    Vec3 p0, p1, p2;
+    scene.triangle_vertices(i, p0, p1, p2);
+    const Vec3 e1 = p1 - p0, e2 = p2 - p0, d = p - p0;
+    const Real d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const Real det = d11 * d22 - d12 * d12;
+    if (det == 0) return Vec2(0);
+    const Real a = glm::dot(d, e1), b = glm::dot(d, e2);
+    return Vec2((d22 * a - d12 * b) / det, (d11 * b - d12 * a) / det);
+}
+
+// uv at p', a point of the hit's tangent plane, and its difference from uv at the hit.
+Vec2 texcoord_step(const Scene& scene, const Hit& hit, const SurfacePoint& at, Vec2 uv,
+                   const Ray& ray) {
+    const Real facing = glm::dot(at.normal, ray.direction);
+    if (std::abs(facing) < Real(1e-8)) return Vec2(0);
+    const Real t = glm::dot(at.normal, at.point - ray.origin) / facing;
+    if (!(t > 0) || !std::isfinite(t)) return Vec2(0);
+    SurfacePoint moved = at;
+    moved.point = ray.at(t);
+    Hit moved_hit = hit;
+    std::size_t i = 0;
+    const bool primitive = scene.is_primitive(hit.primitive);
+    const Scene::Kind kind =
+        primitive ? scene.primitive_kind(hit.primitive, i) : Scene::Kind::Plane;
+    if (primitive && kind == Scene::Kind::Triangle)
+        moved_hit.uv = barycentrics(scene, i, moved.point);
+    Vec2 step = surface_texcoord(scene, moved_hit, moved) - uv;
+    // A sphere's u jumps from 1 to 0 at its seam; the footprint does not.
+    if (primitive && kind == Scene::Kind::Sphere) step.x -= std::round(step.x);
+    return step;
+}
+
+}  // namespace
+
+TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit, const SurfacePoint& at,
+                                         const RayDifferential& rays) {
+    TexcoordDerivatives d;
+    d.dx = texcoord_step(scene, hit, at, at.texcoord, rays.x);
+    d.dy = texcoord_step(scene, hit, at, at.texcoord, rays.y);
+    return d;
+}
+
+Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const Vec3& point,
+                    const TexcoordDerivatives& footprint) {
     if (!slot.used() || std::size_t(slot.texture) >= scene.textures.size()) return Color(1);
     const Texture& t = scene.textures[std::size_t(slot.texture)];
     const Vec2 mapped(uv.x * Real(slot.scale[0]) + Real(slot.offset[0]),
@@ -102,6 +155,12 @@ Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const 
     switch (t.kind) {
         case TextureKind::Image: {
             if (t.image < 0 || std::size_t(t.image) >= scene.texture_images.size()) return Color(1);
+            if (oiio_lookup(scene)) {
+                const Vec2 scale(slot.scale[0], slot.scale[1]);
+                return scene.oiio_textures->lookup(
+                    std::size_t(slot.texture), mapped,
+                    TexcoordDerivatives{footprint.dx * scale, footprint.dy * scale});
+            }
             const TextureView view = scene.texture_view(std::size_t(t.image), t.srgb);
             TextureFilter filter = t.filter;
             if (scene.texture_lookup == TextureLookup::Nearest) filter = TextureFilter::Nearest;
@@ -120,21 +179,27 @@ Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const 
 }
 
 void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& at, const Vec3& to_viewer,
-                    Material& material, Vec3& lighting_normal) {
+                    Material& material, Vec3& lighting_normal, const RayDifferential* rays) {
     at.texcoord = surface_texcoord(scene, hit, at);
+    TexcoordDerivatives footprint;
+    if (rays && oiio_lookup(scene)) footprint = texcoord_derivatives(scene, hit, at, *rays);
     if (material.diffuse_map.used()) {
-        const Color c = evaluate_slot(scene, material.diffuse_map, at.texcoord, at.point);
+        const Color c =
+            evaluate_slot(scene, material.diffuse_map, at.texcoord, at.point, footprint);
         material.diffuse *= c;
         material.ambient *= c;  // ambient light lights the surface's own colour
     }
     if (material.specular_map.used())
-        material.specular *= evaluate_slot(scene, material.specular_map, at.texcoord, at.point);
+        material.specular *=
+            evaluate_slot(scene, material.specular_map, at.texcoord, at.point, footprint);
     if (material.emissive_map.used())
-        material.emissive *= evaluate_slot(scene, material.emissive_map, at.texcoord, at.point);
+        material.emissive *=
+            evaluate_slot(scene, material.emissive_map, at.texcoord, at.point, footprint);
     if (material.normal_map.used()) {
         // The map's stored values: a normal map is data, never sRGB-decoded (the loader marks
         // it so), so evaluate_slot returns the texel as stored.
-        const Color texel = evaluate_slot(scene, material.normal_map, at.texcoord, at.point);
+        const Color texel =
+            evaluate_slot(scene, material.normal_map, at.texcoord, at.point, footprint);
         lighting_normal =
             normal_from_map(lighting_normal, surface_tangent(scene, hit, at), texel, to_viewer);
     }

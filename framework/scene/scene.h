@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -94,6 +95,8 @@ enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded, BvhVisi
 // BVH (built once after loading, by build_acceleration in render/accelerate.h).
 enum class Accelerator { None, Bvh };
 
+class OiioTextures;  // render/oiio_textures.h
+
 struct Scene {
     std::string source;  // the file it was loaded from, for messages
     Camera camera;
@@ -106,6 +109,8 @@ struct Scene {
     bool fresnel = false;    // Schlick-weighted reflection on transmissive materials (stage 05)
     Accelerator accelerator = Accelerator::None;
     TextureLookup texture_lookup = TextureLookup::PerTexture;  // stage 07
+    // The TextureSystem of TextureLookup::Oiio/OiioAniso (use_oiio_textures fills it).
+    std::shared_ptr<const OiioTextures> oiio_textures;
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;

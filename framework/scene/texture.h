@@ -21,8 +21,10 @@ enum class TextureKind : std::int32_t {
 enum class TextureFilter : std::int32_t { Nearest, Bilinear };
 enum class TextureWrap : std::int32_t { Repeat, Clamp, Mirror };
 // How a render filters image textures: each by its own filter, or all of them nearest or
-// bilinear (`rt render --texture-filter`, to compare them on one scene).
-enum class TextureLookup : std::int32_t { PerTexture, Nearest, Bilinear };
+// bilinear (`rt render --texture-filter`, to compare them on one scene), or all through
+// OpenImageIO's TextureSystem, mip-mapped (trilinear or anisotropic; render/oiio_textures.h),
+// a reference the course does not ask students to write.
+enum class TextureLookup : std::int32_t { PerTexture, Nearest, Bilinear, Oiio, OiioAniso };
 
 // One image of the texture table: `width` x `height` texels, row-major from the top row, starting
 // at Scene::texels[first]. The values are as the file stores them, scaled to [0, 1] for integer
