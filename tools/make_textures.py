@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the texture images of stage 07's scenes (stages/07-textures/scenes/textures/), made
 from code so that they can be re-made and reviewed: a test card whose orientation is plain to
-see, bricks, a normal map of round bumps and a fine checkerboard for the filtering demo.
+see, bricks, a normal map of round bumps, a fine checkerboard for the filtering demo and a
+latitude-longitude map of a made-up planet for a globe.
 
     python3 tools/make_textures.py [OUT_DIR]
 
@@ -71,14 +72,53 @@ def fine_checks(x, y):
     return (235, 235, 235) if (x // 4 + y // 4) % 2 == 0 else (20, 20, 20)
 
 
+def _hash(ix, iy):
+    h = (ix * 374761393 + iy * 668265263) & 0xFFFFFFFF
+    h = ((h ^ (h >> 13)) * 1274126177) & 0xFFFFFFFF
+    return ((h ^ (h >> 16)) & 0xFFFF) / 65535.0
+
+
+def _value_noise(x, y, period):
+    """Smooth value noise, periodic in x with `period` cells (so the globe has no seam)."""
+    ix, iy = math.floor(x), math.floor(y)
+    fx, fy = x - ix, y - iy
+    sx, sy = fx * fx * (3 - 2 * fx), fy * fy * (3 - 2 * fy)
+    def at(i, j):
+        return _hash(i % period, j)
+    top = at(ix, iy) * (1 - sx) + at(ix + 1, iy) * sx
+    bottom = at(ix, iy + 1) * (1 - sx) + at(ix + 1, iy + 1) * sx
+    return top * (1 - sy) + bottom * sy
+
+
+def globe(x, y):
+    """128 x 64 latitude-longitude map of a made-up planet: oceans and continents from periodic
+    value noise, ice caps, a grid about every 30 degrees and a red meridian at u = 0 (the seam)."""
+    u, v = (x + 0.5) / 128, (y + 0.5) / 64
+    if x == 0 or x == 127:
+        return (200, 30, 30)
+    if x % 11 == 0 and x < 121 or y % 11 == 0 and 0 < y < 60:
+        grid = True
+    else:
+        grid = False
+    if v < 0.08 or v > 0.92:
+        return (235, 240, 245)
+    land = (_value_noise(u * 8, v * 4, 8) * 0.65 + _value_noise(u * 16, v * 8, 16) * 0.35) > 0.55
+    colour = (70, 140, 60) if land else (30, 70, 150)
+    if grid:
+        colour = tuple(min(255, c + 60) for c in colour)
+    return colour
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "stages", "07-textures", "scenes",
         "textures")
     os.makedirs(out, exist_ok=True)
     for name, fn in (("test_card", test_card), ("bricks", bricks),
-                     ("bumps_normal", bumps_normal), ("fine_checks", fine_checks)):
-        write_png(os.path.join(out, name + ".png"), 64, 64, fn)
+                     ("bumps_normal", bumps_normal), ("fine_checks", fine_checks),
+                     ("globe", globe)):
+        width = 128 if name == "globe" else 64
+        write_png(os.path.join(out, name + ".png"), width, 64, fn)
         print(os.path.join(out, name + ".png"))
 
 

@@ -135,6 +135,20 @@ TEST_F(Bilinear, EdgesFollowTheWrapMode) {
                   "mirror: column 0 mirrored onto itself");
 }
 
+TEST_F(Bilinear, ReproducesALinearRamp) {
+    // Stored values 0, 1/3, 2/3, 1 (data): between the first and last texel centres, bilinear
+    // filtering is exact linear interpolation, whatever the position.
+    std::vector<Color> ramp;
+    for (int i = 0; i < 4; ++i) ramp.push_back(Color(float(i) / 3, 0.5f, 1 - float(i) / 3));
+    const TextureView view{ramp.data(), 4, 1, false};
+    for (int k = 0; k <= 12; ++k) {
+        const Real u = Real(0.125) + Real(k) * Real(0.75 / 12);  // centre of texel 0 to texel 3
+        const float expected = float((u * 4 - Real(0.5)) / 3);
+        expect_colour(sample_bilinear(view, Vec2(u, 0.5f), TextureWrap::Clamp),
+                      Color(expected, 0.5f, 1 - expected), "on the ramp", 2e-6f);
+    }
+}
+
 TEST_F(Bilinear, DecodesEachTexelBeforeWeighting) {
     std::vector<Color> texels = {Color(0), Color(1)};
     const TextureView view{texels.data(), 2, 1, true};

@@ -41,6 +41,27 @@ TEST_F(NormalMap, TangentIsOrthonormalisedFirst) {
                     "tangent (2, 3, 0) on N = +y acts as +x");
 }
 
+TEST_F(NormalMap, TheFrameIsOrthonormal) {
+    // The pure texels (1, .5, .5), (.5, 1, .5) and (.5, .5, 1) give T', B and N themselves: unit
+    // length, mutually perpendicular, right-handed (B = N x T'), for leaning tangents too.
+    const Vec3 normals[] = {glm::normalize(Vec3(0.2f, 1, -0.3f)), glm::normalize(Vec3(-1, 0.1f, 0)),
+                            glm::normalize(Vec3(0.3f, -0.4f, 0.8f))};
+    const Vec3 tangents[] = {Vec3(1, 0.5f, 0), Vec3(0, 2, 1), Vec3(1, 1, 1)};
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& n = normals[k];
+        const Vec3 t = normal_from_map(n, tangents[k], Color(1, 0.5f, 0.5f), n);
+        const Vec3 b = normal_from_map(n, tangents[k], Color(0.5f, 1, 0.5f), n);
+        const Vec3 same = normal_from_map(n, tangents[k], Color(0.5f, 0.5f, 1), n);
+        EXPECT_NEAR(glm::length(t), 1, 1e-5) << "case " << k;
+        EXPECT_NEAR(glm::length(b), 1, 1e-5) << "case " << k;
+        EXPECT_NEAR(glm::dot(t, n), 0, 1e-5) << "T' is perpendicular to N, case " << k;
+        EXPECT_NEAR(glm::dot(b, n), 0, 1e-5) << "B is perpendicular to N, case " << k;
+        EXPECT_NEAR(glm::dot(t, b), 0, 1e-5) << "T' is perpendicular to B, case " << k;
+        expect_vec_near(b, glm::cross(n, t), "B = cross(N, T')");
+        expect_vec_near(same, n, "the flat texel");
+    }
+}
+
 TEST_F(NormalMap, NeverFacesAwayFromTheViewer) {
     // m = (-1, 0, 0.2): tilted hard towards -x; a viewer low on the +x side would see its back.
     const Vec3 to_viewer = glm::normalize(Vec3(1, 0.1f, 0));

@@ -34,6 +34,25 @@ TEST_F(Checker, ThreeDimensional) {
     EXPECT_EQ(checker_3d(Vec3(0.3f, 0.1f, 0.1f), kA, kB, 0.25f), kB) << "cubes of side 0.25";
 }
 
+TEST_F(Checker, PeriodicAndDeterministic) {
+    for (int i = 0; i < 50; ++i) {
+        const Vec2 uv(Real(i) * 0.37f - 7, Real(i) * 0.61f - 9);
+        EXPECT_EQ(checker_2d(uv, kA, kB), checker_2d(uv + Vec2(2, 0), kA, kB)) << "period 2 in u";
+        EXPECT_EQ(checker_2d(uv, kA, kB), checker_2d(uv + Vec2(0, 2), kA, kB)) << "period 2 in v";
+        EXPECT_NE(checker_2d(uv, kA, kB), checker_2d(uv + Vec2(1, 0), kA, kB))
+            << "neighbours differ";
+        const Vec3 p(Real(i) * 0.13f, Real(i) * 0.29f - 2, 1.5f - Real(i) * 0.07f);
+        EXPECT_EQ(checker_3d(p, kA, kB, 0.5f), checker_3d(p + Vec3(0, 0, 1), kA, kB, 0.5f))
+            << "period 2 size";
+    }
+}
+
+TEST_F(Noise, Deterministic) {
+    const Vec3 p(1.23f, -4.56f, 7.89f);
+    EXPECT_EQ(gradient_noise(p), gradient_noise(p)) << "the same point, the same value";
+    EXPECT_EQ(marble(p, kA, kB, 1), marble(p, kA, kB, 1));
+}
+
 TEST_F(Noise, ZeroAtLatticePoints) {
     for (int x = -2; x <= 2; ++x)
         for (int y = -2; y <= 2; ++y)
