@@ -64,6 +64,11 @@ TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
     EXPECT_FALSE(m.specular_map.used());
     EXPECT_TRUE(s.features.textures);
     EXPECT_TRUE(s.features.normal_maps);
+    EXPECT_TRUE(s.features.image_textures);
+    EXPECT_TRUE(s.features.checker_textures) << "the emissive map is a checker";
+    EXPECT_FALSE(s.features.noise_textures) << "no material uses marble";
+    EXPECT_NE(s.features.describe().find("(images checkers)"), std::string::npos)
+        << s.features.describe();
 }
 
 TEST(TextureLoading, MtlMapsBecomeTextures) {
