@@ -87,11 +87,12 @@ void write_header(std::ostream& m, const AccuracyResults& r, const std::string& 
 
 void write_what_is_measured(std::ostream& m) {
     m << "## What is measured\n\n"
-         "Triangle methods: Cramer's rule as taught in stage 02, Moeller-Trumbore, the watertight "
-         "test of Woop, "
+         "Triangle methods: Cramer's rule as taught in stage 02, Moeller-Trumbore, a seed course's "
+         "plane-then-same-side test (the Leeds tracer), the watertight test of Woop, "
          "Benthin and Wald (as in `framework/geometry/watertight.cpp`), and that test with fused "
          "multiply-adds "
-         "in its edge functions. Sphere methods: the textbook quadratic, the q-form (roots q/a and "
+         "in its edge functions. Sphere methods: the textbook quadratic, a seed course's geometric "
+         "method with its t_ca < 0 early exit (the Arizona lecture), the q-form (roots q/a and "
          "c/q), and "
          "Ray Tracing Gems ch. 7 (q-form with the discriminant as r^2 - |l|^2, the stage 02 "
          "solution). All are "
@@ -270,7 +271,24 @@ void write_spheres(std::ostream& m, const AccuracyResults& r, const std::string&
       << "- *Near-tangent rays* are a tie within rounding for every method (sphere-grazing): RTG "
          "float "
       << say(r, "sphere-grazing", "RTG ch. 7", "float", fhit) << " false hits, textbook float "
-      << say(r, "sphere-grazing", "textbook", "float", fhit) << ".\n";
+      << say(r, "sphere-grazing", "textbook", "float", fhit) << ".\n"
+      << "- *The seeds' geometric method* (the Arizona lecture: t_ca = L.d, give up when t_ca < 0) "
+         "assumes the origin is outside. From inside a sphere whose centre lies behind the origin "
+         "it misses a surface that is there: "
+      << say(r, "sphere-inside", "geometric (Arizona)", "float", fmiss)
+      << " false misses in sphere-inside, against "
+      << say(r, "sphere-inside", "RTG ch. 7", "float", fmiss)
+      << " for RTG. Refraction rays start inside spheres, so glass goes black with it. Outside, "
+         "d2 = L.L - t_ca^2 cancels as the textbook discriminant does (far-small: "
+      << say(r, "far-small", "geometric (Arizona)", "float", fhit) << " false hits and "
+      << say(r, "far-small", "geometric (Arizona)", "float", fmiss) << " false misses).\n"
+      << "- *The seeds' plane and same-side triangle test* (the Leeds tracer) decides each edge "
+         "from a point it has already rounded: "
+      << say(r, "through-edge", "plane + same side (Leeds)", "float", leak)
+      << " leaks exactly through an edge and "
+      << say(r, "near-edge", "plane + same side (Leeds)", "float", leak)
+      << " near one, against Cramer's " << say(r, "through-edge", "Cramer", "float", leak)
+      << " and " << say(r, "near-edge", "Cramer", "float", leak) << ".\n";
 }
 
 void write_self_intersection(std::ostream& m, const AccuracyResults& r) {
