@@ -236,6 +236,10 @@ AccuracyResults run_accuracy(const AccuracyConfig& config) {
         if (config.progress) config.progress("self-intersection");
     }
     if (config.rendering) detail::rendering(config, res);
+    if (config.textures) {
+        res.texture = measure_texture_filters(200, 150, res.texture_note);
+        if (config.progress) config.progress("texture filters");
+    }
     res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return res;
 }
