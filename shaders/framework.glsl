@@ -3,7 +3,8 @@
 // twins of framework/core/hit.h and framework/geometry/offset.cpp). Included by trace.comp after
 // scene_layout.glsl; everything here is float (GLSL has double, most GPUs run it slowly).
 
-const float kInfinity = uintBitsToFloat(0x7f800000u);
+// A macro: uintBitsToFloat is not a constant expression for glslang.
+#define kInfinity uintBitsToFloat(0x7f800000u)
 const float kPi = 3.14159265358979323846;
 
 struct Ray { vec3 origin; vec3 direction; };

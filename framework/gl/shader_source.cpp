@@ -26,6 +26,14 @@ std::string trim_left(const std::string& s) {
     return i == std::string::npos ? "" : s.substr(i);
 }
 
+// Mesa 22 reports every message as source string 0 whatever #line says, so the file is also
+// encoded in the line number: file k's line n is line k * kFileLines + n.
+constexpr int kFileLines = 100000;
+
+std::string line_directive(int line, int file) {
+    return "#line " + std::to_string(file * kFileLines + line) + " " + std::to_string(file) + "\n";
+}
+
 class Assembler {
   public:
     Assembler(const std::vector<fs::path>& dirs, AssembledShader& out) : dirs_(dirs), out_(out) {}
@@ -40,6 +48,7 @@ class Assembler {
         const int id = int(out_.files.size());
         out_.files.push_back(display_path(path));
         included_.insert(fs::weakly_canonical(path));
+        if (!entry) out_.text += line_directive(1, id);
         std::istringstream lines(text);
         std::string line, function;
         int number = 0;
@@ -51,7 +60,7 @@ class Assembler {
             std::smatch m;
             if (entry && number == 1 && line.starts_with("#version")) {
                 out_.text += line + "\n" + defines;
-                out_.text += "#line " + std::to_string(number + 1) + " " + std::to_string(id) + "\n";
+                out_.text += line_directive(number + 1, id);
                 continue;
             }
             if (std::regex_match(line, m, include_re)) {
@@ -65,8 +74,7 @@ class Assembler {
                 if (!included_.contains(fs::weakly_canonical(found)) &&
                     !add(found, defines, false))
                     return false;
-                out_.text += "#line " + std::to_string(number + 1) + " " + std::to_string(id) +
-                             "\n";
+                out_.text += line_directive(number + 1, id);
                 continue;
             }
             if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
@@ -114,19 +122,21 @@ std::string display_path(const fs::path& path) {
 std::string map_compile_log(const std::string& log, const std::vector<std::string>& files) {
     static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\): (.*)$)");
     static const std::regex glslang(R"(^(ERROR|WARNING): (\d+):(\d+): (.*)$)");
-    auto file = [&](const std::string& k) {
-        const std::size_t i = std::stoul(k);
-        return i < files.size() ? files[i] : "source " + k;
+    // "file:line" of a (source string, line) pair; the line number carries the file.
+    auto where = [&](const std::string& k, const std::string& l) {
+        const long line = std::stol(l);
+        const std::size_t i = line >= kFileLines ? std::size_t(line / kFileLines) : std::stoul(k);
+        const std::string name = i < files.size() ? files[i] : "source " + std::to_string(i);
+        return name + ":" + std::to_string(line % kFileLines);
     };
     std::istringstream lines(log);
     std::string line, out;
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_match(line, m, mesa))
-            line = file(m[1]) + ":" + m[2].str() + ":" + m[3].str() + ": " + m[4].str();
+            line = where(m[1], m[2]) + ":" + m[3].str() + ": " + m[4].str();
         else if (std::regex_match(line, m, glslang))
-            line = file(m[2]) + ":" + m[3].str() + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") +
-                   m[4].str();
+            line = where(m[2], m[3]) + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") + m[4].str();
         if (!line.empty()) out += line + "\n";
     }
     return out;

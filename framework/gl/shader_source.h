@@ -2,7 +2,10 @@
 // every switch of file so the driver's messages carry our line numbers, and the source-string
 // number K mapped back to a path, so an error reads
 //   stages/09-gpu/intersect.glsl:12:5: error: ...
-// Integer source strings work with every compiler (Mesa, glslang), with no extension needed.
+// Mesa 22 prints every message as source string 0, whatever #line says, so the line number
+// carries the file as well (file k's line n is k * 100000 + n). Plain integers work with every
+// compiler; file names in #line would need GL_ARB_shading_language_include (Mesa) or
+// GL_GOOGLE_cpp_style_line_directive (glslang), which not every driver has.
 //
 // Student stubs are written as in C++, RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#section");
 // GLSL has no strings, so each live one becomes rt_not_implemented(k) and the host keeps
