@@ -127,9 +127,9 @@ int run_render(const RenderArgs& args) {
     Image image = args.gpu ? render_gpu(scene, mode, gpu) : render(scene, mode, options);
     if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
-    const std::string how = args.gpu ? "GPU (" + args.gl + ")"
-                                     : std::to_string(resolve_thread_count(args.threads)) +
-                                           " threads";
+    const std::string how = args.gpu
+                                ? "GPU (" + args.gl + ")"
+                                : std::to_string(resolve_thread_count(args.threads)) + " threads";
     if (!args.quiet)
         std::printf("%s: %dx%d, %s, %s, %.2f s -> %s\n", args.scene.c_str(), scene.image.width,
                     scene.image.height, to_string(mode), how.c_str(), seconds_since(start),
@@ -335,7 +335,8 @@ int main(int argc, char** argv) {
     auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
     gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
     std::string gl_kind;
-    gl_cmd->add_option("--gl", gl_kind, "create the GPU stage's context instead and print its limits")
+    gl_cmd
+        ->add_option("--gl", gl_kind, "create the GPU stage's context instead and print its limits")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
 
     std::vector<std::string> fmt_files;

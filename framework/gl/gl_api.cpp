@@ -3,8 +3,8 @@
 namespace rt {
 
 std::string GlApi::load(GlProcLoader loader) {
-#define RT_GL_LOAD(type, name)                                        \
-    name = reinterpret_cast<type>(loader("gl" #name));                \
+#define RT_GL_LOAD(type, name)                         \
+    name = reinterpret_cast<type>(loader("gl" #name)); \
     if (!name) return "gl" #name;
     RT_GL_FUNCTIONS(RT_GL_LOAD)
 #undef RT_GL_LOAD

@@ -24,38 +24,38 @@ struct GlLimits {
 };
 
 struct GlApi {
-#define RT_GL_FUNCTIONS(X)                                                                  \
-    X(PFNGLGETSTRINGPROC, GetString)                                                        \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                    \
-    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                                \
-    X(PFNGLGETERRORPROC, GetError)                                                          \
-    X(PFNGLCREATESHADERPROC, CreateShader)                                                  \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                  \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                                                \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                    \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                          \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                                                  \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                                \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                                                  \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                    \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                                  \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                        \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                                \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                                                      \
-    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                      \
-    X(PFNGLUNIFORM1IPROC, Uniform1i)                                                        \
-    X(PFNGLUNIFORM1FPROC, Uniform1f)                                                        \
-    X(PFNGLUNIFORM2IPROC, Uniform2i)                                                        \
-    X(PFNGLUNIFORM3FPROC, Uniform3f)                                                        \
-    X(PFNGLUNIFORM4IPROC, Uniform4i)                                                        \
-    X(PFNGLGENBUFFERSPROC, GenBuffers)                                                      \
-    X(PFNGLBINDBUFFERPROC, BindBuffer)                                                      \
-    X(PFNGLBUFFERDATAPROC, BufferData)                                                      \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                              \
-    X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                                          \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                                \
-    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                            \
-    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                                \
+#define RT_GL_FUNCTIONS(X)                             \
+    X(PFNGLGETSTRINGPROC, GetString)                   \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)               \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)           \
+    X(PFNGLGETERRORPROC, GetError)                     \
+    X(PFNGLCREATESHADERPROC, CreateShader)             \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)             \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)           \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)               \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)     \
+    X(PFNGLDELETESHADERPROC, DeleteShader)             \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)           \
+    X(PFNGLATTACHSHADERPROC, AttachShader)             \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)               \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)             \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)   \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)           \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                 \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation) \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                   \
+    X(PFNGLUNIFORM1FPROC, Uniform1f)                   \
+    X(PFNGLUNIFORM2IPROC, Uniform2i)                   \
+    X(PFNGLUNIFORM3FPROC, Uniform3f)                   \
+    X(PFNGLUNIFORM4IPROC, Uniform4i)                   \
+    X(PFNGLGENBUFFERSPROC, GenBuffers)                 \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                 \
+    X(PFNGLBUFFERDATAPROC, BufferData)                 \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)         \
+    X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)     \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)           \
+    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)       \
+    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)           \
     X(PFNGLFINISHPROC, Finish)
 #define RT_GL_MEMBER(type, name) type name = nullptr;
     RT_GL_FUNCTIONS(RT_GL_MEMBER)

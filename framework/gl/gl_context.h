@@ -14,7 +14,7 @@ namespace rt {
 
 enum class GlKind { Egl, OsMesa, Window };
 
-const char* to_string(GlKind kind);                    // "egl", "osmesa", "window"
+const char* to_string(GlKind kind);                     // "egl", "osmesa", "window"
 std::optional<GlKind> parse_gl_kind(std::string_view);  // the inverse
 
 class GlContext {

@@ -71,8 +71,7 @@ class Assembler {
                                  "\" not found beside the file or in the shader folders";
                     return false;
                 }
-                if (!included_.contains(fs::weakly_canonical(found)) &&
-                    !add(found, defines, false))
+                if (!included_.contains(fs::weakly_canonical(found)) && !add(found, defines, false))
                     return false;
                 out_.text += line_directive(number + 1, id);
                 continue;
@@ -136,7 +135,8 @@ std::string map_compile_log(const std::string& log, const std::vector<std::strin
         if (std::regex_match(line, m, mesa))
             line = where(m[1], m[2]) + ":" + m[3].str() + ": " + m[4].str();
         else if (std::regex_match(line, m, glslang))
-            line = where(m[2], m[3]) + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") + m[4].str();
+            line =
+                where(m[2], m[3]) + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") + m[4].str();
         if (!line.empty()) out += line + "\n";
     }
     return out;

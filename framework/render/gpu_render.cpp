@@ -205,8 +205,7 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
         for (std::size_t i = 0; i < pixel_count; ++i) {
             const float t = output[i + 1].a;
             if (t == -2.0f) continue;
-            image.pixels[i] =
-                t < 0 ? Color(0) : display_value(Color(1 - 0.8f * (t - near) / span));
+            image.pixels[i] = t < 0 ? Color(0) : display_value(Color(1 - 0.8f * (t - near) / span));
         }
     }
     return image;

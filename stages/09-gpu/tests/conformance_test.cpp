@@ -54,7 +54,8 @@ TEST_P(Conformance, GpuMatchesCpu) {
     const Case& c = GetParam();
     Scene scene = load_scene(::rt::testing::source_dir() / "stages" / c.scene);
     const int width = 64;
-    scene.image.height = std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
+    scene.image.height =
+        std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
     scene.image.width = width;
     build_acceleration(scene);
     const RenderMode mode = mode_named(c.mode, scene.mode);
@@ -64,8 +65,8 @@ TEST_P(Conformance, GpuMatchesCpu) {
     options.tolerance = 2;
     options.max_failing_percent = 0.5;
     const CompareResult r = compare_images(to_image8(gpu), to_image8(cpu), options);
-    EXPECT_TRUE(r.passed) << c.scene << " (" << to_string(mode) << ", GPU against CPU): "
-                          << r.summary();
+    EXPECT_TRUE(r.passed) << c.scene << " (" << to_string(mode)
+                          << ", GPU against CPU): " << r.summary();
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {

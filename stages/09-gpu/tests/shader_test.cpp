@@ -3,13 +3,13 @@
 // shader, and the two headless contexts render the same image.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "core/not_implemented.h"
 #include "gl/shader_source.h"
@@ -41,7 +41,8 @@ void write(const fs::path& file, const std::string& text) {
 class StudentCopy {
   public:
     explicit StudentCopy(const std::string& name)
-        : dir_(fs::temp_directory_path() / ("rt-stage09-" + name + "-" + std::to_string(getpid()))) {
+        : dir_(fs::temp_directory_path() /
+               ("rt-stage09-" + name + "-" + std::to_string(getpid()))) {
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         for (const char* f : kStudentFiles)
@@ -61,11 +62,16 @@ std::string strip_solutions(const std::string& text) {
     enum { Outside, Solution, Stub } state = Outside;
     while (std::getline(lines, line)) {
         const std::string t = line.substr(std::min(line.size(), line.find_first_not_of(' ')));
-        if (t == "// BEGIN SOLUTION") state = Solution;
-        else if (t == "// STUB") state = Stub;
-        else if (t == "// END SOLUTION") state = Outside;
-        else if (state == Outside) out += line + "\n";
-        else if (state == Stub) out += line.replace(line.find("// "), 3, "") + "\n";
+        if (t == "// BEGIN SOLUTION")
+            state = Solution;
+        else if (t == "// STUB")
+            state = Stub;
+        else if (t == "// END SOLUTION")
+            state = Outside;
+        else if (state == Outside)
+            out += line + "\n";
+        else if (state == Stub)
+            out += line.replace(line.find("// "), 3, "") + "\n";
     }
     return out;
 }
@@ -96,8 +102,9 @@ TEST(GpuShader, CompileErrorNamesTheStudentFileAndLine) {
     } catch (const GpuError& e) {
         const std::string message = e.what();
         const std::string where = display_path(file) + ":" + std::to_string(line) + ":";
-        EXPECT_EQ(message.rfind(where, 0), 0u) << "expected the message to start with " << where
-                                               << "\n" << message;
+        EXPECT_EQ(message.rfind(where, 0), 0u)
+            << "expected the message to start with " << where << "\n"
+            << message;
         EXPECT_NE(message.find("error"), std::string::npos) << message;
         EXPECT_NE(message.find("undeclared_thing"), std::string::npos) << message;
     }
@@ -123,7 +130,8 @@ TEST(GpuShader, MissingIncludeIsOneLine) {
 // stub once: "not implemented: perspective_ray (.../camera.glsl:N); read ...#camera-rays".
 TEST(GpuShader, StubsCompileAndAreReportedOnce) {
     StudentCopy copy("stubs");
-    for (const char* f : kStudentFiles) write(copy.dir() / f, strip_solutions(read(copy.dir() / f)));
+    for (const char* f : kStudentFiles)
+        write(copy.dir() / f, strip_solutions(read(copy.dir() / f)));
     GpuRenderOptions options;
     options.student_dir = copy.dir();
     const Scene scene = small_scene("05-recursion/scenes/whitted.json");
@@ -155,17 +163,16 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
                                     "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n"};
     int n = 0;
     for (const std::string& defines : variants) {
-        const AssembledShader shader = assemble_shader(root / "shaders/trace.comp",
-                                                       {root / "stages/09-gpu"}, defines);
+        const AssembledShader shader =
+            assemble_shader(root / "shaders/trace.comp", {root / "stages/09-gpu"}, defines);
         ASSERT_EQ(shader.error, "");
-        const fs::path file = fs::temp_directory_path() /
-                              ("rt-stage09-" + std::to_string(getpid()) + "-" +
-                               std::to_string(n++) + ".comp");
+        const fs::path file =
+            fs::temp_directory_path() /
+            ("rt-stage09-" + std::to_string(getpid()) + "-" + std::to_string(n++) + ".comp");
         write(file, shader.text);
         const fs::path log = file.string() + ".log";
-        const int status = std::system(("glslangValidator '" + file.string() + "' > '" +
-                                        log.string() + "' 2>&1")
-                                           .c_str());
+        const int status = std::system(
+            ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
         EXPECT_EQ(status, 0) << map_compile_log(read(log), shader.files);
         fs::remove(file), fs::remove(log);
     }
