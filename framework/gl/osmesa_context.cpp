@@ -42,8 +42,8 @@ std::unique_ptr<GlContext> create_osmesa_context(std::string& error) {
     }
     if (!c->context) {
         error =
-            "osmesa: no OpenGL 4.3+ core context (install libosmesa6; Mesa 25.1+ has no OSMesa: "
-            "use --gl egl)";
+            "osmesa: no OpenGL 4.3+ core context (compute shaders need 4.3; is libosmesa6 "
+            "installed? Mesa 25.1+ has no OSMesa: use --gl egl)";
         return nullptr;
     }
     if (!OSMesaMakeCurrent(c->context, c->buffer.data(), GL_UNSIGNED_BYTE, 4, 4)) {

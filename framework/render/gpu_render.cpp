@@ -139,7 +139,7 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     check_supported(scene, mode);
     std::string error;
     std::unique_ptr<GlContext> context = GlContext::create(options.context, error);
-    if (!context) throw GpuError(error);
+    if (!context) throw GpuError("rt: error: " + error);
     if (options.log) *options.log << "gpu: " << context->describe() << "\n";
     const GlApi& gl = context->gl();
 
