@@ -78,5 +78,19 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Conformance, ::testing::ValuesIn(kCases), case_name);
 
+// The two headless contexts run the student's shaders to the same image.
+RT_TEST_SUITE(GpuContexts);
+
+TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
+    Scene scene = load_scene(::rt::testing::source_dir() / "stages/04-shadows/scenes/shadows.json");
+    scene.image.width = 32, scene.image.height = 24;
+    build_acceleration(scene);
+    GpuRenderOptions osmesa;
+    osmesa.context = GlKind::OsMesa;
+    const Image a = render_gpu(scene, RenderMode::Shaded);
+    const Image b = render_gpu(scene, RenderMode::Shaded, osmesa);
+    EXPECT_EQ(a.pixels, b.pixels);
+}
+
 }  // namespace
 }  // namespace rt

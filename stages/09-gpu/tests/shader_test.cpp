@@ -1,6 +1,7 @@
 // Stage 09, the shader machinery: a compile error names the student's file and line, a stub is
 // reported once with its file and line and paints magenta, glslangValidator accepts every
-// shader, and the two headless contexts render the same image.
+// shader. These pass whatever the student's GLSL computes, so they are framework tests (label
+// framework;gpu), not stage09 ones: a starter tree's stage09 tests must all fail on the stubs.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -178,17 +179,6 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         EXPECT_EQ(status, 0) << map_compile_log(read(log), shader.files);
         fs::remove(file), fs::remove(log);
     }
-}
-
-RT_TEST_SUITE(GpuContexts);
-
-TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
-    const Scene scene = small_scene("04-shadows/scenes/shadows.json");
-    GpuRenderOptions osmesa;
-    osmesa.context = GlKind::OsMesa;
-    const Image a = render_gpu(scene, RenderMode::Shaded);
-    const Image b = render_gpu(scene, RenderMode::Shaded, osmesa);
-    EXPECT_EQ(a.pixels, b.pixels);
 }
 
 TEST(GpuShader, ScenesTheGpuCannotDrawYetSaySo) {
