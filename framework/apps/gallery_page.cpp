@@ -1,0 +1,187 @@
+#include "apps/gallery_page.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+std::string html(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
+    }
+    return out;
+}
+
+// A link from the gallery folder to `target`, with '/' separators (a browser's form).
+std::string relative_link(const fs::path& target, const fs::path& from) {
+    return fs::relative(fs::weakly_canonical(target), fs::weakly_canonical(from)).generic_string();
+}
+
+json read_json(const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) return json::object();
+    return json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+// The grader's thresholds (grader/stage_specs.cpp): image_defaults, then the scene's own keys.
+void read_thresholds(const json& j, CompareOptions& options, double& fail_percent) {
+    if (!j.is_object()) return;
+    options.tolerance = j.value("tolerance", options.tolerance);
+    options.max_failing_percent = j.value("pass_percent", options.max_failing_percent);
+    options.neighbourhood = j.value("neighbourhood", options.neighbourhood);
+    fail_percent = j.value("fail_percent", fail_percent);
+}
+
+const char* const kStyle = R"(<style>
+body { font: 14px system-ui, sans-serif; margin: 1.5em; background: #1d1f21; color: #ddd; }
+a { color: #8ab4f8; }
+h2 { margin-top: 1.6em; border-bottom: 1px solid #444; }
+.scene { display: inline-block; vertical-align: top; margin: 0 1.2em 1.2em 0; padding: .5em;
+         background: #2a2c2f; border-left: 6px solid #666; }
+.scene.pass { border-color: #3c3; } .scene.partial { border-color: #fc3; }
+.scene.fail { border-color: #e33; } .scene.none { border-color: #666; }
+.scene img { width: 200px; image-rendering: pixelated; margin-right: 4px; background: #000; }
+.scene .cols { display: flex; } .scene .cols div { text-align: center; font-size: 12px; }
+.badge { font-weight: bold; } .pass .badge { color: #3c3; } .partial .badge { color: #fc3; }
+.fail .badge { color: #e33; }
+.metric { font-size: 12px; color: #aaa; max-width: 612px; }
+</style>)";
+
+}  // namespace
+
+GalleryPage::GalleryPage(fs::path source, fs::path out)
+    : source_(std::move(source)), out_(std::move(out)) {}
+
+const GalleryPage::Stage& GalleryPage::stage_info(const fs::path& stage) {
+    const std::string key = stage.filename().string();
+    if (auto it = stages_.find(key); it != stages_.end()) return it->second;
+    Stage s;
+    const json meta = read_json(stage / "stage.json");
+    s.title = meta.is_object() ? meta.value("title", key) : key;
+    s.handout = relative_link(stage / "README.md", out_);
+    const json grading = read_json(stage / "grading.json");
+    if (grading.is_object()) {
+        read_thresholds(grading.value("image_defaults", json::object()), s.options, s.fail_percent);
+        for (const json& scene : grading.value("scenes", json::array())) {
+            const std::string name = scene.value("name", "");
+            s.graded.push_back(name);
+            CompareOptions options = s.options;
+            double ignored = s.fail_percent;
+            read_thresholds(scene, options, ignored);
+            s.scene_options[name] = options;
+        }
+    }
+    return stages_.emplace(key, std::move(s)).first->second;
+}
+
+void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const fs::path& image_file,
+                      const Image& image) {
+    const Stage& s = stage_info(stage);
+    Entry e;
+    e.stage = stage.filename().string();
+    e.name = scene_file.stem().string();
+    e.graded = std::find(s.graded.begin(), s.graded.end(), e.name) != s.graded.end();
+    e.options = e.graded ? s.scene_options.at(e.name) : s.options;
+    e.fail_percent = s.fail_percent;
+    e.image = relative_link(image_file, out_);
+    const fs::path reference = source_ / "reference_images" / e.stage / (e.name + ".png");
+    if (fs::exists(reference)) {
+        const fs::path folder = image_file.parent_path();
+        const fs::path copy = folder / (e.name + ".reference.png");
+        const fs::path difference = folder / (e.name + ".difference.png");
+        fs::copy_file(reference, copy, fs::copy_options::overwrite_existing);
+        e.result = compare_images(to_image8(image), read_image8(reference), e.options);
+        e.compared = true;
+        e.reference = relative_link(copy, out_);
+        if (e.result.size_matches) {
+            write_image8(e.result.heat_map, difference);
+            e.difference = relative_link(difference, out_);
+        }
+    }
+    entries_.push_back(std::move(e));
+}
+
+int GalleryPage::failing() const {
+    return int(std::count_if(entries_.begin(), entries_.end(), [](const Entry& e) {
+        return e.graded && (!e.compared || !e.result.passed);
+    }));
+}
+
+fs::path GalleryPage::write() const {
+    std::ostringstream page;
+    int passed = 0, graded = 0;
+    for (const Entry& e : entries_)
+        if (e.graded) ++graded, passed += e.compared && e.result.passed;
+    page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         << "<title>rt gallery</title>\n"
+         << kStyle << "\n</head>\n<body>\n"
+         << "<h1>rt gallery</h1>\n<p>" << passed << " of " << graded
+         << " graded scenes match their reference image by the grader's metric. Each scene: "
+            "your render, the reference, and the difference (black: equal, red: differs within "
+            "tolerance, <b>white: failing pixel</b>).</p>\n";
+    std::string stage;
+    for (const Entry& e : entries_) {
+        if (e.stage != stage) {
+            if (!stage.empty()) page << "</section>\n";
+            stage = e.stage;
+            const Stage& s = stages_.at(stage);
+            page << "<section id=\"" << html(stage) << "\">\n<h2>" << html(stage) << ": "
+                 << html(s.title) << " <small>(<a href=\"" << html(s.handout)
+                 << "\">handout</a>)</small></h2>\n";
+        }
+        std::string status = "none", badge = "no reference";
+        if (e.compared && !e.result.size_matches) {
+            status = "fail", badge = "wrong size";
+        } else if (e.compared) {
+            const double p = e.result.failing_percent;
+            status = e.result.passed ? "pass" : p < e.fail_percent ? "partial" : "fail";
+            badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
+        }
+        if (!e.graded) badge += " (not graded)";
+        page << "<div class=\"scene " << status << "\" data-scene=\""
+             << html(e.stage + "/" + e.name) << "\" data-graded=\"" << (e.graded ? "true" : "false")
+             << "\">\n<b>" << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
+             << "</span>\n<div class=\"cols\">\n";
+        const auto column = [&](const std::string& file, const char* label) {
+            if (file.empty()) return;
+            page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
+                 << label << "\"></a><br>" << label << "</div>\n";
+        };
+        column(e.image, "render");
+        column(e.reference, "reference");
+        column(e.difference, "difference");
+        page << "</div>\n";
+        if (e.compared)
+            page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
+                 << e.options.tolerance << ", pass up to " << e.options.max_failing_percent
+                 << "%)</div>\n";
+        page << "</div>\n";
+    }
+    if (!stage.empty()) page << "</section>\n";
+    page << "</body>\n</html>\n";
+    const fs::path file = out_ / "index.html";
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << page.str();
+    if (!out) throw std::runtime_error("rt: error: cannot write " + file.string());
+    return file;
+}
+
+}  // namespace rt

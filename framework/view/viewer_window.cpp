@@ -1,0 +1,193 @@
+// The viewer's window: GLFW, an OpenGL 3.3 core context (functions through libepoxy), Dear ImGui's
+// GLFW and OpenGL 3 back-ends. The render is a texture drawn 1:1 right of the panel.
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "render/accelerate.h"
+#include "scene/scene_loader.h"
+#include "view/view.h"
+#include "view/viewer.h"
+#include "view/viewer_panel.h"
+
+namespace rt::view {
+namespace {
+
+constexpr int kPanelWidth = 380;
+constexpr int kMinHeight = 640;
+constexpr Real kOrbitDegreesPerPixel = Real(0.3);
+constexpr Real kZoomPerWheelStep = Real(0.9);
+
+void glfw_error(int code, const char* text) {
+    std::fprintf(stderr, "rt view: GLFW error %d: %s\n", code, text);
+}
+
+// The whole window's pixels, top row first (glReadPixels reads bottom-up).
+Image8 read_window(GLFWwindow* window) {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    Image8 image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
+    std::vector<std::uint8_t> rows(image.data.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    const std::size_t row = std::size_t(width) * 3;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(&rows[std::size_t(height - 1 - y) * row], row,
+                    &image.data[std::size_t(y) * row]);
+    return image;
+}
+
+class ImageTexture {
+  public:
+    ImageTexture() { glGenTextures(1, &id_); }
+    ~ImageTexture() { glDeleteTextures(1, &id_); }
+    void upload(const Image8& image) {
+        glBindTexture(GL_TEXTURE_2D, id_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB,
+                     GL_UNSIGNED_BYTE, image.data.data());
+    }
+    ImTextureID id() const { return reinterpret_cast<ImTextureID>(std::intptr_t(id_)); }
+
+  private:
+    GLuint id_ = 0;
+};
+
+// The image area: the texture, and the mouse on it (drag orbit, right/middle drag pan, wheel
+// zoom, a click without a drag selects the pixel).
+void image_area(Viewer& viewer, const ImageTexture& texture) {
+    const Image8& shown = viewer.display();
+    const ImVec2 size(float(shown.width), float(shown.height));
+    ImGui::SetNextWindowPos(ImVec2(float(kPanelWidth), 0));
+    ImGui::SetNextWindowSize(size);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+    ImGui::Begin("image", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::Image(texture.id(), size);
+    ImGui::SetCursorScreenPos(origin);
+    ImGui::InvisibleButton("pixels", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool moved = io.MouseDelta.x != 0 || io.MouseDelta.y != 0;
+    if (ImGui::IsItemActive() && moved) {
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+            viewer.orbit_by(io.MouseDelta.x * kOrbitDegreesPerPixel,
+                            io.MouseDelta.y * kOrbitDegreesPerPixel);
+        else if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) ||
+                 ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
+            viewer.pan_by(-io.MouseDelta.x / size.y, io.MouseDelta.y / size.y);
+    }
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0)
+        viewer.zoom_by(std::pow(kZoomPerWheelStep, Real(io.MouseWheel)));
+    if (ImGui::IsItemDeactivated() && io.MouseDragMaxDistanceSqr[0] < 9 &&
+        ImGui::IsMouseReleased(ImGuiMouseButton_Left))
+        viewer.click(int(io.MousePos.x - origin.x), int(io.MousePos.y - origin.y));
+    ImGui::End();
+    ImGui::PopStyleVar(2);
+}
+
+void keys(Viewer& viewer) {
+    if (ImGui::GetIO().WantTextInput) return;
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) viewer.key('S');
+    if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) viewer.key('R');
+    if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
+        viewer.key('Q');
+}
+
+// GLFW and ImGui set up and torn down in order, whatever happens in between.
+struct Window {
+    GLFWwindow* handle = nullptr;
+    Window(int width, int height, const std::string& title) {
+        glfwSetErrorCallback(glfw_error);
+        if (!glfwInit())
+            throw std::runtime_error(
+                "rt: error: cannot open a window (no display?); run under a desktop or "
+                "`xvfb-run -a rt view ...`");
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+        handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+        if (!handle) {
+            glfwTerminate();
+            throw std::runtime_error("rt: error: GLFW could not create an OpenGL 3.3 core window");
+        }
+        glfwMakeContextCurrent(handle);
+        glfwSwapInterval(1);
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the student's files
+        ImGui::StyleColorsDark();
+        ImGui_ImplGlfw_InitForOpenGL(handle, true);
+        ImGui_ImplOpenGL3_Init("#version 330 core");
+    }
+    ~Window() {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        glfwDestroyWindow(handle);
+        glfwTerminate();
+    }
+};
+
+}  // namespace
+
+int run_view(const ViewArgs& args) {
+    // Script and scene errors come before any window opens.
+    std::vector<ScriptCommand> script;
+    if (!args.script.empty()) script = read_script(args.script);
+    if (!args.script.empty() || args.out != ".") std::filesystem::create_directories(args.out);
+    Scene scene = load_scene(args.scene);
+    const ImageSize size = scene.image;
+
+    Window window(kPanelWidth + size.width, std::max(size.height, kMinHeight),
+                  "rt view " + args.scene);
+    Viewer viewer(std::move(scene), args, std::move(script));
+    ImageTexture texture;
+    while (!viewer.done() && !glfwWindowShouldClose(window.handle)) {
+        // Sleeps between events but wakes up for the progressive passes (and leaves the cores to
+        // the render threads).
+        glfwWaitEventsTimeout(1.0 / 60);
+        viewer.update();
+        if (viewer.take_display_changed()) texture.upload(viewer.display());
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window.handle, &width, &height);
+        draw_panel(viewer, float(kPanelWidth), float(height));
+        image_area(viewer, texture);
+        keys(viewer);
+        ImGui::Render();
+        glViewport(0, 0, width, height);
+        glClearColor(0.12f, 0.12f, 0.14f, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        if (const auto file = viewer.take_screenshot_request()) {
+            write_image8(read_window(window.handle), *file);
+            viewer.screenshot_saved();
+        }
+        glfwSwapBuffers(window.handle);
+    }
+    return viewer.exit_code();
+}
+
+}  // namespace rt::view
