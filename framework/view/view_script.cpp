@@ -28,6 +28,7 @@ const std::map<std::string, Syntax> kCommands = {
     {"zoom", {1, "zoom FACTOR"}},
     {"reset-camera", {0, "reset-camera"}},
     {"show", {1, "show render|reference|difference"}},
+    {"raster", {1, "raster on|off"}},
     {"screenshot", {1, "screenshot NAME"}},
     {"save-render", {1, "save-render NAME"}},
     {"save-display", {1, "save-display NAME"}},
@@ -55,6 +56,8 @@ std::string check(const ScriptCommand& c) {
     if (name == "show" && c.args[0] != "render" && c.args[0] != "reference" &&
         c.args[0] != "difference")
         return "cannot show \"" + c.args[0] + "\"";
+    if (name == "raster" && c.args[0] != "on" && c.args[0] != "off")
+        return "raster takes on or off";
     if (name == "set") {
         ViewSettings probe;
         const std::string error = set_by_name(probe, c.args[0], c.args[1]);

@@ -14,6 +14,7 @@
 //   zoom FACTOR            move toward the pivot (< 1) or away (> 1)
 //   reset-camera           back to the scene file's camera
 //   show render|reference|difference   what the image area shows
+//   raster on|off          the OpenGL Blinn-Phong preview beside the ray-traced image
 //   screenshot NAME        the whole window as DIR/NAME.png (panel included)
 //   save-render NAME       the current render, without overlays, as DIR/NAME.png
 //   save-display NAME      the image area as shown (overlays included) as DIR/NAME.png

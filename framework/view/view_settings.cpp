@@ -30,6 +30,15 @@ std::optional<bool> on_off(const std::string& value) {
 
 }  // namespace
 
+bool ViewSettings::operator==(const ViewSettings& o) const {
+    const Camera &a = camera, &b = o.camera;
+    const bool same_camera =
+        a.projection == b.projection && a.eye == b.eye && a.u == b.u && a.v == b.v && a.w == b.w &&
+        a.vertical_fov_degrees == b.vertical_fov_degrees && a.view_height == b.view_height;
+    return same_camera && mode == o.mode && shadows == o.shadows && max_depth == o.max_depth &&
+           accelerator == o.accelerator && texture_lookup == o.texture_lookup;
+}
+
 ViewSettings settings_of(const Scene& scene) {
     ViewSettings s;
     s.mode = scene.mode;

@@ -17,7 +17,7 @@ struct ViewSettings {
     TextureLookup texture_lookup = TextureLookup::PerTexture;
     Camera camera;
 
-    bool operator==(const ViewSettings&) const = default;
+    bool operator==(const ViewSettings& other) const;  // Camera has no ==: field by field
 };
 
 // The settings the scene file asks for.

@@ -232,6 +232,7 @@ bool Viewer::run_command(const ScriptCommand& c) {
              : what == "reference" ? Show::Reference
                                    : Show::Difference);
     }
+    if (n == "raster") raster = c.args[0] == "on";
     if (n == "screenshot") screenshot_request_ = out_ / (c.args[0] + ".png");
     if (n == "save-render") {
         if (!frame_ || !frame_->error.empty())

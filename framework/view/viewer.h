@@ -49,7 +49,10 @@ class Viewer {
 
     // Read by the panel.
     ViewSettings settings;
+    bool raster = true;  // the OpenGL preview beside the ray-traced image
+    std::uint64_t scene_version() const { return generation_; }  // changes with scene()
     const Scene& scene() const { return scene_; }
+    const ViewSettings& initial_settings() const { return source_.initial(); }
     const std::string& scene_file() const { return scene_file_; }
     const std::optional<Frame>& frame() const { return frame_; }
     bool refined() const {

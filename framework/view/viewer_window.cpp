@@ -16,6 +16,7 @@
 
 #include "render/accelerate.h"
 #include "scene/scene_loader.h"
+#include "view/raster_preview.h"
 #include "view/view.h"
 #include "view/viewer.h"
 #include "view/viewer_panel.h"
@@ -25,6 +26,10 @@ namespace {
 
 constexpr int kPanelWidth = 380;
 constexpr int kMinHeight = 640;
+// Small course images (200 x 150) are blown up by a whole factor toward this size, so a lecture
+// hall sees them; each image pixel stays a crisp square (nearest filtering). Two of them (the
+// raster preview beside the render) fit a 1920-pixel projector with the panel.
+constexpr int kTargetWidth = 720, kTargetHeight = 720;
 constexpr Real kOrbitDegreesPerPixel = Real(0.3);
 constexpr Real kZoomPerWheelStep = Real(0.9);
 
@@ -68,11 +73,12 @@ class ImageTexture {
 
 // The image area: the texture, and the mouse on it (drag orbit, right/middle drag pan, wheel
 // zoom, a click without a drag selects the pixel).
-void image_area(Viewer& viewer, const ImageTexture& texture) {
+void image_area(Viewer& viewer, const ImageTexture& texture, const RasterPreview& raster,
+                int scale) {
     const Image8& shown = viewer.display();
-    const ImVec2 size(float(shown.width), float(shown.height));
+    const ImVec2 size(float(shown.width * scale), float(shown.height * scale));
     ImGui::SetNextWindowPos(ImVec2(float(kPanelWidth), 0));
-    ImGui::SetNextWindowSize(size);
+    ImGui::SetNextWindowSize(ImVec2(size.x * 2, size.y));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
     ImGui::Begin("image", nullptr,
@@ -80,6 +86,16 @@ void image_area(Viewer& viewer, const ImageTexture& texture) {
                      ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBringToFrontOnFocus);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::Image(texture.id(), size);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    if (viewer.raster) {
+        const ImVec2 right(origin.x + size.x, origin.y);
+        draw->AddImage(reinterpret_cast<ImTextureID>(std::intptr_t(raster.texture())), right,
+                       ImVec2(right.x + size.x, right.y + size.y), ImVec2(0, 1), ImVec2(1, 0));
+        draw->AddText(ImVec2(right.x + 6, right.y + 4), IM_COL32(255, 255, 255, 220),
+                      "OpenGL raster, Blinn-Phong (no shadows, no recursion)");
+    }
+    draw->AddText(ImVec2(origin.x + 6, origin.y + 4), IM_COL32(255, 255, 255, 220),
+                  "ray traced (CPU)");
     ImGui::SetCursorScreenPos(origin);
     ImGui::InvisibleButton("pixels", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -98,7 +114,8 @@ void image_area(Viewer& viewer, const ImageTexture& texture) {
         viewer.zoom_by(std::pow(kZoomPerWheelStep, Real(io.MouseWheel)));
     if (ImGui::IsItemDeactivated() && io.MouseDragMaxDistanceSqr[0] < 9 &&
         ImGui::IsMouseReleased(ImGuiMouseButton_Left))
-        viewer.click(int(io.MousePos.x - origin.x), int(io.MousePos.y - origin.y));
+        viewer.click(int((io.MousePos.x - origin.x) / float(scale)),
+                     int((io.MousePos.y - origin.y) / float(scale)));
     ImGui::End();
     ImGui::PopStyleVar(2);
 }
@@ -157,16 +174,24 @@ int run_view(const ViewArgs& args) {
     Scene scene = load_scene(args.scene);
     const ImageSize size = scene.image;
 
-    Window window(kPanelWidth + size.width, std::max(size.height, kMinHeight),
+    const int scale = std::max(1, std::min(kTargetWidth / std::max(size.width, 1),
+                                           kTargetHeight / std::max(size.height, 1)));
+    Window window(kPanelWidth + 2 * size.width * scale, std::max(size.height * scale, kMinHeight),
                   "rt view " + args.scene);
     Viewer viewer(std::move(scene), args, std::move(script));
     ImageTexture texture;
+    RasterPreview raster(viewer.scene());
+    std::uint64_t raster_version = ~std::uint64_t(0);
     while (!viewer.done() && !glfwWindowShouldClose(window.handle)) {
         // Sleeps between events but wakes up for the progressive passes (and leaves the cores to
         // the render threads).
         glfwWaitEventsTimeout(1.0 / 60);
         viewer.update();
         if (viewer.take_display_changed()) texture.upload(viewer.display());
+        if (viewer.raster && raster_version != viewer.scene_version()) {
+            raster.draw(viewer.scene());
+            raster_version = viewer.scene_version();
+        }
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
@@ -174,7 +199,7 @@ int run_view(const ViewArgs& args) {
         int width = 0, height = 0;
         glfwGetFramebufferSize(window.handle, &width, &height);
         draw_panel(viewer, float(kPanelWidth), float(height));
-        image_area(viewer, texture);
+        image_area(viewer, texture, raster, scale);
         keys(viewer);
         ImGui::Render();
         glViewport(0, 0, width, height);
