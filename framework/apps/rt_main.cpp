@@ -286,7 +286,7 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
 // `rt view`'s arguments, declared whether or not the viewer is built.
 struct ViewArgsForCli {
     std::string scene, script, out = ".";
-    int threads = 0;
+    int threads = 0, width = 0, height = 0;
 };
 
 int run_view_command(const ViewArgsForCli& args) {
@@ -296,6 +296,8 @@ int run_view_command(const ViewArgsForCli& args) {
     view_args.script = args.script;
     view_args.out = args.out;
     view_args.threads = args.threads;
+    view_args.width = args.width;
+    view_args.height = args.height;
     return view::run_view(view_args);
 #else
     (void)args;
@@ -387,6 +389,10 @@ int main(int argc, char** argv) {
     view_cmd->add_option("--out", view_args.out, "folder for screenshots (default: .)");
     view_cmd->add_option("--threads", view_args.threads, "render threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
+    view_cmd->add_option("--width", view_args.width, "override the image width")
+        ->check(CLI::Range(1, 4096));
+    view_cmd->add_option("--height", view_args.height, "override the image height")
+        ->check(CLI::Range(1, 4096));
 
     std::string info_scene;
     auto* info_cmd = app.add_subcommand("info", "describe a scene file");

@@ -13,6 +13,7 @@ struct ViewArgs {
     std::string script;               // "" for a person at the window
     std::filesystem::path out = ".";  // screenshots and saved renders
     int threads = 0;                  // 0: all cores
+    int width = 0, height = 0;        // > 0: override the scene's image size (a lecture's)
 };
 
 // Opens the window and runs until it is closed or the script ends; the exit code.

@@ -133,6 +133,13 @@ void Viewer::update() {
             frame_ = std::move(frame);
             if (frame_->refined()) {
                 refine_seconds_ = seconds_since(restarted_at_);
+                if (scripted())  // the session's log: what a person would read off the HUD
+                    std::printf(
+                        "refined %dx%d %s in %.3f s after the change (full pass %.3f s, "
+                        "%.2f camera Mrays/s)\n",
+                        scene_.image.width, scene_.image.height, to_string(settings.mode),
+                        refine_seconds_, frame_->seconds,
+                        double(scene_.image.width) * scene_.image.height / frame_->seconds / 1e6);
                 comparison_.reset();
                 if (reference_) {
                     CompareOptions options;

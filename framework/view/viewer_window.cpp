@@ -30,6 +30,13 @@ constexpr int kMinHeight = 640;
 // hall sees them; each image pixel stays a crisp square (nearest filtering). Two of them (the
 // raster preview beside the render) fit a 1920-pixel projector with the panel.
 constexpr int kTargetWidth = 720, kTargetHeight = 720;
+// Wider than this and the raster preview is drawn at half size (a lecture's larger --width).
+constexpr int kMaxWindowWidth = 1920;
+
+// The raster preview's size relative to the render's: the same when both fit.
+float raster_fraction(int shown_width) {
+    return kPanelWidth + 2 * shown_width <= kMaxWindowWidth ? 1.0f : 0.5f;
+}
 constexpr Real kOrbitDegreesPerPixel = Real(0.3);
 constexpr Real kZoomPerWheelStep = Real(0.9);
 
@@ -78,7 +85,8 @@ void image_area(Viewer& viewer, const ImageTexture& texture, const RasterPreview
     const Image8& shown = viewer.display();
     const ImVec2 size(float(shown.width * scale), float(shown.height * scale));
     ImGui::SetNextWindowPos(ImVec2(float(kPanelWidth), 0));
-    ImGui::SetNextWindowSize(ImVec2(size.x * 2, size.y));
+    const float fraction = raster_fraction(int(size.x));
+    ImGui::SetNextWindowSize(ImVec2(size.x * (1 + fraction), size.y));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
     ImGui::Begin("image", nullptr,
@@ -90,7 +98,8 @@ void image_area(Viewer& viewer, const ImageTexture& texture, const RasterPreview
     if (viewer.raster) {
         const ImVec2 right(origin.x + size.x, origin.y);
         draw->AddImage(reinterpret_cast<ImTextureID>(std::intptr_t(raster.texture())), right,
-                       ImVec2(right.x + size.x, right.y + size.y), ImVec2(0, 1), ImVec2(1, 0));
+                       ImVec2(right.x + size.x * fraction, right.y + size.y * fraction),
+                       ImVec2(0, 1), ImVec2(1, 0));
         draw->AddText(ImVec2(right.x + 6, right.y + 4), IM_COL32(255, 255, 255, 220),
                       "OpenGL raster, Blinn-Phong (no shadows, no recursion)");
     }
@@ -172,12 +181,15 @@ int run_view(const ViewArgs& args) {
     if (!args.script.empty()) script = read_script(args.script);
     if (!args.script.empty() || args.out != ".") std::filesystem::create_directories(args.out);
     Scene scene = load_scene(args.scene);
+    if (args.width > 0) scene.image.width = args.width;
+    if (args.height > 0) scene.image.height = args.height;
     const ImageSize size = scene.image;
 
     const int scale = std::max(1, std::min(kTargetWidth / std::max(size.width, 1),
                                            kTargetHeight / std::max(size.height, 1)));
-    Window window(kPanelWidth + 2 * size.width * scale, std::max(size.height * scale, kMinHeight),
-                  "rt view " + args.scene);
+    const float fraction = raster_fraction(size.width * scale);
+    Window window(kPanelWidth + int(float(size.width * scale) * (1 + fraction)),
+                  std::max(size.height * scale, kMinHeight), "rt view " + args.scene);
     Viewer viewer(std::move(scene), args, std::move(script));
     ImageTexture texture;
     RasterPreview raster(viewer.scene());
