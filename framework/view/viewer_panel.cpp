@@ -82,7 +82,10 @@ void hud(const Viewer& viewer) {
     ImGui::TextWrapped("%s", viewer.scene_file().c_str());
     ImGui::Text("%d x %d, %d threads", scene.image.width, scene.image.height, viewer.threads());
     if (const auto& frame = viewer.frame()) {
-        if (!frame->error.empty()) {
+        if (frame->generation != viewer.scene_version()) {
+            // The first pass of the change is not done (a slow setting, e.g. no BVH).
+            ImGui::TextUnformatted("rendering the change (previous image shown)");
+        } else if (!frame->error.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
             ImGui::TextWrapped("%s", frame->error.c_str());
             ImGui::PopStyleColor();
@@ -102,8 +105,12 @@ void hud(const Viewer& viewer) {
         ImGui::PushStyleColor(ImGuiCol_Text, !as_file    ? ImVec4(0.7f, 0.7f, 0.7f, 1)
                                              : c->passed ? ImVec4(0.4f, 1, 0.4f, 1)
                                                          : ImVec4(1, 0.4f, 0.4f, 1));
-        ImGui::TextWrapped("vs reference: %s, %lld failing pixels%s", c->passed ? "pass" : "FAIL",
-                           c->failing_pixels, as_file ? "" : " (settings changed)");
+        if (!c->size_matches)
+            ImGui::TextWrapped("vs reference: the render's size differs from the reference's");
+        else
+            ImGui::TextWrapped("vs reference: %s, %lld failing pixels%s",
+                               c->passed ? "pass" : "FAIL", c->failing_pixels,
+                               as_file ? "" : " (settings changed)");
         ImGui::PopStyleColor();
     }
 }

@@ -101,7 +101,7 @@ void image_area(Viewer& viewer, const ImageTexture& texture, const RasterPreview
                        ImVec2(right.x + size.x * fraction, right.y + size.y * fraction),
                        ImVec2(0, 1), ImVec2(1, 0));
         draw->AddText(ImVec2(right.x + 6, right.y + 4), IM_COL32(255, 255, 255, 220),
-                      "OpenGL raster, Blinn-Phong (no shadows, no recursion)");
+                      "OpenGL raster, Blinn-Phong (no shadows, recursion or textures)");
     }
     draw->AddText(ImVec2(origin.x + 6, origin.y + 4), IM_COL32(255, 255, 255, 220),
                   "ray traced (CPU)");
