@@ -2,6 +2,7 @@
 # lines promise:
 #   # expect NAME = FLAGS...       DIR/NAME.png equals `rt render SCENE FLAGS` (tolerance 0)
 #   # expect-differs A B MIN       DIR/A.png and DIR/B.png differ in at least MIN pixels
+#   # expect-same A B              DIR/A.png and DIR/B.png are the same image (tolerance 0)
 #   # expect-files NAME...         the session wrote DIR/NAME.png
 #   cmake -DRT=<rt> -DSCENE=<scene.json> -DSCRIPT=<session.txt> -DOUT=<dir> -P check_view.cmake
 find_program(XVFB_RUN xvfb-run)
@@ -54,6 +55,11 @@ foreach(line ${lines})
     if(failing LESS ${CMAKE_MATCH_3})
       message(FATAL_ERROR "${CMAKE_MATCH_1} and ${CMAKE_MATCH_2} differ in ${failing} pixels, "
                           "fewer than ${CMAKE_MATCH_3}")
+    endif()
+  elseif(line MATCHES "^# expect-same ([^ ]+) ([^ ]+)$")
+    compare(${CMAKE_MATCH_1} ${CMAKE_MATCH_2} failing)
+    if(NOT failing EQUAL 0)
+      message(FATAL_ERROR "${CMAKE_MATCH_1} and ${CMAKE_MATCH_2} differ in ${failing} pixels")
     endif()
   elseif(line MATCHES "^# expect-files (.*)$")
     separate_arguments(names UNIX_COMMAND "${CMAKE_MATCH_1}")

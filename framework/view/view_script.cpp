@@ -1,5 +1,6 @@
 #include "view/view_script.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -33,6 +34,9 @@ const std::map<std::string, Syntax> kCommands = {
     {"save-render", {1, "save-render NAME"}},
     {"save-display", {1, "save-display NAME"}},
     {"quit", {0, "quit"}},
+    {"mouse-click", {2, "mouse-click X Y (image pixel)"}},
+    {"mouse-drag", {5, "mouse-drag X0 Y0 X1 Y1 left|right"}},
+    {"mouse-wheel", {3, "mouse-wheel X Y STEPS"}},
 };
 
 bool is_number(const std::string& text) {
@@ -44,9 +48,12 @@ bool is_number(const std::string& text) {
 // The checks a command's arguments need beyond their count; "" when fine.
 std::string check(const ScriptCommand& c) {
     const std::string& name = c.name;
-    if (name == "sleep" || name == "zoom" || name == "orbit" || name == "pan" || name == "click")
-        for (const std::string& a : c.args)
-            if (!is_number(a)) return "\"" + a + "\" is not a number";
+    if (name == "sleep" || name == "zoom" || name == "orbit" || name == "pan" || name == "click" ||
+        name == "mouse-click" || name == "mouse-drag" || name == "mouse-wheel")
+        for (std::size_t i = 0; i < std::min<std::size_t>(c.args.size(), 4); ++i)
+            if (!is_number(c.args[i])) return "\"" + c.args[i] + "\" is not a number";
+    if (name == "mouse-drag" && c.args[4] != "left" && c.args[4] != "right")
+        return "drag with the left or right button";
     if (name == "zoom" && std::strtod(c.args[0].c_str(), nullptr) <= 0)
         return "the zoom factor must be above 0";
     if (name == "key" && c.args[0] != "S" && c.args[0] != "R" && c.args[0] != "Q")

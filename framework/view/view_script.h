@@ -18,6 +18,9 @@
 //   screenshot NAME        the whole window as DIR/NAME.png (panel included)
 //   save-render NAME       the current render, without overlays, as DIR/NAME.png
 //   save-display NAME      the image area as shown (overlays included) as DIR/NAME.png
+//   mouse-click X Y        the same through the window's mouse handling (synthetic events)
+//   mouse-drag X0 Y0 X1 Y1 left|right   a drag (left orbits, right pans), image pixels
+//   mouse-wheel X Y STEPS  wheel steps over pixel (X, Y) (positive: zoom in)
 //   quit                   end the session (also done after the last line)
 #pragma once
 

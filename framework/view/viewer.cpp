@@ -122,6 +122,13 @@ std::optional<fs::path> Viewer::take_screenshot_request() {
     return screenshot_request_;
 }
 
+std::optional<SyntheticMouse> Viewer::take_mouse() {
+    if (mouse_.empty()) return std::nullopt;
+    const SyntheticMouse m = mouse_.back();
+    mouse_.pop_back();
+    return m;
+}
+
 void Viewer::screenshot_saved() {
     status_ = "saved " + screenshot_request_->string();
     screenshot_request_.reset();
@@ -204,6 +211,7 @@ bool Viewer::run_command(const ScriptCommand& c) {
     };
     const std::string& n = c.name;
     if (screenshot_request_) return false;  // the window has not written the last one yet
+    if (!mouse_.empty()) return false;      // nor played the last mouse gesture
     if (n == "sleep") return seconds_since(command_started_) >= double(number(0));
     if (n == "wait-refined") {
         if (frame_ && !frame_->error.empty() && frame_->generation == generation_) {
@@ -252,6 +260,29 @@ bool Viewer::run_command(const ScriptCommand& c) {
         save_png(display_, c.args[0]);
     }
     if (n == "quit") done_ = true;
+    if (n == "mouse-click" || n == "mouse-drag" || n == "mouse-wheel") {
+        // Frames in playing order: hover, press, (move,) release, then one still frame.
+        std::vector<SyntheticMouse> frames;
+        const float x0 = float(number(0)) + 0.5f, y0 = float(number(1)) + 0.5f;
+        frames.push_back({x0, y0});
+        if (n == "mouse-wheel") {
+            frames.push_back({x0, y0, false, false, float(number(2))});
+        } else if (n == "mouse-click") {
+            frames.push_back({x0, y0, true, false});
+        } else {
+            const bool left = c.args[4] == "left";
+            const float x1 = float(number(2)) + 0.5f, y1 = float(number(3)) + 0.5f;
+            for (int i = 0; i <= 10; ++i)
+                frames.push_back(
+                    {x0 + (x1 - x0) * float(i) / 10, y0 + (y1 - y0) * float(i) / 10, left, !left});
+            frames.push_back({x1, y1});
+        }
+        frames.push_back(frames.back());
+        frames.back().left = frames.back().right = false;
+        frames.back().wheel = 0;
+        frames.push_back(frames.back());
+        mouse_.assign(frames.rbegin(), frames.rend());
+    }
     return true;
 }
 

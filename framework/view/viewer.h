@@ -21,6 +21,13 @@ namespace rt::view {
 
 enum class Show { Render, Reference, Difference };
 
+// One window frame of a scripted mouse (image pixels), fed to ImGui in place of the real one.
+struct SyntheticMouse {
+    float x = 0, y = 0;
+    bool left = false, right = false;
+    float wheel = 0;
+};
+
 class Viewer {
   public:
     Viewer(Scene loaded, const ViewArgs& args, std::vector<ScriptCommand> script);
@@ -43,7 +50,8 @@ class Viewer {
     const Image8& display() const { return display_; }
     bool take_display_changed();  // true once after display() changed
     std::optional<std::filesystem::path> take_screenshot_request();
-    void screenshot_saved();  // the window wrote the requested screenshot
+    std::optional<SyntheticMouse> take_mouse();  // this frame's scripted mouse, if any
+    void screenshot_saved();                     // the window wrote the requested screenshot
     bool done() const { return done_; }
     int exit_code() const { return exit_code_; }
 
@@ -97,6 +105,7 @@ class Viewer {
     int screenshot_count_ = 0;
     std::string status_;
 
+    std::vector<SyntheticMouse> mouse_;  // frames still to play, last first
     std::vector<ScriptCommand> script_;
     std::size_t next_command_ = 0;
     std::chrono::steady_clock::time_point command_started_;

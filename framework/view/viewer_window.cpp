@@ -207,6 +207,16 @@ int run_view(const ViewArgs& args) {
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
+        if (const auto mouse = viewer.take_mouse()) {
+            // After the back-end has read the real mouse, before ImGui uses it.
+            ImGuiIO& io = ImGui::GetIO();
+            io.MousePos =
+                ImVec2(float(kPanelWidth) + mouse->x * float(scale), mouse->y * float(scale));
+            io.MouseDown[ImGuiMouseButton_Left] = mouse->left;
+            io.MouseDown[ImGuiMouseButton_Right] = mouse->right;
+            io.MouseDown[ImGuiMouseButton_Middle] = false;
+            io.MouseWheel = mouse->wheel;
+        }
         ImGui::NewFrame();
         int width = 0, height = 0;
         glfwGetFramebufferSize(window.handle, &width, &height);
