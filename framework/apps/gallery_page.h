@@ -1,4 +1,4 @@
-// The gallery's index.html (`rt gallery --out DIR`): every scene of every stage as a thumbnail
+// The gallery (`rt gallery --out DIR`) and its index.html (`rt gallery --out DIR`): every scene of every stage as a thumbnail
 // beside its reference image and the difference image of the grader's metric (failing pixels
 // white), with the stage's handout linked, so a student sees at a glance which scenes are wrong.
 #pragma once
@@ -51,5 +51,10 @@ class GalleryPage {
     std::map<std::string, Stage> stages_;
     std::vector<Entry> entries_;
 };
+
+// `rt gallery`: renders every scene of every stage (stages/NN-name/scenes/*.json, in order) into
+// out/NN-name/, then writes out/index.html; into the source tree's reference_images (regenerating
+// them) it writes the images only.
+int run_gallery(const std::filesystem::path& source, const std::filesystem::path& out, int threads);
 
 }  // namespace rt

@@ -141,49 +141,6 @@ int run_render(const RenderArgs& args) {
     return 0;
 }
 
-// Every stage folder with scenes, in order: stages/NN-name/scenes/*.json.
-int run_gallery(const fs::path& source, const fs::path& out, int threads) {
-    std::vector<fs::path> stages;
-    for (const auto& entry : fs::directory_iterator(source / "stages"))
-        if (entry.is_directory() && fs::is_directory(entry.path() / "scenes"))
-            stages.push_back(entry.path());
-    std::sort(stages.begin(), stages.end());
-    int count = 0;
-    const auto start = std::chrono::steady_clock::now();
-    // `rt gallery --out reference_images` regenerates the references (README.md): no page, no
-    // copies or difference images among them.
-    std::error_code ec;
-    const bool regenerating = fs::equivalent(out, source / "reference_images", ec);
-    GalleryPage page(source, out);
-    for (const fs::path& stage : stages) {
-        std::vector<fs::path> scenes;
-        for (const auto& entry : fs::directory_iterator(stage / "scenes"))
-            if (entry.path().extension() == ".json") scenes.push_back(entry.path());
-        std::sort(scenes.begin(), scenes.end());
-        const fs::path stage_out = out / stage.filename();
-        fs::create_directories(stage_out);
-        for (const fs::path& scene_file : scenes) {
-            Scene scene = load_scene(scene_file);
-            build_acceleration(scene);
-            RenderOptions options;
-            options.threads = threads;
-            const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
-            const Image image = render(scene, scene.mode, options);
-            write_image(image, image_file);
-            if (!regenerating) page.add(stage, scene_file, image_file, image);
-            std::printf("  %s\n", image_file.c_str());
-            ++count;
-        }
-    }
-    std::printf("rendered %d scenes of %zu stages in %.1f s\ngallery: %s\n", count, stages.size(),
-                seconds_since(start), fs::absolute(out).lexically_normal().c_str());
-    if (regenerating) return 0;
-    const fs::path index = page.write();
-    std::printf("page: %s (%d graded scenes do not match their reference)\n",
-                fs::absolute(index).lexically_normal().c_str(), page.failing());
-    return 0;
-}
-
 // The grader's metric on two image files: one line, exit 0 when they match.
 int run_compare(const std::string& actual, const std::string& reference, int tolerance,
                 bool neighbourhood) {
