@@ -97,9 +97,14 @@ void Viewer::key(char k) {
     if (k == 'Q') done_ = true;
     if (k == 'R') reset_camera();
     if (k == 'S') {
-        char name[32];
-        std::snprintf(name, sizeof name, "screenshot-%03d.png", ++screenshot_count_);
-        screenshot_request_ = out_ / name;
+        // The next free number: a second session in the same folder keeps the first's.
+        fs::path file;
+        do {
+            char name[32];
+            std::snprintf(name, sizeof name, "screenshot-%03d.png", ++screenshot_count_);
+            file = out_ / name;
+        } while (fs::exists(file));
+        screenshot_request_ = file;
     }
 }
 

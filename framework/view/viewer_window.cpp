@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 #include "render/accelerate.h"
 #include "scene/scene_loader.h"
@@ -40,8 +41,12 @@ float raster_fraction(int shown_width) {
 constexpr Real kOrbitDegreesPerPixel = Real(0.3);
 constexpr Real kZoomPerWheelStep = Real(0.9);
 
+// GLFW's reason for the last failure: part of the one-line error when no window opens.
+std::string last_glfw_error;
+
 void glfw_error(int code, const char* text) {
-    std::fprintf(stderr, "rt view: GLFW error %d: %s\n", code, text);
+    last_glfw_error = text;
+    (void)code;
 }
 
 // The whole window's pixels, top row first (glReadPixels reads bottom-up).
@@ -143,9 +148,8 @@ struct Window {
     Window(int width, int height, const std::string& title) {
         glfwSetErrorCallback(glfw_error);
         if (!glfwInit())
-            throw std::runtime_error(
-                "rt: error: cannot open a window (no display?); run under a desktop or "
-                "`xvfb-run -a rt view ...`");
+            throw std::runtime_error("rt: error: cannot open a window (" + last_glfw_error +
+                                     "); run under a desktop or `xvfb-run -a rt view ...`");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -153,7 +157,8 @@ struct Window {
         handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
         if (!handle) {
             glfwTerminate();
-            throw std::runtime_error("rt: error: GLFW could not create an OpenGL 3.3 core window");
+            throw std::runtime_error("rt: error: no OpenGL 3.3 core window (" + last_glfw_error +
+                                     "); `rt gl-info --window` shows what the display offers");
         }
         glfwMakeContextCurrent(handle);
         glfwSwapInterval(1);
