@@ -143,6 +143,15 @@ fs::path GalleryPage::write() const {
          << " graded scenes match their reference image by the grader's metric. Each scene: "
             "your render, the reference, and the difference (black: equal, red: differs within "
             "tolerance, <b>white: failing pixel</b>).</p>\n";
+    // At a glance: the graded scenes that do not pass, each linked to its place below.
+    bool first = true;
+    for (const Entry& e : entries_) {
+        if (!e.graded || (e.compared && e.result.passed)) continue;
+        page << (first ? "<p><b>Not passing:</b> " : ", ") << "<a href=\"#" << html(e.stage) << "-"
+             << html(e.name) << "\">" << html(e.stage + "/" + e.name) << "</a>";
+        first = false;
+    }
+    if (!first) page << "</p>\n";
     std::string stage;
     for (const Entry& e : entries_) {
         if (e.stage != stage) {
@@ -162,10 +171,10 @@ fs::path GalleryPage::write() const {
             badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
         }
         if (!e.graded) badge += " (not graded)";
-        page << "<div class=\"scene " << status << "\" data-scene=\""
-             << html(e.stage + "/" + e.name) << "\" data-graded=\"" << (e.graded ? "true" : "false")
-             << "\">\n<b>" << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
-             << "</span>\n<div class=\"cols\">\n";
+        page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
+             << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
+             << (e.graded ? "true" : "false") << "\">\n<b>" << html(e.name)
+             << "</b> <span class=\"badge\">" << html(badge) << "</span>\n<div class=\"cols\">\n";
         const auto column = [&](const std::string& file, const char* label) {
             if (file.empty()) return;
             page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
