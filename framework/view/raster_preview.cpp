@@ -263,10 +263,19 @@ void RasterPreview::draw(const Scene& scene) {
     glUniform3fv(at("forward"), 1, glm::value_ptr(f3(-cam.w)));
     glUniform3fv(at("ambient_light"), 1, glm::value_ptr(scene.ambient_light));
     glUniform1i(at("orthographic"), ortho);
-    const int lights = std::min<int>(kMaxLights, int(scene.lights.size()));
+    // A scene without lights (the debug-mode scenes of stages 01-02) would be black: light it
+    // with a headlight, a directional light along the view.
+    std::vector<Light> scene_lights = scene.lights;
+    if (scene_lights.empty()) {
+        Light headlight;
+        headlight.kind = LightKind::Directional;
+        headlight.direction = -cam.w;
+        scene_lights.push_back(headlight);
+    }
+    const int lights = std::min<int>(kMaxLights, int(scene_lights.size()));
     glUniform1i(at("light_count"), lights);
     for (int i = 0; i < lights; ++i) {
-        const Light& l = scene.lights[std::size_t(i)];
+        const Light& l = scene_lights[std::size_t(i)];
         // snprintf, not std::string +: GCC 12 reports a false -Wrestrict there (bug 105329).
         const auto uniform = [&](const char* name) {
             char text[64];

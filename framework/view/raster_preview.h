@@ -1,6 +1,7 @@
 // The raster preview beside the ray-traced image: the same scene and camera drawn by OpenGL with
 // a per-pixel Blinn-Phong shader (no shadows, reflection, refraction or textures: what the ray
-// tracer adds is what differs). Needs the viewer's current GL context.
+// tracer adds is what differs). A scene without lights gets a headlight. Needs the viewer's
+// current GL context.
 #pragma once
 
 #include <epoxy/gl.h>
