@@ -2,7 +2,7 @@
 # Checks that each such file exists and has a heading whose GitHub anchor is <anchor>, so the
 # message a student reads always leads somewhere.
 # Usage: cmake -DSOURCE=<source tree> -P check_handout_links.cmake
-file(GLOB_RECURSE sources ${SOURCE}/stages/*.cpp ${SOURCE}/stages/*.h)
+file(GLOB_RECURSE sources ${SOURCE}/stages/*.cpp ${SOURCE}/stages/*.h ${SOURCE}/stages/*.glsl)
 set(checked 0)
 set(problems "")
 foreach(source ${sources})

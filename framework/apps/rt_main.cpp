@@ -30,6 +30,7 @@
 #include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
+#include "render/gpu_render.h"
 #include "render/oiio_textures.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
@@ -63,6 +64,8 @@ struct RenderArgs {
     double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
     std::string shadows;         // "", on or off: overrides the scene's (the viewer's toggle)
     int max_depth = -1;          // >= 0: overrides the scene's
+    bool gpu = false;            // stage 09: a compute shader renders it (render/gpu_render.h)
+    std::string gl = "egl";      // the context --gpu uses: egl, osmesa or window
 };
 
 // Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal.
@@ -131,13 +134,19 @@ int run_render(const RenderArgs& args) {
     RenderOptions options;
     options.threads = args.threads;
     options.show_progress = !args.quiet && stdout_is_terminal();
-    Image image = render(scene, mode, options);
+    GpuRenderOptions gpu;
+    gpu.context = *parse_gl_kind(args.gl);
+    gpu.log = args.quiet ? nullptr : &std::cout;
+    Image image = args.gpu ? render_gpu(scene, mode, gpu) : render(scene, mode, options);
     if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
+    const std::string how = args.gpu
+                                ? "GPU (" + args.gl + ")"
+                                : std::to_string(resolve_thread_count(args.threads)) + " threads";
     if (!args.quiet)
-        std::printf("%s: %dx%d, %s, %d threads, %.2f s -> %s\n", args.scene.c_str(),
-                    scene.image.width, scene.image.height, to_string(mode),
-                    resolve_thread_count(args.threads), seconds_since(start), args.output.c_str());
+        std::printf("%s: %dx%d, %s, %s, %.2f s -> %s\n", args.scene.c_str(), scene.image.width,
+                    scene.image.height, to_string(mode), how.c_str(), seconds_since(start),
+                    args.output.c_str());
     return 0;
 }
 
@@ -168,6 +177,18 @@ int run_info(const std::string& file) {
                     accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
     else if (accel.requested)
         std::printf("  BVH: requested but not built (%s)\n", accel.problem.c_str());
+    return 0;
+}
+
+// `rt gl-info --gl KIND`: the context the GPU stage would use, with the limits it relies on.
+int run_gl_context_info(const std::string& kind) {
+    std::string error;
+    const auto context = GlContext::create(*parse_gl_kind(kind), error);
+    if (!context) {
+        std::fprintf(stderr, "rt: error: %s\n", error.c_str());
+        return 1;
+    }
+    std::printf("%s\n", context->describe().c_str());
     return 0;
 }
 
@@ -313,6 +334,11 @@ int main(int argc, char** argv) {
         ->add_option("--max-depth", render_args.max_depth,
                      "override the scene's bounces of reflected/refracted rays")
         ->check(CLI::Range(0, 64));
+    render_cmd->add_flag("--gpu", render_args.gpu,
+                         "render with the compute shader of stage 09 (shaders/trace.comp and "
+                         "stages/09-gpu/*.glsl)");
+    render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
+        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
 
     fs::path gallery_out = "gallery";
     fs::path source = source_dir();
@@ -358,6 +384,10 @@ int main(int argc, char** argv) {
     bool gl_window = false;
     auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
     gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
+    std::string gl_kind;
+    gl_cmd
+        ->add_option("--gl", gl_kind, "create the GPU stage's context instead and print its limits")
+        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
 
     std::vector<std::string> fmt_files;
     bool fmt_check = false;
@@ -382,7 +412,7 @@ int main(int argc, char** argv) {
             return run_compare(compare_actual, compare_reference, compare_tolerance,
                                compare_neighbourhood);
         if (*view_cmd) return run_view_command(view_args);
-        if (*gl_cmd) return run_gl_info(gl_window);
+        if (*gl_cmd) return gl_kind.empty() ? run_gl_info(gl_window) : run_gl_context_info(gl_kind);
         if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());

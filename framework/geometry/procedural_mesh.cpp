@@ -4,6 +4,8 @@
 // bit) and no std::uniform_*_distribution (its algorithm is up to the standard library).
 #include "geometry/procedural_mesh.h"
 
+#include "geometry/height_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -340,44 +342,14 @@ TriangleMesh make_terrain(int cells_x, int cells_z, std::uint64_t seed, Real hei
             "make_terrain: height must be a finite number >= 0");
 
     const std::size_t columns = std::size_t(cells_x) + 1, rows = std::size_t(cells_z) + 1;
-    auto index = [&](std::size_t i, std::size_t k) { return std::uint32_t(k * columns + i); };
     HeightField field(seed);
-    std::vector<D3> points;
-    points.reserve(columns * rows);
+    std::vector<double> heights;
+    heights.reserve(columns * rows);
     for (std::size_t k = 0; k < rows; ++k)
-        for (std::size_t i = 0; i < columns; ++i) {
-            double x = -1 + 2 * double(i) / cells_x, z = -1 + 2 * double(k) / cells_z;
-            points.emplace_back(x, double(height) * field(x, z), z);
-        }
-
-    TriangleMesh mesh;
-    mesh.triangles.reserve(2 * std::size_t(cells_x) * std::size_t(cells_z));
-    // Seen from above (+y), x to the right and z towards the viewer, (x0, z0) -> (x0, z1) ->
-    // (x1, z0) is counter-clockwise, so every triangle faces up.
-    for (std::size_t k = 0; k < rows - 1; ++k)
-        for (std::size_t i = 0; i < columns - 1; ++i) {
-            std::uint32_t a = index(i, k), b = index(i, k + 1), c = index(i + 1, k),
-                          d = index(i + 1, k + 1);
-            mesh.triangles.push_back({a, b, c});
-            mesh.triangles.push_back({c, b, d});
-        }
-    // Vertex normals: the area-weighted average of the faces around each vertex.
-    std::vector<D3> sums(points.size(), D3(0));
-    for (const auto& [a, b, c] : mesh.triangles) {
-        D3 n = glm::cross(points[b] - points[a], points[c] - points[a]);
-        sums[a] += n, sums[b] += n, sums[c] += n;
-    }
-    mesh.vertices.reserve(points.size());
-    mesh.normals.reserve(points.size());
-    mesh.uvs.reserve(points.size());
-    for (std::size_t k = 0; k < rows; ++k)
-        for (std::size_t i = 0; i < columns; ++i) {
-            std::size_t v = index(i, k);
-            mesh.vertices.push_back(to_real(points[v]));
-            mesh.normals.push_back(to_real(unit(sums[v])));
-            mesh.uvs.push_back(Vec2(Real(double(i) / cells_x), Real(double(k) / cells_z)));
-        }
-    return mesh;
+        for (std::size_t i = 0; i < columns; ++i)
+            heights.push_back(double(height) *
+                              field(-1 + 2 * double(i) / cells_x, -1 + 2 * double(k) / cells_z));
+    return make_height_grid(columns, rows, heights);
 }
 
 // ---- triangle soup --------------------------------------------------------------------------

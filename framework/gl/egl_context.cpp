@@ -78,6 +78,10 @@ EglContext::EglContext() {
     context_ = context;
 }
 
+void* EglContext::proc_address(const char* name) {
+    return reinterpret_cast<void*>(eglGetProcAddress(name));
+}
+
 EglContext::~EglContext() {
     if (!display_) return;
     const EGLDisplay display = static_cast<EGLDisplay>(display_);

@@ -19,6 +19,8 @@ class EglContext {
     bool ok() const { return context_ != nullptr; }
     const std::string& error() const { return error_; }
     const std::string& platform() const { return platform_; }  // "surfaceless" or "device"
+    // eglGetProcAddress: GL entry points of the current EGL context (GlContext loads them).
+    static void* proc_address(const char* name);
 
   private:
     void* display_ = nullptr;

@@ -78,6 +78,22 @@ void Scene::update_features() {
         f.refraction |= nonzero(m.transmissive);
         f.textures |= m.diffuse_map.used() || m.specular_map.used() || m.emissive_map.used();
         f.normal_maps |= m.normal_map.used();
+        for (const TextureSlot* slot :
+             {&m.diffuse_map, &m.specular_map, &m.emissive_map, &m.normal_map}) {
+            if (!slot->used() || std::size_t(slot->texture) >= textures.size()) continue;
+            switch (textures[std::size_t(slot->texture)].kind) {
+                case TextureKind::Image:
+                    f.image_textures = true;
+                    break;
+                case TextureKind::Checker2D:
+                case TextureKind::Checker3D:
+                    f.checker_textures = true;
+                    break;
+                case TextureKind::Marble:
+                    f.noise_textures = true;
+                    break;
+            }
+        }
     }
     for (const Light& l : lights) {
         f.point_lights |= l.kind == LightKind::Point;
@@ -106,6 +122,12 @@ std::string Features::describe() const {
     if (textures || normal_maps) {
         s += " |";
         add(textures, "textures"), add(normal_maps, "normal-maps");
+        std::string kinds;  // e.g. " (images checkers)"
+        for (auto [on, name] : {std::pair{image_textures, "images"},
+                                {checker_textures, "checkers"},
+                                {noise_textures, "noise"}})
+            if (on) kinds += std::string(kinds.empty() ? " (" : " ") + name;
+        if (!kinds.empty()) s += kinds + ")";
     }
     if (environment) s += " | environment";
     return s;

@@ -84,6 +84,9 @@ struct Features {
     bool shadows = false;      // the scene asks for shadows and has lights
     bool textures = false;     // a material has a diffuse, specular or emissive map (stage 07)
     bool normal_maps = false;  // a material has a normal map (stage 07)
+    // The kinds of texture the slots use (what a shader must compile): images, the two
+    // checkerboards, marble (gradient noise).
+    bool image_textures = false, checker_textures = false, noise_textures = false;
     bool environment = false;  // rays that miss look up an environment map (stage 08)
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"

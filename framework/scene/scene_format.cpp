@@ -37,9 +37,9 @@ const Order kTexture{"name",   "image",  "checker", "checker_3d",
                      "marble", "filter", "wrap",    "colour_space"};
 const Order kTextureSlot{"texture", "scale", "offset"};
 const Order kProcedural{"a", "b", "scale"};
-const Order kSurface{"type", "center", "radius",    "point",    "normal",     "vertices",
-                     "min",  "max",    "tiles",     "file",     "procedural", "triangles",
-                     "seed", "scale",  "translate", "material", "materials"};
+const Order kSurface{"type",      "center", "radius", "point",     "normal",     "vertices",
+                     "min",       "max",    "tiles",  "file",      "procedural", "heightfield",
+                     "triangles", "seed",   "scale",  "translate", "material",   "materials"};
 const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
 const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
 const Order kLight{"type", "position", "direction", "intensity", "attenuation"};

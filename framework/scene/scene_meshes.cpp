@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "geometry/height_grid.h"
 #include "geometry/procedural_mesh.h"
+#include "image/image.h"
 #include "scene/mesh_placement.h"
 #include "scene/obj_loader.h"
 
@@ -61,18 +63,20 @@ void SceneSections::read_mesh(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     const json* file_value = member(s, "file");
     const json* shape_value = member(s, "procedural");
-    if (file_value && shape_value)
-        fail_key(at("procedural"), "a mesh has \"file\" or \"procedural\", not both",
+    const json* height_value = member(s, "heightfield");
+    if (int(file_value != nullptr) + int(shape_value != nullptr) + int(height_value != nullptr) > 1)
+        fail_key(at(height_value ? "heightfield" : "procedural"),
+                 "a mesh has one of \"file\", \"procedural\" and \"heightfield\"",
                  "keep the one you mean");
-    if (!file_value && !shape_value)
-        fail_value(
-            pointer, "a mesh needs \"file\" or \"procedural\"",
-            "add \"file\": \"model.obj\" or e.g. \"procedural\": \"torus\", \"triangles\": 1000");
-    if (file_value)
+    if (!file_value && !shape_value && !height_value)
+        fail_value(pointer, "a mesh needs \"file\", \"procedural\" or \"heightfield\"",
+                   "add \"file\": \"model.obj\", e.g. \"procedural\": \"torus\", "
+                   "\"triangles\": 1000, or \"heightfield\": {\"image\": \"heights.png\"}");
+    if (file_value || height_value)
         for (const char* key : {"triangles", "seed"})
             if (member(s, key))
                 fail_key(at(key), std::string("\"") + key + "\" is only for procedural meshes",
-                         "remove it (an OBJ file has its own triangles)");
+                         "remove it (an OBJ file or a height map has its own triangles)");
     Vec3 translate{0}, scale{1};
     if (const json* v = member(s, "translate")) translate = vec3(*v, at("translate"));
     if (const json* v = member(s, "scale")) {
@@ -83,8 +87,54 @@ void SceneSections::read_mesh(const json& s, const std::string& pointer) {
     int material = material_of(s, pointer);
     if (shape_value)
         read_procedural_mesh(s, pointer, scale, translate, material);
+    else if (height_value)
+        read_heightfield_mesh(*height_value, at("heightfield"), scale, translate, material);
     else
         read_obj_mesh(*file_value, at("file"), scale, translate, material);
+}
+
+// {"image": "heights.png", "height": 0.3}: one vertex per pixel over [-1, 1]^2 in x and z, y =
+// the pixel's grey value (as stored, the mean of the channels of a colour image) * height.
+void SceneSections::read_heightfield_mesh(const json& h, const std::string& pointer, Vec3 scale,
+                                          Vec3 translate, int material) {
+    auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    require_object(h, pointer, R"({"image": "heights.png", "height": 0.3})");
+    check_keys(h, pointer, "a height field", {"image", "height"});
+    const std::string file =
+        string(required(h, pointer, "image", "a height field", "\"heights.png\""), at("image"),
+               "\"heights.png\"");
+    const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base_dir_ / file;
+    double height = 1;
+    if (const json* v = member(h, "height"))
+        height = real_in(
+            *v, at("height"), [](double d) { return d >= 0; }, ">= 0",
+            "the height of white above black, in the mesh's units before \"scale\"");
+    Image image;
+    try {
+        image = ::rt::read_image(path, Encoding::Data);  // heights are data, not colour
+    } catch (const ImageError& e) {
+        fail_value(at("image"), e.what());
+    }
+    if (image.width < 2 || image.height < 2)
+        fail_value(at("image"),
+                   file + " is " + std::to_string(image.width) + " x " +
+                       std::to_string(image.height) + " pixels; a height map needs at least 2 x 2",
+                   "use a larger image");
+    const double triangles = 2.0 * (image.width - 1) * (image.height - 1);
+    if (triangles > double(kMaxTriangles - scene_.triangles.size()))
+        fail_value(at("image"), "the height map would make more than 20000000 triangles",
+                   "use a smaller image");
+    std::vector<float> grey;
+    grey.reserve(image.pixels.size());
+    for (const Color& c : image.pixels) grey.push_back((c.r + c.g + c.b) / 3);
+    TriangleMesh mesh = make_heightfield(image.width, image.height, grey, height);
+    check_vertex_room(mesh.vertices.size(), at("image"));
+    place_mesh(mesh.vertices, mesh.normals, mesh.triangles, scale, translate, [&](std::size_t) {
+        fail_value(at("image"), "the mesh is too large to represent once scaled and translated",
+                   "use a smaller \"scale\" or \"translate\"");
+    });
+    append_mesh(mesh.vertices, mesh.normals, mesh.uvs, mesh.triangles,
+                [&](std::size_t) { return material; });
 }
 
 void SceneSections::read_procedural_mesh(const json& s, const std::string& pointer, Vec3 scale,

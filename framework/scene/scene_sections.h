@@ -81,6 +81,8 @@ class SceneSections : public SceneReader {
     void read_mesh(const json& s, const std::string& pointer);
     void read_procedural_mesh(const json& s, const std::string& pointer, Vec3 scale, Vec3 translate,
                               int material);
+    void read_heightfield_mesh(const json& h, const std::string& pointer, Vec3 scale,
+                               Vec3 translate, int material);
     void read_obj_mesh(const json& file_value, const std::string& file_pointer, Vec3 scale,
                        Vec3 translate, int material);
     template <typename MaterialOf>

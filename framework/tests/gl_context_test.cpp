@@ -1,6 +1,7 @@
-// The headless OpenGL context the GPU stage will render through (OSMesa / llvmpipe).
+// The OpenGL contexts the GPU stage renders through (EGL, OSMesa / llvmpipe).
 #include <gtest/gtest.h>
 
+#include "gl/gl_context.h"
 #include "gl/headless_context.h"
 
 namespace rt {
@@ -12,6 +13,34 @@ TEST(GlContext, HeadlessCoreContextCanBeQueried) {
     EXPECT_GE(info.major * 10 + info.minor, 43) << "compute shaders need GL 4.3: " << info.version;
     EXPECT_FALSE(info.renderer.empty());
     EXPECT_NE(info.glsl_version.find('4'), std::string::npos) << info.glsl_version;
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+// The one context interface of the GPU stage (gl/gl_context.h): both headless kinds give a
+// current 4.3+ context with the 16 storage blocks the scene needs.
+TEST(GlContext, EglAndOsMesaHaveComputeAndTheLimitsTheShaderNeeds) {
+    for (GlKind kind : {GlKind::Egl, GlKind::OsMesa}) {
+        std::string error;
+        const auto context = GlContext::create(kind, error);
+        ASSERT_TRUE(context) << to_string(kind) << ": " << error;
+        const GlLimits& l = context->limits();
+        EXPECT_GE(l.major * 10 + l.minor, 43) << l.version;
+        EXPECT_GE(l.compute_storage_blocks, 16) << context->describe();
+        EXPECT_GE(l.group_invocations, 64) << "trace.comp's work group is 8x8";
+        EXPECT_NE(context->describe().find(to_string(kind)), std::string::npos);
+    }
+}
+
+TEST(GlContext, KindsParseByName) {
+    EXPECT_EQ(parse_gl_kind("egl"), GlKind::Egl);
+    EXPECT_EQ(parse_gl_kind("osmesa"), GlKind::OsMesa);
+    EXPECT_EQ(parse_gl_kind("window"), GlKind::Window);
+    EXPECT_EQ(parse_gl_kind("vulkan"), std::nullopt);
 }
 
 }  // namespace

@@ -261,8 +261,9 @@ TEST(SceneLoader, ProceduralMeshMistakes) {
     const std::string mesh = R"({"surfaces": [{"type": "mesh", )";
     const std::pair<std::string, std::string> cases[] = {
         {R"("file": "m.obj", "procedural": "torus", "triangles": 10}]})",
-         "\"procedural\"|a mesh has \"file\" or \"procedural\", not both"},
-        {R"("scale": 2}]})", "{\"type\": \"mesh\"|a mesh needs \"file\" or \"procedural\""},
+         "\"procedural\"|a mesh has one of \"file\", \"procedural\" and \"heightfield\""},
+        {R"("scale": 2}]})",
+         "{\"type\": \"mesh\"|a mesh needs \"file\", \"procedural\" or \"heightfield\""},
         {R"("procedural": "cube", "triangles": 10}]})",
          "\"cube\"|unknown \"procedural\" \"cube\"; use \"icosphere\", \"torus\", \"terrain\" or "
          "\"soup\""},

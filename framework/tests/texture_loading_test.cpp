@@ -64,6 +64,11 @@ TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
     EXPECT_FALSE(m.specular_map.used());
     EXPECT_TRUE(s.features.textures);
     EXPECT_TRUE(s.features.normal_maps);
+    EXPECT_TRUE(s.features.image_textures);
+    EXPECT_TRUE(s.features.checker_textures) << "the emissive map is a checker";
+    EXPECT_FALSE(s.features.noise_textures) << "no material uses marble";
+    EXPECT_NE(s.features.describe().find("(images checkers)"), std::string::npos)
+        << s.features.describe();
 }
 
 TEST(TextureLoading, MtlMapsBecomeTextures) {
@@ -164,6 +169,54 @@ TEST(TextureLoading, AGreyNormalMapIsRefused) {
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find("needs RGB"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("s.json:2:"), std::string::npos) << e.what();
+    }
+}
+
+// Height maps (the scene file's "heightfield" meshes): one vertex per pixel over [-1, 1]^2,
+// y = grey value as stored * height, uv along the image, every triangle facing up.
+TEST(Heightfield, OneVertexPerPixelFromTheStoredGrey) {
+    TempDir dir("heightfield");
+    Image8 image;
+    image.width = 3, image.height = 2;
+    image.data = {0, 0, 0, 255, 255, 255, 0, 0, 0, 51, 51, 51, 51, 51, 51, 51, 51, 51};
+    write_image8(image, dir.path() / "h.png");
+    const fs::path scene = dir.write("s.json", R"({
+  "surfaces": [{"type": "mesh", "heightfield": {"image": "h.png", "height": 2}}]
+})");
+    const Scene s = load_scene(scene);
+    ASSERT_EQ(s.vertices.size(), 6u);
+    ASSERT_EQ(s.triangles.size(), 4u);
+    EXPECT_EQ(s.vertices[0], Vec3(-1, 0, -1)) << "row 0 at the far edge, column 0 on the left";
+    EXPECT_EQ(s.vertices[1], Vec3(0, 2, -1)) << "white: the full height (data, not decoded)";
+    EXPECT_NEAR(s.vertices[4].y, 0.4f, 1e-6f) << "51/255 * 2";
+    EXPECT_EQ(s.vertices[5], Vec3(1, Real(0.4f), 1));
+    ASSERT_EQ(s.uvs.size(), 6u);
+    EXPECT_EQ(s.uvs[5], Vec2(1, 1));
+    for (const Triangle& t : s.triangles) {
+        const Vec3 n = glm::cross(s.vertices[t.v[1]] - s.vertices[t.v[0]],
+                                  s.vertices[t.v[2]] - s.vertices[t.v[0]]);
+        EXPECT_GT(n.y, 0) << "every triangle faces up";
+    }
+}
+
+TEST(Heightfield, TooSmallOrMissingImagesAreOneLineErrors) {
+    TempDir dir("heightfield-bad");
+    Image8 tiny;
+    tiny.width = 1, tiny.height = 1;
+    tiny.data = {9, 9, 9};
+    write_image8(tiny, dir.path() / "tiny.png");
+    for (const char* file : {"tiny.png", "none.png"}) {
+        const fs::path scene = dir.write(
+            "s.json", std::string(R"({"surfaces": [{"type": "mesh", "heightfield": {"image": ")") +
+                          file + R"("}}]})");
+        try {
+            load_scene(scene);
+            ADD_FAILURE() << file << " loaded";
+        } catch (const std::exception& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(file), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
     }
 }
 

@@ -335,6 +335,33 @@ TEST_F(ReleaseTree, StripsEveryStageAndSkipsBuildDirs) {
     EXPECT_NE(notes.find("02-hits: not solved"), std::string::npos) << notes;
 }
 
+// GLSL student files (stage 09) carry the same markers in the same // comments: stripped and
+// un-commented like C++, and a .glsl file with markers must be listed in student_files too.
+TEST_F(ReleaseTree, StripsGlslStudentFiles) {
+    write("stages/09-gpu/stage.json", R"({"number": 9, "student_files": ["shade.glsl"]})");
+    write("stages/09-gpu/shade.glsl",
+          text({"vec3 shade(vec3 n, vec3 l) {", "    // BEGIN SOLUTION",
+                "    return vec3(max(0.0, dot(n, l)));", "    // STUB",
+                "    // RT_NOT_IMPLEMENTED(\"stages/09-gpu/README.md#direct-light\");",
+                "    // return vec3(0);", "    // END SOLUTION", "}"}));
+    write("stages/09-gpu/helper.glsl", text({"// BEGIN SOLUTION", "// STUB", "// END SOLUTION"}));
+    ASSERT_EQ(release(), 2);
+    EXPECT_NE(errors_.str().find("stages/09-gpu/helper.glsl:1: error: file has solution markers "
+                                 "but is not listed in stages/09-gpu/stage.json"),
+              std::string::npos)
+        << errors_.str();
+    fs::remove(source_ / "stages/09-gpu/helper.glsl");
+    ASSERT_EQ(release(), 0) << errors_.str();
+    EXPECT_EQ(read(out_ / "stages/09-gpu/shade.glsl"),
+              text({"vec3 shade(vec3 n, vec3 l) {",
+                    "    RT_NOT_IMPLEMENTED(\"stages/09-gpu/README.md#direct-light\");",
+                    "    return vec3(0);", "}"}));
+    fs::remove_all(out_);
+    ASSERT_EQ(release(9), 0) << errors_.str();
+    EXPECT_EQ(read(out_ / "stages/09-gpu/shade.glsl"),
+              text({"vec3 shade(vec3 n, vec3 l) {", "    return vec3(max(0.0, dot(n, l)));", "}"}));
+}
+
 TEST_F(ReleaseTree, SolvedThroughKeepsEarlierStages) {
     ASSERT_EQ(release(1), 0) << errors_.str();
     EXPECT_NE(log_.str().find("1 regions stripped, 1 regions kept"), std::string::npos)

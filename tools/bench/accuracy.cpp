@@ -199,6 +199,9 @@ const std::vector<ScenarioInfo>& scenarios() {
         {"far-small", "sphere",
          "radius 1 at distance 1e3..3e4, lines within 0.95 r or beyond 1.05 r", false},
         {"large-near", "sphere", "radius 1e3..1e4, origins 1e-2..1 above the surface", false},
+        {"sphere-inside", "sphere",
+         "origins inside a sphere of radius 0.5..2, rays in every direction (every ray hits)",
+         false},
     };
     return list;
 }
@@ -233,6 +236,10 @@ AccuracyResults run_accuracy(const AccuracyConfig& config) {
         if (config.progress) config.progress("self-intersection");
     }
     if (config.rendering) detail::rendering(config, res);
+    if (config.textures) {
+        res.texture = measure_texture_filters(200, 150, res.texture_note);
+        if (config.progress) config.progress("texture filters");
+    }
     res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return res;
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/texture_filters.h"
+
 namespace rt::bench {
 
 struct AccuracyConfig {
@@ -18,6 +20,7 @@ struct AccuracyConfig {
     std::string family;  // "triangle" or "sphere": only those scenarios ("": all)
     bool self_intersection = true;
     bool rendering = true;
+    bool textures = true;    // the texture-filter rows (needs the OpenImageIO module for all)
     int render_divisor = 2;  // stage scenes are rendered at 1/divisor of their size
     std::function<void(const std::string&)> progress;  // one line per finished part
 };
@@ -63,6 +66,8 @@ struct AccuracyResults {
     std::vector<RenderPoint> render;
     std::vector<std::string> render_scenes;
     int render_width_sum = 0, render_height_sum = 0;
+    std::vector<TexturePoint> texture;
+    std::string texture_note;
     double seconds = 0;
 };
 

@@ -46,15 +46,17 @@ struct Method {
     Fn fn;
 };
 template <typename T>
-std::array<Method<TriFn<T>>, 4> tri_methods() {
+std::array<Method<TriFn<T>>, 5> tri_methods() {
     return {{{"Cramer", &cramer<T>},
              {"Moeller-Trumbore", &moller_trumbore<T>},
+             {"plane + same side (Leeds)", &plane_same_side<T>},
              {"watertight", &watertight<T>},
              {"watertight FMA", &watertight<T, true>}}};
 }
 template <typename T>
-std::array<Method<SphFn<T>>, 3> sphere_methods() {
+std::array<Method<SphFn<T>>, 4> sphere_methods() {
     return {{{"textbook", &sphere_textbook<T>},
+             {"geometric (Arizona)", &sphere_geometric<T>},
              {"q-form", &sphere_qform<T>},
              {"RTG ch. 7", &sphere_rtg<T>}}};
 }

@@ -71,6 +71,27 @@ Result<T> moller_trumbore(const V3<T>& o, const V3<T>& d, const V3<T>& a, const 
     return {true, t, u, v};
 }
 
+// A seed course's method (the Leeds ray tracer): intersect the triangle's plane, then keep the
+// point if it lies on the inner side of all three edges (cross(edge, p - start).n >= 0).
+// Barycentrics from the sub-triangle areas, for the report's comparison.
+template <typename T>
+Result<T> plane_same_side(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>& b,
+                          const V3<T>& c, T tmin, T tmax) {
+    Result<T> r;
+    const V3<T> n = glm::cross(b - a, c - a);
+    const T denom = glm::dot(n, d);
+    if (denom == 0 || !std::isfinite(denom)) return r;
+    const T t = glm::dot(n, a - o) / denom;
+    if (!(tmin < t && t < tmax)) return r;
+    const V3<T> p = o + t * d;
+    if (glm::dot(glm::cross(b - a, p - a), n) < 0 || glm::dot(glm::cross(c - b, p - b), n) < 0 ||
+        glm::dot(glm::cross(a - c, p - c), n) < 0)
+        return r;
+    const T area = glm::dot(n, n);
+    return {true, t, glm::dot(glm::cross(p - a, c - a), n) / area,
+            glm::dot(glm::cross(b - a, p - a), n) / area};
+}
+
 namespace detail {
 // a*b - c*d with the exact sign; see framework/geometry/watertight.cpp.
 template <typename T>
@@ -167,6 +188,25 @@ Result<T> sphere_textbook(const V3<T>& o, const V3<T>& d, const V3<T>& center, T
     if (disc < 0) return {};
     const T s = std::sqrt(disc);
     return pick_root((-b - s) / (2 * a), (-b + s) / (2 * a), tmin, tmax);
+}
+
+// A seed course's geometric method (the Arizona lecture): with a unit direction, t_ca = L.d for
+// L = c - o, and a miss when t_ca < 0 (the centre is behind the origin); else d2 = L.L - t_ca^2,
+// a miss when d2 > r^2, and t = t_ca -+ sqrt(r^2 - d2). The early exit is wrong from inside a
+// sphere whose centre is behind the origin: the report counts those as false misses.
+template <typename T>
+Result<T> sphere_geometric(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radius, T tmin,
+                           T tmax) {
+    const T length = glm::length(d);
+    if (!(length > 0) || !std::isfinite(length)) return {};
+    const V3<T> unit = d / length;
+    const V3<T> l = center - o;
+    const T t_ca = glm::dot(l, unit);
+    if (t_ca < 0) return {};
+    const T d2 = glm::dot(l, l) - t_ca * t_ca;
+    if (d2 > radius * radius) return {};
+    const T t_hc = std::sqrt(radius * radius - d2);
+    return pick_root((t_ca - t_hc) / length, (t_ca + t_hc) / length, tmin, tmax);
 }
 
 // The stable q-form: half b (hb = d.(o-c)), disc = hb^2 - a c, roots by qform_root.

@@ -87,11 +87,12 @@ void write_header(std::ostream& m, const AccuracyResults& r, const std::string& 
 
 void write_what_is_measured(std::ostream& m) {
     m << "## What is measured\n\n"
-         "Triangle methods: Cramer's rule as taught in stage 02, Moeller-Trumbore, the watertight "
-         "test of Woop, "
+         "Triangle methods: Cramer's rule as taught in stage 02, Moeller-Trumbore, a seed course's "
+         "plane-then-same-side test (the Leeds tracer), the watertight test of Woop, "
          "Benthin and Wald (as in `framework/geometry/watertight.cpp`), and that test with fused "
          "multiply-adds "
-         "in its edge functions. Sphere methods: the textbook quadratic, the q-form (roots q/a and "
+         "in its edge functions. Sphere methods: the textbook quadratic, a seed course's geometric "
+         "method with its t_ca < 0 early exit (the Arizona lecture), the q-form (roots q/a and "
          "c/q), and "
          "Ray Tracing Gems ch. 7 (q-form with the discriminant as r^2 - |l|^2, the stage 02 "
          "solution). All are "
@@ -270,7 +271,24 @@ void write_spheres(std::ostream& m, const AccuracyResults& r, const std::string&
       << "- *Near-tangent rays* are a tie within rounding for every method (sphere-grazing): RTG "
          "float "
       << say(r, "sphere-grazing", "RTG ch. 7", "float", fhit) << " false hits, textbook float "
-      << say(r, "sphere-grazing", "textbook", "float", fhit) << ".\n";
+      << say(r, "sphere-grazing", "textbook", "float", fhit) << ".\n"
+      << "- *The seeds' geometric method* (the Arizona lecture: t_ca = L.d, give up when t_ca < 0) "
+         "assumes the origin is outside. From inside a sphere whose centre lies behind the origin "
+         "it misses a surface that is there: "
+      << say(r, "sphere-inside", "geometric (Arizona)", "float", fmiss)
+      << " false misses in sphere-inside, against "
+      << say(r, "sphere-inside", "RTG ch. 7", "float", fmiss)
+      << " for RTG. Refraction rays start inside spheres, so glass goes black with it. Outside, "
+         "d2 = L.L - t_ca^2 cancels as the textbook discriminant does (far-small: "
+      << say(r, "far-small", "geometric (Arizona)", "float", fhit) << " false hits and "
+      << say(r, "far-small", "geometric (Arizona)", "float", fmiss) << " false misses).\n"
+      << "- *The seeds' plane and same-side triangle test* (the Leeds tracer) decides each edge "
+         "from a point it has already rounded: "
+      << say(r, "through-edge", "plane + same side (Leeds)", "float", leak)
+      << " leaks exactly through an edge and "
+      << say(r, "near-edge", "plane + same side (Leeds)", "float", leak)
+      << " near one, against Cramer's " << say(r, "through-edge", "Cramer", "float", leak)
+      << " and " << say(r, "near-edge", "Cramer", "float", leak) << ".\n";
 }
 
 void write_self_intersection(std::ostream& m, const AccuracyResults& r) {
@@ -376,6 +394,33 @@ void write_rendering(std::ostream& m, const AccuracyResults& r, const std::strin
     }
 }
 
+void write_textures(std::ostream& m, const AccuracyResults& r, const std::string& svg) {
+    if (r.texture.empty()) return;
+    m << "\n## Texture filtering\n\n";
+    if (!svg.empty())
+        m << "![time against image error, texture filters](" << svg << "/textures.svg)\n\n";
+    m << "Stage 07's `filtering` scene at 200x150: a floor of 4-texel checks (one 64x64 image "
+         "every 4 units) seen at a grazing angle, each pixel looked up once at its centre, "
+         "against 16 x 16 bilinear samples per pixel box-filtered (the reference). nearest and "
+         "bilinear are the bench's copies of stage 07's lookups; OIIO is OpenImageIO's "
+         "TextureSystem through the framework's module (`rt render --texture-filter oiio`), given "
+         "the pixel's footprint from the neighbouring pixels' rays. Time: the lookups of the "
+         "whole image, one thread. "
+      << r.texture_note
+      << ".\n\n<!-- table:textures -->\n| filter | ms | RMSE vs reference | pixels off by > "
+         "2/255 |\n|---|--:|--:|--:|\n";
+    for (const TexturePoint& p : r.texture)
+        m << "| " << p.filter << " | " << fmt("%.2f", p.ms) << " | " << fmt("%.2f", p.rmse) << " | "
+          << fmt("%.1f", p.off_percent) << "% |\n";
+    m << "<!-- end table -->\n\n**Reading.** Near the camera a pixel covers less than a texel "
+         "and every filter agrees; towards the horizon it covers dozens, and one lookup per "
+         "pixel (nearest or bilinear) picks a texel at random: moire, which no choice of "
+         "interpolation between four texels removes. A mip-map averages the texels in advance, "
+         "so one lookup in the right level gives their mean; trilinear chooses the level by the "
+         "footprint's longer side and blurs along the shorter, anisotropic filtering takes "
+         "several lookups along the longer side.\n";
+}
+
 void write_contraction(std::ostream& m) {
     m << "\n## Contraction is off\n\n"
          "`Accuracy.Build.ContractionIsOff` computes `a*b + c` in a separately compiled file of "
@@ -398,6 +443,7 @@ std::string markdown_report(const AccuracyResults& r, const std::string& svg,
     write_spheres(m, r, svg);
     write_self_intersection(m, r);
     write_rendering(m, r, svg);
+    write_textures(m, r, svg);
     write_contraction(m);
     return m.str();
 }

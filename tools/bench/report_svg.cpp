@@ -191,6 +191,17 @@ void write_svgs(const AccuracyResults& r, const std::string& dir) {
                  "wrong decisions, % of rays", family_points(r, "sphere"), kFloor,
                  "wrong = false miss + false hit over all sphere scenarios; 0 drawn at 0.001"));
     if (!r.render.empty()) put("render.svg", render_svg(r));
+    if (!r.texture.empty()) {
+        std::vector<PlotPoint> pts;
+        for (const TexturePoint& p : r.texture)
+            pts.push_back({p.filter, p.ms, p.rmse, "",
+                           p.filter.find("OIIO") != std::string::npos ? "#2ca02c" : "#d62728"});
+        put("textures.svg",
+            svg_plot(
+                "Texture filtering: time against image error", "ms for the image (one thread)",
+                "RMSE vs 16x16 supersampling (8-bit units)", pts, 1e-3,
+                "red: one nearest or bilinear lookup per pixel; green: OpenImageIO mip-mapped"));
+    }
 }
 
 }  // namespace rt::bench

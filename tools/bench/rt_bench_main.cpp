@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
     acc->add_option("--svg-dir", svg_dir, "write the plots (SVG) into this folder");
     acc->add_option("--csv", csv, "write every table row as CSV");
     acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
+    acc->add_flag("!--no-textures", cfg.textures, "skip the texture-filter section");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
     if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`"))

@@ -259,6 +259,13 @@ void make_spheres(Scenario& s, Rng& rng, int n, const std::string& key) {
             const V3d side = glm::normalize(glm::cross(to_c, runit(rng)));
             const double off = rng.integer(0, 1) ? rng.uniform(0, 0.95) : rng.uniform(1.05, 1.5);
             c = {to_f(o), to_f(centre + side * off - o), to_f(centre), 1.0f};
+        } else if (key == "sphere-inside") {
+            // The origin anywhere inside (up to 0.95 r from the centre), any direction: every ray
+            // leaves through the sphere, half of them with the centre behind the origin.
+            const V3d centre = rvec(rng, -5, 5);
+            const double r = rng.uniform(0.5, 2);
+            const V3d o = centre + runit(rng) * (r * rng.uniform(0, 0.95));
+            c = {to_f(o), to_f(runit(rng) * rng.uniform(0.5, 2)), to_f(centre), float(r)};
         } else {  // large-near: radius 1e3 .. 1e4, origin 1e-2 .. 1 above the surface
             const V3d centre = rvec(rng, -10, 10);
             const double r = log_uniform(rng, 3, 4);

@@ -133,62 +133,11 @@ TEST_F(Radiance, NoEnvironmentIsTheBackgroundColour) {
     EXPECT_EQ(environment_radiance(scene, Vec3(0, 0, -1)), scene.background);
 }
 
-// The hook: a scene without an environment never reaches stage 08 code (no stub is counted even
-// in a starter tree), one with an environment gets environment_radiance.
-TEST(Background, WithoutAnEnvironmentIsTheScenesColourAndCallsNoStageCode) {
-    Scene scene;
-    scene.background = Color(0.1f, 0.2f, 0.3f);
-    scene.update_features();
-    const auto stubs = stub_calls_total();
-    EXPECT_EQ(background(scene, Vec3(0, 0, -1)), scene.background);
-    EXPECT_EQ(background(scene, Vec3(5, 1, 0)), scene.background);
-    EXPECT_EQ(stub_calls_total(), stubs);
-    EXPECT_FALSE(scene.features.environment);
-}
-
 TEST_F(Radiance, BackgroundUsesTheEnvironment) {
     const Scene scene = latlong_scene(8, 4);
     ASSERT_TRUE(scene.features.environment);
     const Vec3 d(0.2f, 0.4f, -1);
     EXPECT_EQ(background(scene, d), environment_radiance(scene, d));
-}
-
-// ---- the committed images -------------------------------------------------------------------
-
-const std::filesystem::path kScenes = testing::source_dir() / "stages/08-environment/scenes";
-
-TEST(EnvironmentImages, CommittedFilesAreTheGeneratorsOutput) {
-    // Regenerate with: build/bin/make-environment-images stages/08-environment/scenes
-    const Image sky = read_image(kScenes / "sky.exr");
-    const Image made = testing::make_latlong_sky();
-    ASSERT_EQ(sky.width, made.width);
-    ASSERT_EQ(sky.height, made.height);
-    for (std::size_t k = 0; k < sky.pixels.size(); ++k)
-        for (int c = 0; c < 3; ++c)
-            ASSERT_NEAR(sky.pixels[k][c], made.pixels[k][c],
-                        2e-3f * std::max(1.0f, made.pixels[k][c]))
-                << "sky.exr pixel " << k;
-    for (int f = 0; f < kCubeFaces; ++f) {
-        const auto file = kScenes / "cube" / (std::string(kCubeFaceNames[f]) + ".png");
-        const Image8 face = read_image8(file);
-        const Image8 want = to_image8(testing::make_cube_face(f));
-        EXPECT_EQ(face.width, want.width) << file;
-        EXPECT_TRUE(face.data == want.data) << file << " differs from make_cube_face(" << f << ")";
-    }
-}
-
-TEST(EnvironmentScenes, LoadWithTheirEnvironment) {
-    const Scene sky = load_scene(kScenes / "sky.json");
-    EXPECT_EQ(sky.environment.kind, EnvironmentKind::LatLong);
-    EXPECT_TRUE(sky.features.environment);
-    EXPECT_NE(sky.features.describe().find("environment"), std::string::npos);
-    const Scene cube = load_scene(kScenes / "cube_mirror.json");
-    ASSERT_EQ(cube.environment.kind, EnvironmentKind::CubeMap);
-    for (int f = 0; f < kCubeFaces; ++f) {
-        const TextureImage& image = cube.texture_images[std::size_t(cube.environment.faces[f])];
-        EXPECT_EQ(image.width, 32);
-        EXPECT_EQ(image.height, 32);
-    }
 }
 
 }  // namespace

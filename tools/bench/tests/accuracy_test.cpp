@@ -30,6 +30,7 @@ AccuracyResults run(std::uint64_t seed, int cases, bool self, const std::string&
     c.cases = cases;
     c.timing = false;
     c.rendering = false;
+    c.textures = false;
     c.self_intersection = self;
     c.family = family;
     return run_accuracy(c);

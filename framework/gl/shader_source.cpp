@@ -1,0 +1,145 @@
+#include "gl/shader_source.h"
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "core/source_dir.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+bool read_file(const fs::path& path, std::string& text) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    return true;
+}
+
+std::string trim_left(const std::string& s) {
+    const std::size_t i = s.find_first_not_of(" \t");
+    return i == std::string::npos ? "" : s.substr(i);
+}
+
+// Mesa 22 reports every message as source string 0 whatever #line says, so the file is also
+// encoded in the line number: file k's line n is line k * kFileLines + n.
+constexpr int kFileLines = 100000;
+
+std::string line_directive(int line, int file) {
+    return "#line " + std::to_string(file * kFileLines + line) + " " + std::to_string(file) + "\n";
+}
+
+class Assembler {
+  public:
+    Assembler(const std::vector<fs::path>& dirs, AssembledShader& out) : dirs_(dirs), out_(out) {}
+
+    // Appends `path` (source string `id`); false when an include failed (out_.error set).
+    bool add(const fs::path& path, const std::string& defines, bool entry) {
+        std::string text;
+        if (!read_file(path, text)) {
+            out_.error = display_path(path) + ": cannot read the shader file";
+            return false;
+        }
+        const int id = int(out_.files.size());
+        out_.files.push_back(display_path(path));
+        included_.insert(fs::weakly_canonical(path));
+        if (!entry) out_.text += line_directive(1, id);
+        std::istringstream lines(text);
+        std::string line, function;
+        int number = 0;
+        static const std::regex include_re(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
+        static const std::regex stub_re(R"re(RT_NOT_IMPLEMENTED\(\s*"([^"]*)"\s*\))re");
+        static const std::regex function_re(R"(^[A-Za-z_]\w*\s+([A-Za-z_]\w*)\s*\([^;]*$)");
+        while (std::getline(lines, line)) {
+            ++number;
+            std::smatch m;
+            if (entry && number == 1 && line.starts_with("#version")) {
+                out_.text += line + "\n" + defines;
+                out_.text += line_directive(number + 1, id);
+                continue;
+            }
+            if (std::regex_match(line, m, include_re)) {
+                const fs::path found = find(path.parent_path(), m[1].str());
+                if (found.empty()) {
+                    out_.error = out_.files[std::size_t(id)] + ":" + std::to_string(number) +
+                                 ": error: include \"" + m[1].str() +
+                                 "\" not found beside the file or in the shader folders";
+                    return false;
+                }
+                if (!included_.contains(fs::weakly_canonical(found)) && !add(found, defines, false))
+                    return false;
+                out_.text += line_directive(number + 1, id);
+                continue;
+            }
+            if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
+            if (!trim_left(line).starts_with("//") && std::regex_search(line, m, stub_re)) {
+                const int k = int(out_.stubs.size());
+                out_.stubs.push_back({function, out_.files[std::size_t(id)], number, m[1].str()});
+                line = m.prefix().str() + "rt_not_implemented(" + std::to_string(k) + ")" +
+                       m.suffix().str();
+            }
+            out_.text += line + "\n";
+        }
+        return true;
+    }
+
+  private:
+    fs::path find(const fs::path& beside, const std::string& name) const {
+        if (fs::is_regular_file(beside / name)) return beside / name;
+        for (const fs::path& dir : dirs_)
+            if (fs::is_regular_file(dir / name)) return dir / name;
+        return {};
+    }
+
+    const std::vector<fs::path>& dirs_;
+    AssembledShader& out_;
+    std::set<fs::path> included_;
+};
+
+}  // namespace
+
+AssembledShader assemble_shader(const fs::path& entry, const std::vector<fs::path>& include_dirs,
+                                const std::string& defines) {
+    AssembledShader out;
+    Assembler(include_dirs, out).add(entry, defines, true);
+    return out;
+}
+
+std::string display_path(const fs::path& path) {
+    const fs::path absolute = fs::weakly_canonical(path);
+    const fs::path root = fs::weakly_canonical(source_dir());
+    const fs::path relative = absolute.lexically_relative(root);
+    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return absolute.generic_string();
+}
+
+std::string map_compile_log(const std::string& log, const std::vector<std::string>& files) {
+    static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\): (.*)$)");
+    static const std::regex glslang(R"(^(ERROR|WARNING): (\d+):(\d+): (.*)$)");
+    // "file:line" of a (source string, line) pair; the line number carries the file.
+    auto where = [&](const std::string& k, const std::string& l) {
+        const long line = std::stol(l);
+        const std::size_t i = line >= kFileLines ? std::size_t(line / kFileLines) : std::stoul(k);
+        const std::string name = i < files.size() ? files[i] : "source " + std::to_string(i);
+        return name + ":" + std::to_string(line % kFileLines);
+    };
+    std::istringstream lines(log);
+    std::string line, out;
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, mesa))
+            line = where(m[1], m[2]) + ":" + m[3].str() + ": " + m[4].str();
+        else if (std::regex_match(line, m, glslang))
+            line =
+                where(m[2], m[3]) + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") + m[4].str();
+        if (!line.empty()) out += line + "\n";
+    }
+    return out;
+}
+
+}  // namespace rt

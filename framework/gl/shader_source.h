@@ -1,0 +1,47 @@
+// GLSL assembled on the host: `#include "file"` expanded (each file once), `#line N K` after
+// every switch of file so the driver's messages carry our line numbers, and the source-string
+// number K mapped back to a path, so an error reads
+//   stages/09-gpu/intersect.glsl:12:5: error: ...
+// Mesa 22 prints every message as source string 0, whatever #line says, so the line number
+// carries the file as well (file k's line n is k * 100000 + n). Plain integers work with every
+// compiler; file names in #line would need GL_ARB_shading_language_include (Mesa) or
+// GL_GOOGLE_cpp_style_line_directive (glslang), which not every driver has.
+//
+// Student stubs are written as in C++, RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#section");
+// GLSL has no strings, so each live one becomes rt_not_implemented(k) and the host keeps
+// (function, file, line, section) as entry k, for the one-line report (core/not_implemented.h).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct ShaderStub {
+    std::string function, file;  // file as shown in messages
+    int line = 0;
+    std::string handout;
+};
+
+struct AssembledShader {
+    std::string text;
+    std::vector<std::string> files;  // by source-string number (0: the entry file)
+    std::vector<ShaderStub> stubs;   // by rt_not_implemented's argument
+    std::string error;               // one line when an include cannot be read
+};
+
+// `entry` starts with #version; `defines` (lines of "#define X") go right after it.
+// Includes are looked up beside the including file, then in `include_dirs` in order.
+AssembledShader assemble_shader(const std::filesystem::path& entry,
+                                const std::vector<std::filesystem::path>& include_dirs,
+                                const std::string& defines);
+
+// A path as messages show it: relative to the course tree when inside it.
+std::string display_path(const std::filesystem::path& path);
+
+// A compiler log (Mesa's "K:L(C): error: msg" or glslang's "ERROR: K:L: msg") with each source
+// string K replaced by its file: "file:L:C: error: msg". Lines it does not recognise are kept.
+std::string map_compile_log(const std::string& log, const std::vector<std::string>& files);
+
+}  // namespace rt

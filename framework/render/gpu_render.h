@@ -1,0 +1,43 @@
+// Stage 09: the scene rendered by a compute shader (shaders/trace.comp with the student GLSL of
+// stages/09-gpu/), on a headless or windowed OpenGL context (gl/gl_context.h). The result comes
+// back as an Image, so every output path of the CPU renderer works unchanged.
+//
+// On the "calls student code" side: the GLSL it compiles is the student's.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+#include "gl/gl_context.h"
+#include "gl/shader_source.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct GpuRenderOptions {
+    GlKind context = GlKind::Egl;
+    std::filesystem::path student_dir;  // empty: stages/09-gpu of the course tree
+    std::ostream* log = nullptr;        // "gpu: egl (surfaceless): llvmpipe ..." when set
+};
+
+// Thrown for what stops a GPU render: no context, a shader that does not compile (the message
+// is "file:line:col: error: ..."), a scene the GPU port cannot draw yet.
+struct GpuError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The #defines trace.comp is compiled with for `scene` in `mode` (one per line).
+std::string gpu_defines(const Scene& scene, RenderMode mode);
+
+// Renders like render() (render/render.h): debug modes store display values, a pixel that reached
+// a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
+Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options = {});
+
+// The shader as it would be compiled for `scene` (the offline glslangValidator check).
+AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
+                                      const std::filesystem::path& student_dir = {});
+
+}  // namespace rt

@@ -1,0 +1,72 @@
+// GLSL assembly on the host (gl/shader_source.h): includes expanded once each, #line numbers that
+// carry the file, stubs turned into rt_not_implemented(k), compiler logs mapped to file:line.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "gl/shader_source.h"
+#include "temp_dir.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+class ShaderSource : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("rt-shader-source-" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "student");
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    void write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+    }
+    fs::path dir_;
+};
+
+TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreNumbered) {
+    write("main.comp", "#version 430\n#include \"a.glsl\"\n#include \"a.glsl\"\nvoid main() {}\n");
+    write("student/a.glsl",
+          "float f(float x) {\n    // RT_NOT_IMPLEMENTED(\"x.md#commented\");\n"
+          "    RT_NOT_IMPLEMENTED(\"stages/09-gpu/README.md#f\");\n    return x;\n}\n");
+    const AssembledShader s =
+        assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "#define A\n");
+    ASSERT_EQ(s.error, "");
+    ASSERT_EQ(s.files.size(), 2u);  // a.glsl once, however often it is included
+    EXPECT_EQ(s.text.rfind("#version 430\n#define A\n#line 2 0\n", 0), 0u) << s.text;
+    EXPECT_NE(s.text.find("#line 100001 1\nfloat f"), std::string::npos) << s.text;
+    EXPECT_NE(s.text.find("    rt_not_implemented(0);\n"), std::string::npos) << s.text;
+    EXPECT_NE(s.text.find("#line 4 0\nvoid main"), std::string::npos) << s.text;
+    ASSERT_EQ(s.stubs.size(), 1u);  // the commented one is not live
+    EXPECT_EQ(s.stubs[0].function, "f");
+    EXPECT_EQ(s.stubs[0].line, 3);
+    EXPECT_EQ(s.stubs[0].handout, "stages/09-gpu/README.md#f");
+}
+
+TEST_F(ShaderSource, MissingIncludeNamesTheLine) {
+    write("main.comp", "#version 430\n\n#include \"nowhere.glsl\"\n");
+    const AssembledShader s = assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "");
+    EXPECT_NE(s.error.find("main.comp:3: error: include \"nowhere.glsl\" not found"),
+              std::string::npos)
+        << s.error;
+}
+
+TEST(ShaderLog, MesaAndGlslangMessagesBecomeFileLine) {
+    const std::vector<std::string> files = {"shaders/trace.comp", "stages/09-gpu/intersect.glsl"};
+    EXPECT_EQ(map_compile_log("0:100012(5): error: `x' undeclared\n", files),
+              "stages/09-gpu/intersect.glsl:12:5: error: `x' undeclared\n");
+    EXPECT_EQ(map_compile_log("0:7(1): warning: w\n", files),
+              "shaders/trace.comp:7:1: warning: w\n");
+    EXPECT_EQ(map_compile_log("ERROR: 1:100012: 'x' : undeclared identifier\nERROR: 1 compilation "
+                              "errors.  No code generated.\n",
+                              files),
+              "stages/09-gpu/intersect.glsl:12: error: 'x' : undeclared identifier\nERROR: 1 "
+              "compilation errors.  No code generated.\n");
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,179 @@
+// The framework's side of the GPU stage (stage 09): the types the student functions share, the
+// scene's uniforms, the output buffer, the stub flag, and the given geometry helpers (the GLSL
+// twins of framework/core/hit.h and framework/geometry/offset.cpp). Included by trace.comp after
+// scene_layout.glsl; everything here is float (GLSL has double, most GPUs run it slowly).
+
+// A macro: uintBitsToFloat is not a constant expression for glslang.
+#define kInfinity uintBitsToFloat(0x7f800000u)
+const float kPi = 3.14159265358979323846;
+
+struct Ray { vec3 origin; vec3 direction; };
+// The open interval (min, max) of t a hit must lie in (core/ray.h).
+struct Interval { float min; float max; };
+bool contains(Interval range, float t) { return range.min < t && t < range.max; }
+
+// What an intersection reports (core/hit.h); primitive: the global id (kind << 28 | index).
+struct Hit {
+    float t;
+    vec3 point;
+    vec3 normal;      // unit, facing the side the ray came from
+    bool front_face;  // the ray arrived on the side the outward normal points to
+    vec2 uv;          // triangles: barycentrics (beta, gamma)
+    int primitive;
+    int material;
+};
+Hit no_hit() { return Hit(kInfinity, vec3(0), vec3(0), true, vec2(0), -1, -1); }
+void set_face_normal(inout Hit hit, Ray ray, vec3 outward_normal) {
+    hit.front_face = dot(ray.direction, outward_normal) < 0.0;
+    hit.normal = hit.front_face ? outward_normal : -outward_normal;
+}
+
+const int kSphere = 0, kPlane = 1, kTriangle = 2, kBox = 3;
+const int kKindShift = 28;
+int primitive_id(int kind, int index) { return (kind << kKindShift) | index; }
+int primitive_kind(int id) { return id >> kKindShift; }
+int primitive_index(int id) { return id & ((1 << kKindShift) - 1); }
+
+// The scene besides its buffers (set by framework/render/gpu_render.cpp).
+struct Camera {
+    int projection;  // 0 perspective, 1 orthographic
+    vec3 eye, u, v, w;  // u right, v up, the camera looks along -w
+    float vertical_fov_degrees;
+    float view_height;
+};
+uniform Camera camera;
+uniform ivec2 image_size;
+uniform ivec4 primitive_counts;  // spheres, planes, triangles, boxes
+uniform int light_count;
+uniform int material_count;
+uniform vec3 background_colour;
+uniform vec3 ambient_light;
+uniform bool fresnel;
+uniform int render_mode;  // 0 directions, 1 normals, 2 depth, 4 shaded (RenderMode)
+
+// Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
+layout(std430, binding = 15) buffer Output {
+    uint stub_flags[4];
+    vec4 pixels[];  // rgb colour; a: depth (-1 miss), -2 when the pixel reached a stub
+};
+
+bool rt_stub_reached = false;
+// What RT_NOT_IMPLEMENTED("...") in a student file becomes (gl/shader_source.h).
+void rt_not_implemented(int stub) {
+    atomicOr(stub_flags[stub / 32], 1u << uint(stub % 32));
+    rt_stub_reached = true;
+}
+
+// A hit made ready for shading and for spawning rays (geometry/offset.h).
+struct SurfacePoint {
+    vec3 point;   // on the surface, refined
+    vec3 error;   // |computed - exact| <= error, per coordinate
+    vec3 normal;  // unit, facing the incoming ray
+    bool front_face;
+    int primitive;
+    int material;
+};
+
+float gamma_bound(int n) {
+    const float u = 5.9604644775390625e-8;  // 2^-24: float's unit roundoff
+    return float(n) * u / (1.0 - float(n) * u);
+}
+
+void triangle_vertices(int triangle, out vec3 a, out vec3 b, out vec3 c) {
+    const uvec4 v = triangles[triangle].vertices_material;
+    a = positions[v.x].xyz, b = positions[v.y].xyz, c = positions[v.z].xyz;
+}
+
+// geometry/offset.cpp's surface_point, line for line.
+SurfacePoint surface_point(Ray ray, Hit hit) {
+    SurfacePoint sp = SurfacePoint(hit.point, vec3(0), hit.normal, hit.front_face, hit.primitive,
+                                   hit.material);
+    const int i = primitive_index(hit.primitive);
+    switch (primitive_kind(hit.primitive)) {
+        case kSphere: {
+            const vec3 c = spheres[i].center_radius.xyz;
+            const vec3 from_centre = hit.point - c;
+            const float len = length(from_centre);
+            if (len > 0.0) sp.point = c + from_centre * (spheres[i].center_radius.w / len);
+            sp.error = gamma_bound(8) * (abs(c) + abs(sp.point - c));
+            break;
+        }
+        case kPlane: {
+            const vec3 p0 = planes[i].point_material.xyz, n = planes[i].normal.xyz;
+            sp.point = hit.point - n * dot(n, hit.point - p0);
+            const float distance_error = gamma_bound(5) * dot(abs(n), abs(hit.point) + abs(p0));
+            sp.error = abs(n) * distance_error + gamma_bound(2) * abs(sp.point);
+            break;
+        }
+        case kTriangle: {
+            vec3 a, b, c;
+            triangle_vertices(i, a, b, c);
+            const float b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
+            sp.point = b0 * a + b1 * b + b2 * c;
+            sp.error = gamma_bound(7) * (abs(b0 * a) + abs(b1 * b) + abs(b2 * c));
+            break;
+        }
+        case kBox: {
+            const vec3 lo = boxes[i].min_material.xyz, hi = boxes[i].max.xyz;
+            const vec3 outward = hit.front_face ? hit.normal : -hit.normal;
+            int axis = 0;
+            for (int k = 1; k < 3; ++k)
+                if (abs(outward[k]) > abs(outward[axis])) axis = k;
+            sp.point = clamp(hit.point, lo, hi);
+            sp.point[axis] = outward[axis] > 0.0 ? hi[axis] : lo[axis];
+            sp.error = gamma_bound(3) * abs(sp.point);
+            sp.error[axis] = 0.0;
+            break;
+        }
+    }
+    return sp;
+}
+
+// The next float towards +inf (up) or -inf (down); x finite.
+float next_float_up(float x) {
+    if (x == 0.0) return uintBitsToFloat(1u);
+    const uint bits = floatBitsToUint(x);
+    return uintBitsToFloat(x > 0.0 ? bits + 1u : bits - 1u);
+}
+float next_float_down(float x) { return -next_float_up(-x); }
+
+// geometry/offset.cpp's offset_ray_origin: just past the error box, on the side of `direction`.
+vec3 offset_ray_origin(vec3 point, vec3 error, vec3 normal, vec3 direction) {
+    const float d = dot(abs(normal), error);
+    vec3 offset = d * normal;
+    if (dot(direction, normal) < 0.0) offset = -offset;
+    vec3 origin = point + offset;
+    for (int k = 0; k < 3; ++k) {
+        if (offset[k] > 0.0)
+            origin[k] = next_float_up(origin[k]);
+        else if (offset[k] < 0.0)
+            origin[k] = next_float_down(origin[k]);
+    }
+    return origin;
+}
+
+// The material of index `m` (a scene built in code may lack one: the default material then).
+Material material_at(int m) {
+    if (m >= 0 && m < material_count) return materials[m];
+    return Material(vec4(0), vec4(0.8), vec4(0, 0, 0, 32), vec4(0), vec4(0), vec4(0, 0, 0, 1.5),
+                    ivec4(-1), vec4[4](vec4(1, 1, 0, 0), vec4(1, 1, 0, 0), vec4(1, 1, 0, 0),
+                                       vec4(1, 1, 0, 0)));
+}
+
+// scene.cpp's shading_normal: vertex normals interpolated, facing like the geometric normal.
+vec3 shading_normal(int triangle, vec2 uv) {
+    vec3 a, b, c;
+    triangle_vertices(triangle, a, b, c);
+    vec3 geometric = cross(b - a, c - a);
+    const float geometric_length = length(geometric);
+    geometric = geometric_length > 0.0 && !isinf(geometric_length) ? geometric / geometric_length
+                                                                    : vec3(0);
+    const uvec4 v = triangles[triangle].vertices_material;
+    const vec3 n0 = normals[v.x].xyz, n1 = normals[v.y].xyz, n2 = normals[v.z].xyz;
+    if (n0 == vec3(0) || n1 == vec3(0) || n2 == vec3(0)) return geometric;
+    vec3 n = (1.0 - uv.x - uv.y) * n0 + uv.x * n1 + uv.y * n2;
+    const float len = length(n);
+    if (!(len > 0.0) || isinf(len)) return geometric;
+    n /= len;
+    return dot(n, geometric) < 0.0 ? -n : n;
+}

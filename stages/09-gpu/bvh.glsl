@@ -1,0 +1,122 @@
+// Stage 09, BVH traversal: stage 06's queries (stages/06-bvh/bvh.cpp) in GLSL, over the nodes
+// the CPU built (bvh_nodes[], bvh_primitives[]: framework/accel/bvh.h). GLSL has no recursion
+// and no pointers: a node is its index, and the nodes still to visit wait on a fixed-size stack
+// (the builder never makes a tree deeper than kBvhMaxDepth). Planes stay outside the tree.
+// Handout: stages/09-gpu/README.md#bvh-traversal.
+
+const int kBvhMaxDepth = 64;
+
+// Ray-box slab test for a node, as stage 06's intersect_node: true when the segment t_range
+// meets the box, t_entry where it enters (clamped to t_range.min). Never miss a box a primitive
+// inside it is hit in: widen the exit distance by the rounding bound, as stage 06 does.
+bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
+                    out float t_entry) {
+    // BEGIN SOLUTION
+    const float eps = 5.9604644775390625e-8;  // 2^-24
+    const float growth = 1.0 + 2.0 * (3.0 * eps) / (1.0 - 3.0 * eps);
+    float t0 = t_range.min, t1 = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const bool negative = inv_direction[axis] < 0.0;
+        const float near_side = negative ? node.max[axis] : node.min[axis];
+        const float far_side = negative ? node.min[axis] : node.max[axis];
+        const float near = (near_side - ray.origin[axis]) * inv_direction[axis];
+        const float far = (far_side - ray.origin[axis]) * inv_direction[axis];
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+    }
+    t1 *= growth;
+    t1 = t_range.max < t1 ? t_range.max : t1;
+    t_entry = t0;
+    return t0 <= t1;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // t_entry = 0.0;
+    // return false;
+    // END SOLUTION
+}
+
+// The nearest hit in t_range (planes one by one, then the tree): nearer child first, skipping
+// a node that starts beyond the nearest hit so far. intersect_primitive (given) tests one
+// primitive by its global id and fills hit.primitive and hit.material.
+bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    bool found = false;
+    for (int i = 0; i < primitive_counts.y; ++i)
+        if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, hit)) {
+            found = true;
+            t_range.max = hit.t;
+        }
+    const vec3 inv_direction = 1.0 / ray.direction;
+    // One node a turn: the nearer child is pushed last, so it is visited first. No nested
+    // loops: invocations that run in lock-step diverge less. (A line-for-line port of stage 06's
+    // nested loops, with a break out of the inner one, missed hits on runs of neighbouring
+    // pixels under llvmpipe; the cause is not pinned down.)
+    uint stack_node[kBvhMaxDepth + 1];
+    float stack_t[kBvhMaxDepth + 1];
+    int top = 0;
+    float t_root;
+    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) {
+        stack_node[0] = 0u;
+        stack_t[0] = t_root;
+        top = 1;
+    }
+    while (top > 0) {
+        --top;
+        if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
+        const BvhNode node = bvh_nodes[stack_node[top]];
+        if (node.count > 0u) {
+            for (uint k = node.first; k < node.first + node.count; ++k)
+                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
+                    found = true;
+                    t_range.max = hit.t;
+                }
+            continue;
+        }
+        float t_left, t_right;
+        const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction, t_range,
+                                             t_left);
+        const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray, inv_direction,
+                                              t_range, t_right);
+        const bool left_first = !hit_right || (hit_left && t_left <= t_right);
+        // Push the farther child first.
+        if (left_first && hit_right) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
+        if (hit_left) stack_node[top] = node.first, stack_t[top++] = t_left;
+        if (!left_first) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
+    }
+    return found;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // return false;
+    // END SOLUTION
+}
+
+// Whether anything is hit in t_range (shadow rays): stops at the first hit found.
+bool bvh_intersect_any(Ray ray, Interval t_range) {
+    // BEGIN SOLUTION
+    Hit scratch = no_hit();
+    for (int i = 0; i < primitive_counts.y; ++i)
+        if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch)) return true;
+    const vec3 inv_direction = 1.0 / ray.direction;
+    uint stack[kBvhMaxDepth + 1];
+    int top = 0;
+    float t;
+    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t)) stack[top++] = 0u;
+    while (top > 0) {
+        const uint node = stack[--top];
+        const uint first = bvh_nodes[node].first;
+        if (bvh_nodes[node].count > 0u) {
+            for (uint k = first; k < first + bvh_nodes[node].count; ++k)
+                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
+                    return true;
+            continue;
+        }
+        for (uint child = first; child < first + 2u; ++child)
+            if (intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t))
+                stack[top++] = child;
+    }
+    return false;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // return false;
+    // END SOLUTION
+}

@@ -1,0 +1,185 @@
+// Stage 09, intersections: stage 02 (stages/02-intersections/intersections.cpp) in GLSL.
+// Handout: stages/09-gpu/README.md#intersections. The contract is stage 02's
+// (framework/stage_api/stage02.h): accept t only in the open interval t_range; on a hit fill
+// hit.t, hit.point, hit.normal and hit.front_face (set_face_normal), hit.uv, and return true; on a
+// miss return false and leave `hit` alone. A zero, NaN or infinite direction hits nothing.
+// `inout Hit hit` is GLSL's reference: the caller's variable is updated.
+
+// Ray-sphere by the quadratic formula in the stable form. center_radius: xyz centre, w radius.
+bool intersect_sphere(Ray ray, vec4 center_radius, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    const vec3 center = center_radius.xyz;
+    const float radius = center_radius.w;
+    const vec3 oc = ray.origin - center;
+    const vec3 d = ray.direction;
+    const float a = dot(d, d);
+    if (!(a > 0.0) || isinf(a)) return false;
+    const float half_b = dot(oc, d);
+    const float c = dot(oc, oc) - radius * radius;
+    const vec3 l = oc - (half_b / a) * d;
+    const float discriminant = a * (radius * radius - dot(l, l));
+    if (discriminant < 0.0) return false;
+    // q has the sign of -half_b (GLSL's sign() is 0 at 0: C++'s copysign is not).
+    const float root = sqrt(discriminant);
+    const float q = -(half_b + (half_b < 0.0 ? -root : root));
+    float t0 = q / a;
+    float t1 = q != 0.0 ? c / q : t0;
+    if (t0 > t1) {
+        const float swap = t0;
+        t0 = t1, t1 = swap;
+    }
+    float t = t0;
+    if (!contains(t_range, t)) {
+        t = t1;
+        if (!contains(t_range, t)) return false;
+    }
+    hit.t = t;
+    hit.point = ray.origin + t * ray.direction;
+    const vec3 outward = (hit.point - center) / radius;
+    set_face_normal(hit, ray, outward);
+    float phi = atan(-outward.z, outward.x);
+    if (phi < 0.0) phi += 2.0 * kPi;
+    hit.uv = vec2(phi / (2.0 * kPi), acos(clamp(outward.y, -1.0, 1.0)) / kPi);
+    return true;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // return false;
+    // END SOLUTION
+}
+
+// Ray-plane; a ray parallel to the plane misses. The outward normal is `normal`; uv (0, 0).
+bool intersect_plane(Ray ray, vec3 point, vec3 normal, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    const float denominator = dot(normal, ray.direction);
+    if (denominator == 0.0 || isinf(denominator) || isnan(denominator)) return false;
+    const float t = dot(normal, point - ray.origin) / denominator;
+    if (!contains(t_range, t)) return false;
+    hit.t = t;
+    hit.point = ray.origin + t * ray.direction;
+    set_face_normal(hit, ray, normal);
+    hit.uv = vec2(0);
+    return true;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // return false;
+    // END SOLUTION
+}
+
+// Ray-triangle by Cramer's rule: solve [a-b, a-c, d] (beta, gamma, t)^T = a - o. The outward
+// normal is normalize(cross(b - a, c - a)); uv = (beta, gamma).
+bool intersect_triangle(Ray ray, vec3 a, vec3 b, vec3 c, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    const vec3 col1 = a - b;
+    const vec3 col2 = a - c;
+    const vec3 col3 = ray.direction;
+    const vec3 rhs = a - ray.origin;
+    const float det_m = dot(col1, cross(col2, col3));
+    if (det_m == 0.0 || isinf(det_m) || isnan(det_m)) return false;
+    const float t = dot(col1, cross(col2, rhs)) / det_m;
+    if (!contains(t_range, t)) return false;
+    const float gamma = dot(col1, cross(rhs, col3)) / det_m;
+    if (gamma < 0.0 || gamma > 1.0) return false;
+    const float beta = dot(rhs, cross(col2, col3)) / det_m;
+    if (beta < 0.0 || beta > 1.0 - gamma) return false;
+    hit.t = t;
+    hit.point = ray.origin + t * ray.direction;
+    set_face_normal(hit, ray, normalize(cross(b - a, c - a)));
+    hit.uv = vec2(beta, gamma);
+    return true;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // return false;
+    // END SOLUTION
+}
+
+// Ray-box by slabs; the normal is that of the face hit (entry, or exit from inside); uv (0, 0).
+bool intersect_box(Ray ray, vec3 lo, vec3 hi, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    const vec3 o = ray.origin, d = ray.direction;
+    if (any(isinf(d)) || any(isnan(d)) || d == vec3(0)) return false;
+    float t_near = -kInfinity, t_far = kInfinity;
+    int near_axis = -1, far_axis = -1;
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0.0) {
+            if (o[i] < lo[i] || o[i] > hi[i]) return false;
+            continue;
+        }
+        float t0 = (lo[i] - o[i]) / d[i];
+        float t1 = (hi[i] - o[i]) / d[i];
+        if (t0 > t1) {
+            const float swap = t0;
+            t0 = t1, t1 = swap;
+        }
+        if (t0 > t_near) t_near = t0, near_axis = i;
+        if (t1 < t_far) t_far = t1, far_axis = i;
+    }
+    if (t_near > t_far) return false;
+    float t, sign;
+    int axis;
+    if (contains(t_range, t_near)) {
+        t = t_near, axis = near_axis, sign = d[axis] > 0.0 ? -1.0 : 1.0;
+    } else if (contains(t_range, t_far)) {
+        t = t_far, axis = far_axis, sign = d[axis] > 0.0 ? 1.0 : -1.0;
+    } else {
+        return false;
+    }
+    vec3 outward = vec3(0);
+    outward[axis] = sign;
+    hit.t = t;
+    hit.point = ray.origin + t * ray.direction;
+    set_face_normal(hit, ray, outward);
+    hit.uv = vec2(0);
+    return true;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // return false;
+    // END SOLUTION
+}
+
+// The nearest hit over every primitive (no BVH), filling hit.primitive (primitive_id) and
+// hit.material. The HAS_* macros say which arrays the scene has: skip the others, so the
+// compiled shader holds only the loops this scene needs.
+bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
+    // BEGIN SOLUTION
+    bool found = false;
+#ifdef HAS_SPHERES
+    for (int i = 0; i < primitive_counts.x; ++i)
+        if (intersect_sphere(ray, spheres[i].center_radius, t_range, hit)) {
+            found = true, t_range.max = hit.t;
+            hit.primitive = primitive_id(kSphere, i), hit.material = spheres[i].material.x;
+        }
+#endif
+#ifdef HAS_PLANES
+    for (int i = 0; i < primitive_counts.y; ++i)
+        if (intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz, t_range,
+                            hit)) {
+            found = true, t_range.max = hit.t;
+            hit.primitive = primitive_id(kPlane, i);
+            hit.material = floatBitsToInt(planes[i].point_material.w);
+        }
+#endif
+#ifdef HAS_TRIANGLES
+    for (int i = 0; i < primitive_counts.z; ++i) {
+        vec3 a, b, c;
+        triangle_vertices(i, a, b, c);
+        if (intersect_triangle(ray, a, b, c, t_range, hit)) {
+            found = true, t_range.max = hit.t;
+            hit.primitive = primitive_id(kTriangle, i);
+            hit.material = int(triangles[i].vertices_material.w);
+        }
+    }
+#endif
+#ifdef HAS_BOXES
+    for (int i = 0; i < primitive_counts.w; ++i)
+        if (intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit)) {
+            found = true, t_range.max = hit.t;
+            hit.primitive = primitive_id(kBox, i);
+            hit.material = floatBitsToInt(boxes[i].min_material.w);
+        }
+#endif
+    return found;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // return false;
+    // END SOLUTION
+}

@@ -1,0 +1,195 @@
+// Stage 09, the shader machinery: a compile error names the student's file and line, a stub is
+// reported once with its file and line and paints magenta, glslangValidator accepts every
+// shader. These pass whatever the student's GLSL computes, so they are framework tests (label
+// framework;gpu), not stage09 ones: a starter tree's stage09 tests must all fail on the stubs.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "core/not_implemented.h"
+#include "gl/shader_source.h"
+#include "render/accelerate.h"
+#include "render/gpu_render.h"
+#include "scene/scene_loader.h"
+#include "testing/stage_test.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+const char* const kStudentFiles[] = {"camera.glsl", "intersect.glsl", "bvh.glsl", "shade.glsl",
+                                     "recursion.glsl"};
+
+std::string read(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+// A fresh copy of stages/09-gpu's GLSL in a temporary folder.
+class StudentCopy {
+  public:
+    explicit StudentCopy(const std::string& name)
+        : dir_(fs::temp_directory_path() /
+               ("rt-stage09-" + name + "-" + std::to_string(getpid()))) {
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        for (const char* f : kStudentFiles)
+            fs::copy_file(::rt::testing::source_dir() / "stages/09-gpu" / f, dir_ / f);
+    }
+    ~StudentCopy() { fs::remove_all(dir_); }
+    const fs::path& dir() const { return dir_; }
+
+  private:
+    fs::path dir_;
+};
+
+// The release tool's stripping, for this test only: solutions out, stubs un-commented.
+std::string strip_solutions(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line, out;
+    enum { Outside, Solution, Stub } state = Outside;
+    while (std::getline(lines, line)) {
+        const std::string t = line.substr(std::min(line.size(), line.find_first_not_of(' ')));
+        if (t == "// BEGIN SOLUTION")
+            state = Solution;
+        else if (t == "// STUB")
+            state = Stub;
+        else if (t == "// END SOLUTION")
+            state = Outside;
+        else if (state == Outside)
+            out += line + "\n";
+        else if (state == Stub)
+            out += line.replace(line.find("// "), 3, "") + "\n";
+    }
+    return out;
+}
+
+Scene small_scene(const std::string& relative) {
+    Scene scene = load_scene(::rt::testing::source_dir() / "stages" / relative);
+    scene.image.width = 32, scene.image.height = 24;
+    build_acceleration(scene);
+    return scene;
+}
+
+TEST(GpuShader, CompileErrorNamesTheStudentFileAndLine) {
+    StudentCopy copy("broken");
+    const fs::path file = copy.dir() / "intersect.glsl";
+    std::string text = read(file);
+    // Break the first line of intersect_plane's body (the same line in a starter tree).
+    const std::size_t function = text.find("bool intersect_plane(");
+    ASSERT_NE(function, std::string::npos);
+    const std::size_t at = text.find("{\n", function) + 2;
+    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+    text.insert(at, "    float broken = undeclared_thing;\n");
+    write(file, text);
+    GpuRenderOptions options;
+    options.student_dir = copy.dir();
+    try {
+        render_gpu(small_scene("02-intersections/scenes/spheres_normals.json"), RenderMode::Normals,
+                   options);
+        FAIL() << "a shader with an undeclared name compiled";
+    } catch (const GpuError& e) {
+        const std::string message = e.what();
+        const std::string where = display_path(file) + ":" + std::to_string(line) + ":";
+        EXPECT_EQ(message.rfind(where, 0), 0u)
+            << "expected the message to start with " << where << "\n"
+            << message;
+        EXPECT_NE(message.find("error"), std::string::npos) << message;
+        EXPECT_NE(message.find("undeclared_thing"), std::string::npos) << message;
+    }
+}
+
+TEST(GpuShader, MissingIncludeIsOneLine) {
+    StudentCopy copy("include");
+    fs::remove(copy.dir() / "bvh.glsl");
+    GpuRenderOptions options;
+    options.student_dir = copy.dir();
+    try {
+        render_gpu(small_scene("02-intersections/scenes/spheres_normals.json"), RenderMode::Normals,
+                   options);
+        FAIL() << "rendered without bvh.glsl";
+    } catch (const GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("shaders/trace.comp:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("\"bvh.glsl\" not found"), std::string::npos)
+            << e.what();
+    }
+}
+
+// The starter tree's GLSL (every solution stripped) compiles, paints magenta, and names each
+// stub once: "not implemented: perspective_ray (.../camera.glsl:N); read ...#camera-rays".
+TEST(GpuShader, StubsCompileAndAreReportedOnce) {
+    StudentCopy copy("stubs");
+    for (const char* f : kStudentFiles)
+        write(copy.dir() / f, strip_solutions(read(copy.dir() / f)));
+    GpuRenderOptions options;
+    options.student_dir = copy.dir();
+    const Scene scene = small_scene("05-recursion/scenes/whitted.json");
+    const std::uint64_t before = stub_calls_total();
+    ::testing::internal::CaptureStderr();
+    const Image image = render_gpu(scene, RenderMode::Shaded, options);
+    render_gpu(scene, RenderMode::Shaded, options);  // reported once, not twice
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_GT(stub_calls_total(), before);
+    for (const Color& c : image.pixels) ASSERT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+    const std::string camera = display_path(copy.dir() / "camera.glsl");
+    const std::regex once("not implemented: perspective_ray \\(" + camera +
+                          ":[0-9]+\\);\\s*read stages/09-gpu/README.md#camera-rays");
+    EXPECT_TRUE(std::regex_search(err, once)) << err;
+    EXPECT_EQ(err.find("perspective_ray"), err.rfind("perspective_ray")) << err;
+}
+
+// glslangValidator (the Khronos reference front end) accepts the assembled shader with every
+// feature on and with none: what Mesa accepts is not always portable GLSL.
+TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
+    if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
+        GTEST_SKIP() << "glslangValidator not installed (apt-get install glslang-tools)";
+    const fs::path root = ::rt::testing::source_dir();
+    const std::string all =
+        "#define HAS_SPHERES\n#define HAS_PLANES\n#define HAS_TRIANGLES\n#define HAS_BOXES\n"
+        "#define HAS_VERTEX_NORMALS\n#define HAS_BVH\n#define HAS_SHADOWS\n#define HAS_REFLECTION\n"
+        "#define MAX_LIGHTS 4\n#define MAX_DEPTH 5\n";
+    const std::string variants[] = {all, all + "#define HAS_REFRACTION\n",
+                                    "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n"};
+    int n = 0;
+    for (const std::string& defines : variants) {
+        const AssembledShader shader =
+            assemble_shader(root / "shaders/trace.comp", {root / "stages/09-gpu"}, defines);
+        ASSERT_EQ(shader.error, "");
+        const fs::path file =
+            fs::temp_directory_path() /
+            ("rt-stage09-" + std::to_string(getpid()) + "-" + std::to_string(n++) + ".comp");
+        write(file, shader.text);
+        const fs::path log = file.string() + ".log";
+        const int status = std::system(
+            ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
+        EXPECT_EQ(status, 0) << map_compile_log(read(log), shader.files);
+        fs::remove(file), fs::remove(log);
+    }
+}
+
+TEST(GpuShader, ScenesTheGpuCannotDrawYetSaySo) {
+    Scene scene = small_scene("02-intersections/scenes/spheres_normals.json");
+    try {
+        render_gpu(scene, RenderMode::PrimitiveId);
+        FAIL();
+    } catch (const GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("not in the GPU port yet"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace rt
