@@ -16,6 +16,8 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev  # exact predicates in the tests
   libglfw3-dev libosmesa6-dev         # GL contexts (windowed, headless)
   libegl-dev libegl-mesa0 libepoxy-dev # headless EGL contexts, GL function loading
+  libimgui-dev                        # rt view: Dear ImGui with its GLFW and OpenGL 3 back-ends
+  xvfb xauth                          # View.ScriptedSession: the viewer's window under Xvfb
   glslang-tools                       # stage 09: glslangValidator checks every shader offline
   libembree-dev                       # rt-bench: Embree 3, the BVH benchmark's yardstick (optional)
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package

@@ -2,7 +2,10 @@
 //   rt render SCENE.json -o OUT.png [--mode M] [--width W --height H] [--threads N]
 //   rt render SCENE.json --debug-pixel X,Y [--debug-format text|json]   the ray tree of a pixel
 //   rt render SCENE.json -o OUT.png --overlay-pixel X,Y                 ... drawn onto the image
-//   rt gallery [--out DIR]       every scene of every stage, in its own mode
+//   rt render SCENE.json -o OUT.png --shadows off --max-depth 1         the viewer's toggles
+//   rt gallery [--out DIR]       every scene of every stage, in its own mode, and DIR/index.html
+//   rt view SCENE.json [--script FILE --out DIR]   the lecture-demo viewer (framework/view/)
+//   rt compare ACTUAL.png REFERENCE.png            the grader's image metric, one line
 //   rt info SCENE.json           what the scene contains and which features the renderer uses
 //   rt gl-info [--window]        the OpenGL context the GPU stage will use
 //   rt fmt [--check] SCENE.json...   rewrite scene files in canonical form (--check: only report)
@@ -21,8 +24,10 @@
 #include <vector>
 
 #include "apps/cli_parse.h"
+#include "apps/gallery_page.h"
 #include "core/source_dir.h"
 #include "gl/headless_context.h"
+#include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
 #include "render/gpu_render.h"
@@ -32,6 +37,9 @@
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
+#ifdef RT_HAVE_VIEW
+#include "view/view.h"
+#endif
 
 namespace fs = std::filesystem;
 using namespace rt;
@@ -54,6 +62,8 @@ struct RenderArgs {
     std::string accelerator;     // "", "none" or "bvh": overrides the scene's
     std::string texture_filter;  // "", nearest, bilinear, oiio, oiio-aniso: for every image
     double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
+    std::string shadows;         // "", on or off: overrides the scene's (the viewer's toggle)
+    int max_depth = -1;          // >= 0: overrides the scene's
     bool gpu = false;            // stage 09: a compute shader renders it (render/gpu_render.h)
     std::string gl = "egl";      // the context --gpu uses: egl, osmesa or window
 };
@@ -99,6 +109,9 @@ int run_render(const RenderArgs& args) {
     else if (!args.texture_filter.empty())
         scene.texture_lookup =
             args.texture_filter == "nearest" ? TextureLookup::Nearest : TextureLookup::Bilinear;
+    if (!args.shadows.empty()) scene.shadows = args.shadows == "on";
+    if (args.max_depth >= 0) scene.max_depth = args.max_depth;
+    scene.update_features();  // after the overrides, as the viewer does
     const RenderMode mode = args.mode.value_or(scene.mode);
     const AccelerationReport accel = build_acceleration(scene);
     if (accel.built && !args.quiet)
@@ -137,36 +150,16 @@ int run_render(const RenderArgs& args) {
     return 0;
 }
 
-// Every stage folder with scenes, in order: stages/NN-name/scenes/*.json.
-int run_gallery(const fs::path& source, const fs::path& out, int threads) {
-    std::vector<fs::path> stages;
-    for (const auto& entry : fs::directory_iterator(source / "stages"))
-        if (entry.is_directory() && fs::is_directory(entry.path() / "scenes"))
-            stages.push_back(entry.path());
-    std::sort(stages.begin(), stages.end());
-    int count = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (const fs::path& stage : stages) {
-        std::vector<fs::path> scenes;
-        for (const auto& entry : fs::directory_iterator(stage / "scenes"))
-            if (entry.path().extension() == ".json") scenes.push_back(entry.path());
-        std::sort(scenes.begin(), scenes.end());
-        const fs::path stage_out = out / stage.filename();
-        fs::create_directories(stage_out);
-        for (const fs::path& scene_file : scenes) {
-            Scene scene = load_scene(scene_file);
-            build_acceleration(scene);
-            RenderOptions options;
-            options.threads = threads;
-            const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
-            write_image(render(scene, scene.mode, options), image_file);
-            std::printf("  %s\n", image_file.c_str());
-            ++count;
-        }
-    }
-    std::printf("rendered %d scenes of %zu stages in %.1f s\ngallery: %s\n", count, stages.size(),
-                seconds_since(start), fs::absolute(out).lexically_normal().c_str());
-    return 0;
+// The grader's metric on two image files: one line, exit 0 when they match.
+int run_compare(const std::string& actual, const std::string& reference, int tolerance,
+                bool neighbourhood) {
+    CompareOptions options;
+    options.tolerance = tolerance;
+    options.neighbourhood = neighbourhood;
+    const CompareResult result =
+        compare_images(read_image8(actual), read_image8(reference), options);
+    std::printf("%s vs %s: %s\n", actual.c_str(), reference.c_str(), result.summary().c_str());
+    return result.passed ? 0 : 1;
 }
 
 int run_info(const std::string& file) {
@@ -268,6 +261,30 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
     return status;
 }
 
+// `rt view`'s arguments, declared whether or not the viewer is built.
+struct ViewArgsForCli {
+    std::string scene, script, out = ".";
+    int threads = 0, width = 0, height = 0;
+};
+
+int run_view_command(const ViewArgsForCli& args) {
+#ifdef RT_HAVE_VIEW
+    view::ViewArgs view_args;
+    view_args.scene = args.scene;
+    view_args.script = args.script;
+    view_args.out = args.out;
+    view_args.threads = args.threads;
+    view_args.width = args.width;
+    view_args.height = args.height;
+    return view::run_view(view_args);
+#else
+    (void)args;
+    throw std::runtime_error(
+        "rt: error: this rt was built without the viewer; install libimgui-dev "
+        "(scripts/install-deps.sh) and reconfigure");
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -311,6 +328,12 @@ int main(int argc, char** argv) {
                      "turn the camera about its up axis by DEGREES (positive: to the right)")
         ->check(CLI::Range(-45.0, 45.0));
     render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
+    render_cmd->add_option("--shadows", render_args.shadows, "override the scene's shadows")
+        ->check(CLI::IsMember({"on", "off"}));
+    render_cmd
+        ->add_option("--max-depth", render_args.max_depth,
+                     "override the scene's bounces of reflected/refracted rays")
+        ->check(CLI::Range(0, 64));
     render_cmd->add_flag("--gpu", render_args.gpu,
                          "render with the compute shader of stage 09 (shaders/trace.comp and "
                          "stages/09-gpu/*.glsl)");
@@ -326,6 +349,33 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     gallery_cmd->add_option("--threads", gallery_threads, "threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
+
+    std::string compare_actual, compare_reference;
+    int compare_tolerance = 2;
+    bool compare_neighbourhood = false;
+    auto* compare_cmd = app.add_subcommand(
+        "compare", "compare two images by the grader's metric (framework/image/compare.h)");
+    compare_cmd->add_option("actual", compare_actual, "image (.png or .exr)")->required();
+    compare_cmd->add_option("reference", compare_reference, "reference image")->required();
+    compare_cmd->add_option("--tolerance", compare_tolerance, "8-bit steps a channel may differ")
+        ->check(CLI::Range(0, 255));
+    compare_cmd->add_flag("--neighbourhood", compare_neighbourhood,
+                          "forgive anti-aliased edges (3x3), as the graders do");
+
+    ViewArgsForCli view_args;
+    auto* view_cmd = app.add_subcommand(
+        "view",
+        "the lecture-demo viewer: progressive render, toggles, ray trees (needs a display)");
+    view_cmd->add_option("scene", view_args.scene, "scene file (.json)")->required();
+    view_cmd->add_option("--script", view_args.script,
+                         "replay a session and exit (commands: framework/view/view_script.h)");
+    view_cmd->add_option("--out", view_args.out, "folder for screenshots (default: .)");
+    view_cmd->add_option("--threads", view_args.threads, "render threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    view_cmd->add_option("--width", view_args.width, "override the image width")
+        ->check(CLI::Range(1, 4096));
+    view_cmd->add_option("--height", view_args.height, "override the image height")
+        ->check(CLI::Range(1, 4096));
 
     std::string info_scene;
     auto* info_cmd = app.add_subcommand("info", "describe a scene file");
@@ -358,6 +408,10 @@ int main(int argc, char** argv) {
         }
         if (*gallery_cmd) return run_gallery(source, gallery_out, gallery_threads);
         if (*info_cmd) return run_info(info_scene);
+        if (*compare_cmd)
+            return run_compare(compare_actual, compare_reference, compare_tolerance,
+                               compare_neighbourhood);
+        if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return gl_kind.empty() ? run_gl_info(gl_window) : run_gl_context_info(gl_kind);
         if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);
     } catch (const std::exception& e) {

@@ -153,6 +153,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
     // Threads take tiles in order from a shared counter (core/parallel_for.h).
     parallel_for(std::size_t(tile_count), resolve_thread_count(options.threads),
                  [&](std::size_t i) {
+                     if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
                      const int t = int(i);
                      const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
                      for (int y = y0; y < std::min(y0 + tile, height); ++y)

@@ -4,6 +4,8 @@
 // whatever thread computes it, so the image is bit-identical for any thread count and any run.
 #pragma once
 
+#include <atomic>
+
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -13,6 +15,9 @@ struct RenderOptions {
     int threads = 0;             // 0: all cores
     bool show_progress = false;  // a progress bar with ETA on stdout
     int tile_size = 16;
+    // When set (by the viewer, restarting on a change), tiles not yet started are skipped and
+    // the image returned is incomplete: the caller drops it. Pixels done are unchanged.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // Renders the scene in `mode` (scene.mode unless the caller overrides it).

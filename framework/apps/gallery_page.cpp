@@ -1,0 +1,246 @@
+#include "apps/gallery_page.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "render/accelerate.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+std::string html(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
+    }
+    return out;
+}
+
+// A link from the gallery folder to `target`, with '/' separators (a browser's form).
+std::string relative_link(const fs::path& target, const fs::path& from) {
+    return fs::relative(fs::weakly_canonical(target), fs::weakly_canonical(from)).generic_string();
+}
+
+json read_json(const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) return json::object();
+    return json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+// The grader's thresholds (grader/stage_specs.cpp): image_defaults, then the scene's own keys.
+void read_thresholds(const json& j, CompareOptions& options, double& fail_percent) {
+    if (!j.is_object()) return;
+    options.tolerance = j.value("tolerance", options.tolerance);
+    options.max_failing_percent = j.value("pass_percent", options.max_failing_percent);
+    options.neighbourhood = j.value("neighbourhood", options.neighbourhood);
+    fail_percent = j.value("fail_percent", fail_percent);
+}
+
+const char* const kStyle = R"(<style>
+body { font: 14px system-ui, sans-serif; margin: 1.5em; background: #1d1f21; color: #ddd; }
+a { color: #8ab4f8; }
+h2 { margin-top: 1.6em; border-bottom: 1px solid #444; }
+.scene { display: inline-block; vertical-align: top; margin: 0 1.2em 1.2em 0; padding: .5em;
+         background: #2a2c2f; border-left: 6px solid #666; }
+.scene.pass { border-color: #3c3; } .scene.partial { border-color: #fc3; }
+.scene.fail { border-color: #e33; } .scene.none { border-color: #666; }
+.scene img { width: 200px; image-rendering: pixelated; margin-right: 4px; background: #000; }
+.scene .cols { display: flex; } .scene .cols div { text-align: center; font-size: 12px; }
+.badge { font-weight: bold; } .pass .badge { color: #3c3; } .partial .badge { color: #fc3; }
+.fail .badge { color: #e33; }
+.metric { font-size: 12px; color: #aaa; max-width: 612px; }
+</style>)";
+
+}  // namespace
+
+GalleryPage::GalleryPage(fs::path source, fs::path out)
+    : source_(std::move(source)), out_(std::move(out)) {}
+
+const GalleryPage::Stage& GalleryPage::stage_info(const fs::path& stage) {
+    const std::string key = stage.filename().string();
+    if (auto it = stages_.find(key); it != stages_.end()) return it->second;
+    Stage s;
+    const json meta = read_json(stage / "stage.json");
+    s.title = meta.is_object() ? meta.value("title", key) : key;
+    s.handout = relative_link(stage / "README.md", out_);
+    const json grading = read_json(stage / "grading.json");
+    if (grading.is_object()) {
+        read_thresholds(grading.value("image_defaults", json::object()), s.options, s.fail_percent);
+        for (const json& scene : grading.value("scenes", json::array())) {
+            const std::string name = scene.value("name", "");
+            s.graded.push_back(name);
+            CompareOptions options = s.options;
+            double ignored = s.fail_percent;
+            read_thresholds(scene, options, ignored);
+            s.scene_options[name] = options;
+        }
+    }
+    return stages_.emplace(key, std::move(s)).first->second;
+}
+
+void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const fs::path& image_file,
+                      const Image& image) {
+    const Stage& s = stage_info(stage);
+    Entry e;
+    e.stage = stage.filename().string();
+    e.name = scene_file.stem().string();
+    e.graded = std::find(s.graded.begin(), s.graded.end(), e.name) != s.graded.end();
+    e.options = e.graded ? s.scene_options.at(e.name) : s.options;
+    e.fail_percent = s.fail_percent;
+    e.image = relative_link(image_file, out_);
+    const fs::path reference = source_ / "reference_images" / e.stage / (e.name + ".png");
+    if (fs::exists(reference)) {
+        const fs::path folder = image_file.parent_path();
+        const fs::path copy = folder / (e.name + ".reference.png");
+        const fs::path difference = folder / (e.name + ".difference.png");
+        fs::copy_file(reference, copy, fs::copy_options::overwrite_existing);
+        e.result = compare_images(to_image8(image), read_image8(reference), e.options);
+        e.compared = true;
+        e.reference = relative_link(copy, out_);
+        if (e.result.size_matches) {
+            write_image8(e.result.heat_map, difference);
+            e.difference = relative_link(difference, out_);
+        }
+    }
+    entries_.push_back(std::move(e));
+}
+
+int GalleryPage::failing() const {
+    return int(std::count_if(entries_.begin(), entries_.end(), [](const Entry& e) {
+        return e.graded && (!e.compared || !e.result.passed);
+    }));
+}
+
+fs::path GalleryPage::write() const {
+    std::ostringstream page;
+    int passed = 0, graded = 0;
+    for (const Entry& e : entries_)
+        if (e.graded) ++graded, passed += e.compared && e.result.passed;
+    page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         << "<title>rt gallery</title>\n"
+         << kStyle << "\n</head>\n<body>\n"
+         << "<h1>rt gallery</h1>\n<p>" << passed << " of " << graded
+         << " graded scenes match their reference image by the grader's metric. Each scene: "
+            "your render, the reference, and the difference (black: equal, red: differs within "
+            "tolerance, <b>white: failing pixel</b>).</p>\n";
+    // At a glance: the graded scenes that do not pass, each linked to its place below.
+    bool first = true;
+    for (const Entry& e : entries_) {
+        if (!e.graded || (e.compared && e.result.passed)) continue;
+        page << (first ? "<p><b>Not passing:</b> " : ", ") << "<a href=\"#" << html(e.stage) << "-"
+             << html(e.name) << "\">" << html(e.stage + "/" + e.name) << "</a>";
+        first = false;
+    }
+    if (!first) page << "</p>\n";
+    std::string stage;
+    for (const Entry& e : entries_) {
+        if (e.stage != stage) {
+            if (!stage.empty()) page << "</section>\n";
+            stage = e.stage;
+            const Stage& s = stages_.at(stage);
+            page << "<section id=\"" << html(stage) << "\">\n<h2>" << html(stage) << ": "
+                 << html(s.title) << " <small>(<a href=\"" << html(s.handout)
+                 << "\">handout</a>)</small></h2>\n";
+        }
+        std::string status = "none", badge = "no reference";
+        if (e.compared && !e.result.size_matches) {
+            status = "fail", badge = "wrong size";
+        } else if (e.compared) {
+            const double p = e.result.failing_percent;
+            status = e.result.passed ? "pass" : p < e.fail_percent ? "partial" : "fail";
+            badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
+        }
+        if (!e.graded) badge += " (not graded)";
+        page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
+             << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
+             << (e.graded ? "true" : "false") << "\">\n<b>" << html(e.name)
+             << "</b> <span class=\"badge\">" << html(badge) << "</span>\n<div class=\"cols\">\n";
+        const auto column = [&](const std::string& file, const char* label) {
+            if (file.empty()) return;
+            page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
+                 << label << "\"></a><br>" << label << "</div>\n";
+        };
+        column(e.image, "render");
+        column(e.reference, "reference");
+        column(e.difference, "difference");
+        page << "</div>\n";
+        if (e.compared)
+            page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
+                 << e.options.tolerance << ", pass up to " << e.options.max_failing_percent
+                 << "%)</div>\n";
+        page << "</div>\n";
+    }
+    if (!stage.empty()) page << "</section>\n";
+    page << "</body>\n</html>\n";
+    const fs::path file = out_ / "index.html";
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << page.str();
+    if (!out) throw std::runtime_error("rt: error: cannot write " + file.string());
+    return file;
+}
+
+// Every stage folder with scenes, in order: stages/NN-name/scenes/*.json.
+int run_gallery(const fs::path& source, const fs::path& out, int threads) {
+    std::vector<fs::path> stages;
+    for (const auto& entry : fs::directory_iterator(source / "stages"))
+        if (entry.is_directory() && fs::is_directory(entry.path() / "scenes"))
+            stages.push_back(entry.path());
+    std::sort(stages.begin(), stages.end());
+    int count = 0;
+    const auto start = std::chrono::steady_clock::now();
+    // `rt gallery --out reference_images` regenerates the references (README.md): no page, no
+    // copies or difference images among them.
+    std::error_code ec;
+    const bool regenerating = fs::equivalent(out, source / "reference_images", ec);
+    GalleryPage page(source, out);
+    for (const fs::path& stage : stages) {
+        std::vector<fs::path> scenes;
+        for (const auto& entry : fs::directory_iterator(stage / "scenes"))
+            if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+        std::sort(scenes.begin(), scenes.end());
+        const fs::path stage_out = out / stage.filename();
+        fs::create_directories(stage_out);
+        for (const fs::path& scene_file : scenes) {
+            Scene scene = load_scene(scene_file);
+            build_acceleration(scene);
+            RenderOptions options;
+            options.threads = threads;
+            const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
+            const Image image = render(scene, scene.mode, options);
+            write_image(image, image_file);
+            if (!regenerating) page.add(stage, scene_file, image_file, image);
+            std::printf("  %s\n", image_file.c_str());
+            ++count;
+        }
+    }
+    std::printf("rendered %d scenes of %zu stages in %.1f s\ngallery: %s\n", count, stages.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                fs::absolute(out).lexically_normal().c_str());
+    if (regenerating) return 0;
+    const fs::path index = page.write();
+    std::printf("page: %s (%d graded scenes do not match their reference)\n",
+                fs::absolute(index).lexically_normal().c_str(), page.failing());
+    return 0;
+}
+
+}  // namespace rt

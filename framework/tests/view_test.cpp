@@ -1,0 +1,167 @@
+// The viewer's parts that need no window (framework/view/): settings to scenes, camera controls,
+// progressive rendering, script checking. View.ScriptedSession runs the window under Xvfb.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "core/source_dir.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+#include "view/progressive.h"
+#include "view/view_script.h"
+#include "view/view_settings.h"
+
+namespace rt::view {
+namespace {
+
+namespace fs = std::filesystem;
+
+Scene whitted() {
+    return load_scene(source_dir() / "stages/05-recursion/scenes/whitted.json");
+}
+
+void expect_orthonormal(const Camera& c) {
+    EXPECT_NEAR(glm::length(c.u), 1, 1e-5);
+    EXPECT_NEAR(glm::length(c.v), 1, 1e-5);
+    EXPECT_NEAR(glm::length(c.w), 1, 1e-5);
+    EXPECT_NEAR(glm::dot(c.u, c.v), 0, 1e-5);
+    EXPECT_NEAR(glm::dot(c.v, c.w), 0, 1e-5);
+    EXPECT_NEAR(glm::dot(c.w, c.u), 0, 1e-5);
+}
+
+TEST(ViewSettings, TheSceneFilesSettingsGiveTheLoadedSceneBack) {
+    const Scene loaded = whitted();
+    SceneSource source{Scene(loaded)};
+    const Scene made = source.make(source.initial());
+    EXPECT_EQ(made.shadows, loaded.shadows);
+    EXPECT_EQ(made.max_depth, loaded.max_depth);
+    EXPECT_EQ(made.features.describe(), loaded.features.describe());
+    EXPECT_EQ(render(made, made.mode).pixels, render(loaded, loaded.mode).pixels);
+}
+
+TEST(ViewSettings, ShadowsOffIsWhatTheRendererComputesWithoutShadows) {
+    SceneSource source{whitted()};
+    ViewSettings settings = source.initial();
+    ASSERT_TRUE(settings.shadows) << "whitted.json is expected to ask for shadows";
+    ASSERT_EQ(set_by_name(settings, "shadows", "off"), "");
+    const Scene made = source.make(settings);
+    EXPECT_FALSE(made.features.shadows);  // update_features ran: no shadow rays at all
+    Scene by_hand = whitted();
+    by_hand.shadows = false;
+    by_hand.update_features();
+    EXPECT_EQ(render(made, made.mode).pixels, render(by_hand, by_hand.mode).pixels);
+}
+
+TEST(ViewSettings, BadNamesAndValuesSayWhatIsAccepted) {
+    ViewSettings s;
+    EXPECT_NE(set_by_name(s, "mode", "shady").find("shaded"), std::string::npos);
+    EXPECT_NE(set_by_name(s, "shadows", "maybe").find("on or off"), std::string::npos);
+    EXPECT_NE(set_by_name(s, "max-depth", "65").find("0..64"), std::string::npos);
+    EXPECT_NE(set_by_name(s, "colour", "red").find("settings:"), std::string::npos);
+    EXPECT_EQ(set_by_name(s, "filter", "nearest"), "");
+    EXPECT_EQ(s.texture_lookup, TextureLookup::Nearest);
+}
+
+TEST(ViewCamera, OrbitKeepsTheFrameAndThePivotAndUndoes) {
+    const Camera start = whitted().camera;
+    Camera c = start;
+    const Real distance = 5;
+    const Vec3 pivot = c.eye - c.w * distance;
+    orbit(c, distance, start.v, 30, 15);
+    expect_orthonormal(c);
+    EXPECT_NEAR(glm::length(c.eye - pivot), distance, 1e-4);
+    EXPECT_NEAR(glm::length(c.eye - c.w * distance - pivot), 0, 1e-4);  // still looks at it
+    EXPECT_NEAR(glm::dot(c.u, start.v), 0, 1e-5);                       // no roll
+    orbit(c, distance, start.v, 0, -15);
+    orbit(c, distance, start.v, -30, 0);
+    EXPECT_NEAR(glm::length(c.eye - start.eye), 0, 1e-3);
+}
+
+TEST(ViewCamera, OrbitStopsShortOfThePole) {
+    Camera c = whitted().camera;
+    const Vec3 up = c.v;
+    for (int i = 0; i < 20; ++i) orbit(c, 5, up, 0, 20);  // 400 degrees of pitch asked for
+    expect_orthonormal(c);
+    EXPECT_LT(std::abs(glm::dot(c.w, up)), Real(0.999));
+}
+
+TEST(ViewCamera, ZoomMovesTowardThePivotAndPanMovesBoth) {
+    Camera c = whitted().camera;
+    Real distance = 4;
+    const Vec3 pivot = c.eye - c.w * distance;
+    zoom(c, distance, Real(0.5));
+    EXPECT_NEAR(distance, 2, 1e-6);
+    EXPECT_NEAR(glm::length(c.eye - c.w * distance - pivot), 0, 1e-5);
+    const Vec3 before = c.eye;
+    pan(c, distance, Real(0.25), 0);
+    EXPECT_NEAR(glm::dot(c.eye - before, c.v), 0, 1e-6);
+    EXPECT_GT(glm::dot(c.eye - before, c.u), 0);
+}
+
+TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
+    const Scene scene = whitted();
+    ProgressiveRenderer renderer(2);
+    renderer.restart(scene);
+    Scene other = scene;
+    other.shadows = false;
+    other.update_features();
+    const std::uint64_t generation = renderer.restart(other);
+    std::optional<Frame> refined;
+    bool seen_new = false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!refined && std::chrono::steady_clock::now() < deadline) {
+        if (auto frame = renderer.take()) {
+            // A pass of the first scene may finish before the restart, never after.
+            if (frame->generation != generation) {
+                EXPECT_FALSE(seen_new);
+            }
+            seen_new |= frame->generation == generation;
+            EXPECT_EQ(frame->image.width, scene.image.width);  // coarse passes blown up
+            if (frame->refined() && frame->generation == generation) refined = std::move(frame);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_TRUE(refined) << "no refined frame within 60 s";
+    EXPECT_EQ(refined->image.pixels, render(other, other.mode).pixels);
+}
+
+TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {
+    Scene scene = whitted();
+    scene.mode = RenderMode::BvhVisits;  // without a BVH: render() refuses
+    ProgressiveRenderer renderer(1);
+    renderer.restart(scene);
+    std::optional<Frame> frame;
+    for (int i = 0; i < 5000 && !frame; ++i) {
+        frame = renderer.take();
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_TRUE(frame);
+    EXPECT_NE(frame->error.find("bvh_visits"), std::string::npos) << frame->error;
+}
+
+std::string script_error(const std::string& text) {
+    const fs::path file = fs::temp_directory_path() / "rt_view_test_script.txt";
+    std::ofstream(file) << text;
+    try {
+        read_script(file);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(ViewScript, ErrorsNameTheLineAndHowToWriteIt) {
+    EXPECT_EQ(script_error("# fine\nwait-refined\nclick 3 4\nset shadows off\n"), "");
+    EXPECT_NE(script_error("wait-refined\n\nclick 3\n").find(":3: error: click takes 2"),
+              std::string::npos);
+    EXPECT_NE(script_error("sleep soon\n").find(":1: error: \"soon\" is not a number"),
+              std::string::npos);
+    EXPECT_NE(script_error("set shadows maybe\n").find("on or off"), std::string::npos);
+    EXPECT_NE(script_error("screenshot a/b\n").find("without folders"), std::string::npos);
+    EXPECT_NE(script_error("key X\n").find("write key S|R|Q"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rt::view

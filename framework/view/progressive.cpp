@@ -1,0 +1,101 @@
+#include "view/progressive.h"
+
+#include <chrono>
+#include <exception>
+
+#include "render/render.h"
+
+namespace rt::view {
+namespace {
+
+// Each coarse pixel stands for a block of block x block full-size pixels.
+Image blow_up(const Image& coarse, int block, int width, int height) {
+    Image full(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            full.at(x, y) = coarse.at(std::min(x / block, coarse.width - 1),
+                                      std::min(y / block, coarse.height - 1));
+    return full;
+}
+
+}  // namespace
+
+ProgressiveRenderer::ProgressiveRenderer(int threads)
+    : threads_(resolve_thread_count(threads)), worker_([this] { run(); }) {}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+        cancel_ = true;
+    }
+    wake_.notify_all();
+    worker_.join();
+}
+
+std::uint64_t ProgressiveRenderer::restart(Scene scene) {
+    std::uint64_t generation = 0;
+    {
+        std::lock_guard lock(mutex_);
+        pending_ = std::move(scene);
+        generation = ++generation_;
+        cancel_ = true;  // the pass in flight stops at its next tile
+    }
+    wake_.notify_all();
+    return generation;
+}
+
+std::optional<Frame> ProgressiveRenderer::take() {
+    std::lock_guard lock(mutex_);
+    std::optional<Frame> frame = std::move(ready_);
+    ready_.reset();
+    return frame;
+}
+
+void ProgressiveRenderer::run() {
+    for (;;) {
+        Scene scene;
+        std::uint64_t generation = 0;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return quit_ || pending_.has_value(); });
+            if (quit_) return;
+            scene = std::move(*pending_);
+            pending_.reset();
+            generation = generation_;
+            cancel_ = false;
+        }
+        const ImageSize full = scene.image;
+        RenderOptions options;
+        options.threads = threads_;
+        options.cancel = &cancel_;
+        for (int block : {8, 4, 2, 1}) {
+            // Coarse passes only while they are much cheaper than the full one.
+            if (block > 1 && full.width * full.height < 64 * 64 * block) continue;
+            scene.image = {(full.width + block - 1) / block, (full.height + block - 1) / block};
+            Frame frame;
+            frame.block = block;
+            frame.generation = generation;
+            const auto start = std::chrono::steady_clock::now();
+            try {
+                frame.image = render(scene, scene.mode, options);
+            } catch (const std::exception& e) {
+                frame.error = e.what();
+            }
+            frame.seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (cancel_) break;
+            if (block > 1 && frame.error.empty())
+                frame.image = blow_up(frame.image, block, full.width, full.height);
+            const bool failed = !frame.error.empty();
+            {
+                std::lock_guard lock(mutex_);
+                if (generation != generation_) break;
+                ready_ = std::move(frame);
+            }
+            if (failed) break;
+        }
+    }
+}
+
+}  // namespace rt::view

@@ -1,0 +1,54 @@
+// Progressive rendering for the viewer: a worker thread renders the scene at 1/8, 1/4, 1/2 and
+// then full resolution, each pass through rt::render itself (so the last pass is the image
+// `rt render` writes, bit for bit), and starts again whenever the viewer hands it a new scene.
+// The UI thread never waits for it.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace rt::view {
+
+struct Frame {
+    Image image;                   // always full size (coarse passes are blown up, nearest)
+    int block = 1;                 // 8, 4, 2: a coarse pass; 1: the full-resolution render
+    std::uint64_t generation = 0;  // which restart() it belongs to
+    double seconds = 0;            // this pass's render time
+    std::string error;             // the renderer refused (e.g. bvh_visits without a BVH)
+    bool refined() const { return block == 1 && error.empty(); }
+};
+
+class ProgressiveRenderer {
+  public:
+    explicit ProgressiveRenderer(int threads);
+    ~ProgressiveRenderer();  // cancels the current pass and joins the worker
+
+    // Drops whatever is being rendered and starts on `scene`; returns its generation.
+    std::uint64_t restart(Scene scene);
+    // The newest pass finished since the last call, if any (older ones are dropped).
+    std::optional<Frame> take();
+    int threads() const { return threads_; }
+
+  private:
+    void run();
+
+    const int threads_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<Scene> pending_;
+    std::optional<Frame> ready_;
+    std::uint64_t generation_ = 0;
+    bool quit_ = false;
+    std::atomic<bool> cancel_{false};
+    std::thread worker_;  // last: starts after every member it uses
+};
+
+}  // namespace rt::view

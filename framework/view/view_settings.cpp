@@ -1,0 +1,149 @@
+#include "view/view_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "render/accelerate.h"
+
+namespace rt::view {
+namespace {
+
+const std::map<std::string, RenderMode> kModes = {
+    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
+    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
+    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
+
+const Real kDegrees = Real(3.14159265358979323846 / 180.0);
+
+// Rodrigues' rotation of v about the unit axis k.
+Vec3 rotate(const Vec3& v, const Vec3& k, Real degrees) {
+    const Real a = degrees * kDegrees, c = std::cos(a), s = std::sin(a);
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1 - c);
+}
+
+std::optional<bool> on_off(const std::string& value) {
+    if (value == "on" || value == "true" || value == "1") return true;
+    if (value == "off" || value == "false" || value == "0") return false;
+    return std::nullopt;
+}
+
+}  // namespace
+
+bool ViewSettings::operator==(const ViewSettings& o) const {
+    const Camera &a = camera, &b = o.camera;
+    const bool same_camera =
+        a.projection == b.projection && a.eye == b.eye && a.u == b.u && a.v == b.v && a.w == b.w &&
+        a.vertical_fov_degrees == b.vertical_fov_degrees && a.view_height == b.view_height;
+    return same_camera && mode == o.mode && shadows == o.shadows && max_depth == o.max_depth &&
+           accelerator == o.accelerator && texture_lookup == o.texture_lookup;
+}
+
+ViewSettings settings_of(const Scene& scene) {
+    ViewSettings s;
+    s.mode = scene.mode;
+    s.shadows = scene.shadows;
+    s.max_depth = scene.max_depth;
+    s.accelerator = scene.accelerator;
+    s.texture_lookup = scene.texture_lookup;
+    s.camera = scene.camera;
+    return s;
+}
+
+SceneSource::SceneSource(Scene loaded) : initial_(settings_of(loaded)), loaded_(std::move(loaded)) {
+    // The copy with a BVH is made the first time a setting asks for one.
+    loaded_.bvh = Bvh{};
+    loaded_.accelerator = Accelerator::None;
+}
+
+Scene SceneSource::make(const ViewSettings& settings) {
+    const bool bvh = settings.accelerator == Accelerator::Bvh;
+    if (bvh && !with_bvh_) {
+        with_bvh_ = loaded_;
+        with_bvh_->accelerator = Accelerator::Bvh;
+        build_acceleration(*with_bvh_);  // may fall back to None (an invalid tree)
+    }
+    Scene scene = bvh ? *with_bvh_ : loaded_;
+    scene.mode = settings.mode;
+    scene.shadows = settings.shadows;
+    scene.max_depth = std::clamp(settings.max_depth, 0, 64);
+    scene.texture_lookup = settings.texture_lookup;
+    scene.camera = settings.camera;
+    scene.update_features();
+    return scene;
+}
+
+const char* setting_names() {
+    return "mode directions|normals|depth|primitive|shaded|bvh_visits, shadows on|off, "
+           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear";
+}
+
+std::string set_by_name(ViewSettings& s, const std::string& name, const std::string& value) {
+    if (name == "mode") {
+        const auto it = kModes.find(value);
+        if (it == kModes.end())
+            return "mode \"" + value +
+                   "\" is not one of directions, normals, depth, primitive, shaded, bvh_visits";
+        s.mode = it->second;
+        return "";
+    }
+    if (name == "shadows" || name == "bvh") {
+        const std::optional<bool> on = on_off(value);
+        if (!on) return name + " takes on or off, not \"" + value + "\"";
+        if (name == "shadows")
+            s.shadows = *on;
+        else
+            s.accelerator = *on ? Accelerator::Bvh : Accelerator::None;
+        return "";
+    }
+    if (name == "max-depth") {
+        char* end = nullptr;
+        const long depth = std::strtol(value.c_str(), &end, 10);
+        if (value.empty() || *end != '\0' || depth < 0 || depth > 64)
+            return "max-depth takes a whole number 0..64, not \"" + value + "\"";
+        s.max_depth = int(depth);
+        return "";
+    }
+    if (name == "filter") {
+        if (value == "scene")
+            s.texture_lookup = TextureLookup::PerTexture;
+        else if (value == "nearest")
+            s.texture_lookup = TextureLookup::Nearest;
+        else if (value == "bilinear")
+            s.texture_lookup = TextureLookup::Bilinear;
+        else
+            return "filter takes scene, nearest or bilinear, not \"" + value + "\"";
+        return "";
+    }
+    return "unknown setting \"" + name + "\"; settings: " + setting_names();
+}
+
+void orbit(Camera& camera, Real distance, const Vec3& up, Real yaw_degrees, Real pitch_degrees) {
+    const Vec3 pivot = camera.eye - camera.w * distance;
+    Vec3 offset = rotate(camera.eye - pivot, up, -yaw_degrees);
+    const Vec3 right = glm::normalize(glm::cross(up, offset));
+    const Vec3 pitched = rotate(offset, right, pitch_degrees);
+    // Keep at least ~3 degrees from the up axis, where the look-at frame is undefined.
+    if (std::abs(glm::dot(glm::normalize(pitched), up)) < Real(0.998)) offset = pitched;
+    camera = make_look_at_camera(camera.projection, pivot + offset, pivot, up,
+                                 camera.vertical_fov_degrees, camera.view_height);
+}
+
+void pan(Camera& camera, Real distance, Real right, Real up) {
+    const Real height = camera.projection == Projection::Orthographic
+                            ? camera.view_height
+                            : 2 * distance * std::tan(camera.vertical_fov_degrees * kDegrees / 2);
+    camera.eye += (camera.u * right + camera.v * up) * height;
+}
+
+void zoom(Camera& camera, Real& distance, Real factor) {
+    if (camera.projection == Projection::Orthographic) {
+        camera.view_height *= factor;
+        return;
+    }
+    const Vec3 pivot = camera.eye - camera.w * distance;
+    distance = std::max(distance * factor, Real(1e-3));
+    camera.eye = pivot + camera.w * distance;
+}
+
+}  // namespace rt::view

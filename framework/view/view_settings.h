@@ -1,0 +1,59 @@
+// What the viewer's panel changes: settings that change what the renderer computes (never a
+// post-process), applied to a copy of the loaded scene, and the camera controls.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace rt::view {
+
+struct ViewSettings {
+    RenderMode mode = RenderMode::Shaded;
+    bool shadows = false;
+    int max_depth = 5;
+    Accelerator accelerator = Accelerator::None;
+    TextureLookup texture_lookup = TextureLookup::PerTexture;
+    Camera camera;
+
+    bool operator==(const ViewSettings& other) const;  // Camera has no ==: field by field
+};
+
+// The settings the scene file asks for.
+ViewSettings settings_of(const Scene& scene);
+
+// Keeps the loaded scene and its BVH (built once, when first asked for) and makes the scene a
+// setting describes: a copy with the setting's fields and update_features() run again, exactly
+// what `rt render` does with the same flags.
+class SceneSource {
+  public:
+    explicit SceneSource(Scene loaded);
+    const ViewSettings& initial() const { return initial_; }  // the scene file's settings
+    Scene make(const ViewSettings& settings);
+
+  private:
+    ViewSettings initial_;
+    Scene loaded_;
+    std::optional<Scene> with_bvh_;  // loaded_ with its BVH built
+};
+
+// Sets one setting by name, as scripts and tests write it: "mode shaded", "shadows off",
+// "max-depth 2", "bvh on", "filter nearest". Returns an error (empty when it worked) that names
+// the accepted values.
+std::string set_by_name(ViewSettings& settings, const std::string& name, const std::string& value);
+
+// The names of set_by_name, for messages.
+const char* setting_names();
+
+// Camera controls about a pivot `distance` in front of the eye (along -w).
+// Orbit: turns the eye about the pivot by yaw (about `up`, the scene camera's v, so the horizon
+// never rolls) and pitch (about u), in degrees; stops short of looking straight along `up`.
+void orbit(Camera& camera, Real distance, const Vec3& up, Real yaw_degrees, Real pitch_degrees);
+// Pan: moves eye and pivot along u and v by a fraction of the view's height at the pivot.
+void pan(Camera& camera, Real distance, Real right, Real up);
+// Zoom: moves the eye toward the pivot (factor < 1) or away; orthographic cameras scale the
+// viewed height instead.
+void zoom(Camera& camera, Real& distance, Real factor);
+
+}  // namespace rt::view
