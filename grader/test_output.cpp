@@ -30,7 +30,17 @@ std::string trim_gtest_output(const std::string& raw) {
             continue;
         out += line + "\n";
     }
-    if (out.size() > 4000) out = out.substr(0, 4000) + "\n[... output truncated]\n";
+    if (out.size() > 4000) {
+        // The stub's "not implemented" line names the function and the handout section: the one
+        // line a student must see, and it comes last (stderr, after the failures). Keep it.
+        std::string stubs;
+        for (std::size_t p = out.find("not implemented: ", 4000); p != std::string::npos;
+             p = out.find("not implemented: ", p + 1)) {
+            const std::size_t end = out.find('\n', p);
+            stubs += out.substr(p, end == std::string::npos ? std::string::npos : end - p) + "\n";
+        }
+        out = out.substr(0, 4000) + "\n[... output truncated]\n" + stubs;
+    }
     return out;
 }
 
