@@ -19,6 +19,7 @@ packages=(
   libimgui-dev                        # rt view: Dear ImGui with its GLFW and OpenGL 3 back-ends
   xvfb xauth                          # View.ScriptedSession: the viewer's window under Xvfb
   glslang-tools                       # stage 09: glslangValidator checks every shader offline
+  chromium                            # Gallery.IndexPage: the gallery page in a headless browser
   libembree-dev                       # rt-bench: Embree 3, the BVH benchmark's yardstick (optional)
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox

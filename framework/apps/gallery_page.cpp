@@ -191,6 +191,14 @@ fs::path GalleryPage::write() const {
         page << "</div>\n";
     }
     if (!stage.empty()) page << "</section>\n";
+    // Once loaded, the page records how many of its images the browser could decode, so a
+    // headless browser test (cmake/check_gallery_page.cmake) can count them.
+    page << "<script>\nwindow.addEventListener('load', () => {\n"
+            "  const images = [...document.images];\n"
+            "  document.body.dataset.imagesTotal = images.length;\n"
+            "  document.body.dataset.imagesLoaded =\n"
+            "      images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
+            "});\n</script>\n";
     page << "</body>\n</html>\n";
     const fs::path file = out_ / "index.html";
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
