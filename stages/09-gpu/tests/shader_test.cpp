@@ -15,6 +15,7 @@
 
 #include "core/not_implemented.h"
 #include "gl/shader_source.h"
+#include "release.h"
 #include "render/accelerate.h"
 #include "render/gpu_render.h"
 #include "scene/scene_loader.h"
@@ -57,25 +58,9 @@ class StudentCopy {
     fs::path dir_;
 };
 
-// The release tool's stripping, for this test only: solutions out, stubs un-commented.
+// The release tool's own stripping (grader/markers.cpp): solutions out, stubs un-commented.
 std::string strip_solutions(const std::string& text) {
-    std::istringstream lines(text);
-    std::string line, out;
-    enum { Outside, Solution, Stub } state = Outside;
-    while (std::getline(lines, line)) {
-        const std::string t = line.substr(std::min(line.size(), line.find_first_not_of(' ')));
-        if (t == "// BEGIN SOLUTION")
-            state = Solution;
-        else if (t == "// STUB")
-            state = Stub;
-        else if (t == "// END SOLUTION")
-            state = Outside;
-        else if (state == Outside)
-            out += line + "\n";
-        else if (state == Stub)
-            out += line.replace(line.find("// "), 3, "") + "\n";
-    }
-    return out;
+    return grader::process_markers(text, grader::RegionMode::Strip).text;
 }
 
 Scene small_scene(const std::string& relative) {
