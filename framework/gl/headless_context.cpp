@@ -1,11 +1,11 @@
 #include "gl/headless_context.h"
 
-#define GL_GLEXT_PROTOTYPES 0
-#include <GL/osmesa.h>
+#include "gl/gl_context.h"
+
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
-#include <vector>
 
 namespace rt {
 namespace {
@@ -29,43 +29,14 @@ void read_strings(GetStringFn get_string, GetIntegervFn get_integer, GlInfo& inf
 
 }  // namespace
 
+// The GPU stage's own OSMesa context (gl_context.h), asked for its strings: one place that
+// knows how to make an OSMesa core context.
 GlInfo query_headless_gl() {
     GlInfo info;
-    OSMesaContext context = nullptr;
-    for (int minor_version : {6, 5, 3}) {
-        const int attributes[] = {OSMESA_FORMAT,
-                                  OSMESA_RGBA,
-                                  OSMESA_DEPTH_BITS,
-                                  24,
-                                  OSMESA_PROFILE,
-                                  OSMESA_CORE_PROFILE,
-                                  OSMESA_CONTEXT_MAJOR_VERSION,
-                                  4,
-                                  OSMESA_CONTEXT_MINOR_VERSION,
-                                  minor_version,
-                                  0};
-        context = OSMesaCreateContextAttribs(attributes, nullptr);
-        if (context) break;
-    }
-    if (!context) {
-        info.error =
-            "OSMesa could not create a GL 4.3+ core context; install libosmesa6 "
-            "(Mesa's llvmpipe) or set LIBGL_ALWAYS_SOFTWARE=1";
-        return info;
-    }
-    constexpr int kSize = 16;
-    std::vector<unsigned char> buffer(kSize * kSize * 4);
-    if (!OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
-        info.error = "OSMesaMakeCurrent failed";
-    } else {
-        auto get_string = reinterpret_cast<GetStringFn>(OSMesaGetProcAddress("glGetString"));
-        auto get_integer = reinterpret_cast<GetIntegervFn>(OSMesaGetProcAddress("glGetIntegerv"));
-        if (get_string && get_integer)
-            read_strings(get_string, get_integer, info);
-        else
-            info.error = "OSMesa has no glGetString";
-    }
-    OSMesaDestroyContext(context);
+    const auto context = GlContext::create(GlKind::OsMesa, info.error);
+    if (!context) return info;
+    const GlApi& gl = context->gl();
+    read_strings(gl.GetString, gl.GetIntegerv, info);
     return info;
 }
 
