@@ -37,7 +37,9 @@ OiioPlugin open_oiio_plugin(const std::vector<fs::path>& candidates) {
                 find(module, "rt_oiio_textures_create", loaded.textures_create) &&
                 find(module, "rt_oiio_textures_add", loaded.textures_add) &&
                 find(module, "rt_oiio_textures_lookup", loaded.textures_lookup) &&
-                find(module, "rt_oiio_textures_destroy", loaded.textures_destroy))
+                find(module, "rt_oiio_textures_destroy", loaded.textures_destroy) &&
+                find(module, "rt_oiio_environment_add", loaded.environment_add) &&
+                find(module, "rt_oiio_environment_lookup", loaded.environment_lookup))
                 return loaded;
             loaded = OiioPlugin{};
             tried += (tried.empty() ? "" : ", ") + path.string() + " (not the plug-in)";

@@ -19,6 +19,8 @@ struct OiioPlugin {
     decltype(&rt_oiio_textures_add) textures_add = nullptr;
     decltype(&rt_oiio_textures_lookup) textures_lookup = nullptr;
     decltype(&rt_oiio_textures_destroy) textures_destroy = nullptr;
+    decltype(&rt_oiio_environment_add) environment_add = nullptr;
+    decltype(&rt_oiio_environment_lookup) environment_lookup = nullptr;
     std::string problem;  // "the ... plug-in ..., which was not found (tried ...); <fix>"
 };
 

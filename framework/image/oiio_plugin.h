@@ -42,6 +42,12 @@ int rt_oiio_textures_add(RtOiioTextures* textures, const float* rgb, int width, 
 void rt_oiio_textures_lookup(RtOiioTextures* textures, int index, int wrap, int anisotropic,
                              float s, float t, float dsdx, float dtdx, float dsdy, float dtdy,
                              float* rgb);
+// A lat-long environment map (OpenImageIO's y-up convention; docs/conventions.md), added like
+// a texture, and its bilinear lookup in the finest level along the direction (x, y, z).
+int rt_oiio_environment_add(RtOiioTextures* textures, const float* rgb, int width, int height,
+                            char* error, std::size_t error_size);
+void rt_oiio_environment_lookup(RtOiioTextures* textures, int index, float x, float y, float z,
+                                float* rgb);
 void rt_oiio_textures_destroy(RtOiioTextures* textures);
 
 }  // extern "C"

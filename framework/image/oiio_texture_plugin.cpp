@@ -1,4 +1,5 @@
 // The TextureSystem half of the OpenImageIO plug-in (oiio_plugin.h).
+#include <Imath/ImathVec.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/texture.h>
@@ -24,6 +25,34 @@ void report(char* error, std::size_t size, const std::string& why) {
     std::snprintf(error, size, "%s", why.c_str());
 }
 
+// Writes a tiled, mip-mapped file of the image (a lat-long environment map when `latlong`) and
+// opens it: its index, or -1 and `error`.
+int add_image(RtOiioTextures* textures, const float* rgb, int width, int height, bool latlong,
+              char* error, std::size_t error_size) {
+    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+    const OIIO::ImageBuf image(spec, const_cast<float*>(rgb));  // wraps, never writes
+    const std::string file =
+        (textures->directory / ("texture" + std::to_string(textures->handles.size()) + ".tx"))
+            .string();
+    OIIO::ImageSpec config;
+    config.format = OIIO::TypeDesc::FLOAT;  // linear values: no 8-bit rounding of the levels
+    config.attribute("maketx:filtername", "box");
+    const auto kind =
+        latlong ? OIIO::ImageBufAlgo::MakeTxEnvLatl : OIIO::ImageBufAlgo::MakeTxTexture;
+    if (!OIIO::ImageBufAlgo::make_texture(kind, image, file, config)) {
+        report(error, error_size, "make_texture failed for " + file + ": " + OIIO::geterror());
+        return -1;
+    }
+    OIIO::TextureSystem::TextureHandle* handle =
+        textures->system->get_texture_handle(OIIO::ustring(file));
+    if (!handle) {
+        report(error, error_size, "the TextureSystem cannot open " + file);
+        return -1;
+    }
+    textures->handles.push_back(handle);
+    return int(textures->handles.size()) - 1;
+}
+
 }  // namespace
 
 extern "C" RtOiioTextures* rt_oiio_textures_create(char* error, std::size_t error_size) {
@@ -40,30 +69,6 @@ extern "C" RtOiioTextures* rt_oiio_textures_create(char* error, std::size_t erro
     // Private, so its cache and statistics are this render's only.
     textures->system = OIIO::TextureSystem::create(false);
     return textures;
-}
-
-extern "C" int rt_oiio_textures_add(RtOiioTextures* textures, const float* rgb, int width,
-                                    int height, char* error, std::size_t error_size) {
-    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
-    const OIIO::ImageBuf image(spec, const_cast<float*>(rgb));  // wraps, never writes
-    const std::string file =
-        (textures->directory / ("texture" + std::to_string(textures->handles.size()) + ".tx"))
-            .string();
-    OIIO::ImageSpec config;
-    config.format = OIIO::TypeDesc::FLOAT;  // linear values: no 8-bit rounding of the levels
-    config.attribute("maketx:filtername", "box");
-    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, image, file, config)) {
-        report(error, error_size, "make_texture failed for " + file + ": " + OIIO::geterror());
-        return -1;
-    }
-    OIIO::TextureSystem::TextureHandle* handle =
-        textures->system->get_texture_handle(OIIO::ustring(file));
-    if (!handle) {
-        report(error, error_size, "the TextureSystem cannot open " + file);
-        return -1;
-    }
-    textures->handles.push_back(handle);
-    return int(textures->handles.size()) - 1;
 }
 
 extern "C" void rt_oiio_textures_lookup(RtOiioTextures* textures, int index, int wrap,
@@ -83,6 +88,28 @@ extern "C" void rt_oiio_textures_lookup(RtOiioTextures* textures, int index, int
     if (index < 0 || std::size_t(index) >= textures->handles.size()) return;
     textures->system->texture(textures->handles[std::size_t(index)], nullptr, options, s, t, dsdx,
                               dtdx, dsdy, dtdy, 3, rgb);
+}
+
+extern "C" int rt_oiio_textures_add(RtOiioTextures* textures, const float* rgb, int width,
+                                    int height, char* error, std::size_t error_size) {
+    return add_image(textures, rgb, width, height, false, error, error_size);
+}
+
+extern "C" int rt_oiio_environment_add(RtOiioTextures* textures, const float* rgb, int width,
+                                       int height, char* error, std::size_t error_size) {
+    return add_image(textures, rgb, width, height, true, error, error_size);
+}
+
+extern "C" void rt_oiio_environment_lookup(RtOiioTextures* textures, int index, float x, float y,
+                                           float z, float* rgb) {
+    OIIO::TextureOpt options;
+    options.interpmode = OIIO::TextureOpt::InterpBilinear;
+    options.mipmode = OIIO::TextureOpt::MipModeOneLevel;  // the finest level: no footprint
+    rgb[0] = rgb[1] = rgb[2] = 0;
+    if (index < 0 || std::size_t(index) >= textures->handles.size()) return;
+    const Imath::V3f zero(0, 0, 0);
+    textures->system->environment(textures->handles[std::size_t(index)], nullptr, options,
+                                  Imath::V3f(x, y, z), zero, zero, 3, rgb);
 }
 
 extern "C" void rt_oiio_textures_destroy(RtOiioTextures* textures) {

@@ -9,13 +9,16 @@
 
 namespace rt {
 
-// The lat-long (equirectangular) coordinates of `direction` (y up; any non-zero length), the
-// same longitude and latitude as stage 02's sphere hit.uv and stage 07's sphere_texcoord, with
+// The lat-long (equirectangular) coordinates of `direction` (y up; any non-zero length), as
+// OpenImageIO's TextureSystem::environment() computes them for a y-up lat-long map, with
 // d = normalize(direction):
-//   u = phi / (2 pi), phi = atan2(-d.z, d.x) moved into [0, 2 pi)  (u = 0 at +x, 0.25 at -z,
-//                                                                   0.5 at -x, 0.75 at +z)
+//   u = atan2(-d.x, d.z) / (2 pi) + 1/2, and u = 1 taken as 0      (u = 0 at -z, 0.25 at +x,
+//                                                                   0.5 at +z, 0.75 at -x)
 //   v = acos(d.y) / pi, d.y clamped to [-1, 1]                      (v = 0 straight up, 1 down)
-// So u is in [0, 1) (never exactly 1) and v in [0, 1]; image row 0 is the top (v = 0).
+// So u is in [0, 1) (never exactly 1) and v in [0, 1]; image row 0 is the top (v = 0). The map
+// is seen from inside: looking along -z, u grows to the right, so a photograph reads the right
+// way round. (A sphere's texture, stage 07's sphere_texcoord, is seen from outside: its u runs
+// the other way.)
 Vec2 latlong_uv(const Vec3& direction);
 
 // A cube-map face and the (u, v) on it.
@@ -38,9 +41,9 @@ CubeFaceUv cube_face_uv(const Vec3& direction);
 
 // The radiance arriving from `direction` (any non-zero length) out of scene.environment:
 //   1. turn the direction by -rotate_y degrees about +y (the environment is turned by +rotate_y,
-//      right-hand rule), so rotate_y = 90 shows at +x what is at +z (u = 0.75) unrotated;
+//      right-hand rule), so rotate_y = 90 shows at +x what is at +z (u = 0.5) unrotated;
 //   2. LatLong: latlong_uv, then stage 07's sample_bilinear on its image with TextureWrap::Repeat
-//      (u wraps around the seam), v first clamped to the centres of the top and bottom rows so
+//      (u wraps around the seam at -z), v first clamped to the centres of the top and bottom rows so
 //      the poles never blend with the other side of the image;
 //      CubeMap: cube_face_uv, then sample_bilinear on that face with TextureWrap::Clamp;
 //   3. multiply by intensity.

@@ -51,13 +51,15 @@ Image make_latlong_sky() {
                 c = ((i / 4 + j / 4) % 2 == 0) ? Color(0.2f, 0.16f, 0.1f)
                                                : Color(0.1f, 0.14f, 0.06f);
             }
-            // Markers just above the horizon (rows 12-15), centred on u = 0, 0.25, 0.5, 0.75.
+            // Markers just above the horizon (rows 12-15), centred on u = 0, 0.25, 0.5, 0.75:
+            // -z red, +x green, +z blue, -x yellow (docs/conventions.md#environment-maps).
             if (j >= 12 && j < 16) {
                 const int k = ((i + 2) % w) / 4;  // columns 62, 63, 0, 1 form the first marker
                 if (k % 4 == 0) c = markers[k / 4];
             }
-            // The sun: a disc about 4 texels across around (u, v) = (0.125, 0.3).
-            const float du = (u - 0.125f) * float(w), dv = (v - 0.3f) * float(h);
+            // The sun: a disc about 4 texels across around (u, v) = (0.0625, 0.3), up and to the
+            // right of -z (22.5 degrees).
+            const float du = (u - 0.0625f) * float(w), dv = (v - 0.3f) * float(h);
             if (du * du + dv * dv <= 4.0f) c = Color(12.0f, 11.0f, 9.0f);
             sky.at(i, j) = c;
         }

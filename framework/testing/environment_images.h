@@ -12,8 +12,8 @@ namespace rt::testing {
 
 // A 64x32 sky in lat-long layout (docs/conventions.md#environment-maps), linear HDR: a blue
 // gradient above the horizon (v < 0.5), dark ground below with a checker in longitude, a marker
-// on the horizon at each axis (+x red, -z green, -x blue, +z yellow, 4 texels wide) and a sun of
-// radiance 12 at u = 0.125, v = 0.3.
+// on the horizon at each axis (-z red, +x green, +z blue, -x yellow, 4 texels wide) and a sun of
+// radiance 12 at u = 0.0625, v = 0.3 (up and to the right of -z).
 Image make_latlong_sky();
 
 // Cube face `face` (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z), 32x32: a colour of its own, a dark

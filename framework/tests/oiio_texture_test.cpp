@@ -4,9 +4,13 @@
 // the course's reference textures.cpp, like `rt`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "core/source_dir.h"
 #include "image/image.h"
@@ -17,6 +21,7 @@
 #include "render/render.h"
 #include "render/texturing.h"
 #include "scene/scene_loader.h"
+#include "stage_api/stage08.h"
 
 namespace rt {
 namespace {
@@ -166,6 +171,56 @@ TEST(OiioTextures, ErrorAgainstASupersampledReference) {
     }
     EXPECT_LT(errors[2], errors[1]) << "mip-mapping should beat bilinear on this floor";
     EXPECT_LT(errors[3], errors[1]);
+}
+
+// The course's lat-long convention is OpenImageIO's (docs/conventions.md#environment-maps): the
+// reference environment_radiance (stage 08) and TextureSystem::environment, both bilinear in
+// the finest level, agree on random directions. Away from the poles (|y| < 0.95), where stage
+// 08 clamps v to the row centres and OpenImageIO does not; tolerance 1e-3 for the rounding of
+// two different but equivalent formulas (texels are in [0, 1], neighbours differ by up to 1).
+TEST(OiioTextures, LatLongAgreesWithEnvironment) {
+    const image_files::OiioPlugin& plugin = image_files::oiio_plugin();
+    ASSERT_TRUE(plugin.textures_create) << plugin.problem;
+    constexpr int w = 64, h = 32;
+    std::vector<Color> texels;
+    std::vector<float> rgb;
+    std::uint32_t state = 12345;
+    const auto next = [&state] {
+        return float((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f;
+    };
+    for (int k = 0; k < w * h; ++k) {
+        const Color c(next(), next(), next());
+        texels.push_back(c);
+        rgb.insert(rgb.end(), {c.r, c.g, c.b});
+    }
+    Scene scene;
+    scene.environment.kind = EnvironmentKind::LatLong;
+    scene.environment.image = scene.add_texture_image(w, h, texels);
+    scene.update_features();
+
+    char error[512] = "";
+    RtOiioTextures* system = plugin.textures_create(error, sizeof error);
+    ASSERT_TRUE(system) << error;
+    const int index = plugin.environment_add(system, rgb.data(), w, h, error, sizeof error);
+    ASSERT_GE(index, 0) << error;
+    double worst = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3 d(2 * next() - 1, 2 * next() - 1, 2 * next() - 1);
+        const Real length = glm::length(d);
+        if (length < 0.1f || std::abs(d.y) > 0.95f * length) continue;
+        const Color ours = environment_radiance(scene, d);
+        float theirs[3];
+        plugin.environment_lookup(system, index, d.x, d.y, d.z, theirs);
+        const double diff = std::max({std::abs(ours.r - theirs[0]), std::abs(ours.g - theirs[1]),
+                                      std::abs(ours.b - theirs[2])});
+        worst = std::max(worst, diff);
+        EXPECT_LT(diff, 1e-3) << "direction (" << d.x << ", " << d.y << ", " << d.z << "): ours ("
+                              << ours.r << ", " << ours.g << ", " << ours.b << "), OpenImageIO's ("
+                              << theirs[0] << ", " << theirs[1] << ", " << theirs[2] << ")";
+        if (diff >= 1e-3) break;
+    }
+    plugin.textures_destroy(system);
+    std::printf("largest difference over the directions: %.2g\n", worst);
 }
 
 TEST(OiioTextures, MissingPluginIsOneLineNamingTheFix) {

@@ -14,15 +14,13 @@
 
 namespace rt {
 
-// Longitude and latitude of the direction, as a sphere's texture coordinates.
+// Longitude and latitude of the direction, seen from inside (OpenImageIO's y-up lat-long).
 Vec2 latlong_uv(const Vec3& direction) {
     // BEGIN SOLUTION
     constexpr Real pi = std::numbers::pi_v<Real>;
     const Vec3 d = glm::normalize(direction);
-    Real phi = std::atan2(-d.z, d.x);
-    if (phi < 0) phi += 2 * pi;
-    Real u = phi / (2 * pi);
-    if (u >= 1) u = 0;  // a tiny negative phi plus 2 pi can round up to 2 pi
+    Real u = std::atan2(-d.x, d.z) / (2 * pi) + Real(0.5);
+    if (u >= 1) u = 0;  // atan2(+0, negative) is +pi: u = 1 is the seam, u = 0
     return Vec2(u, std::acos(std::clamp(d.y, Real(-1), Real(1))) / pi);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/08-environment/README.md#1-lat-long-coordinates");

@@ -1,4 +1,4 @@
-// Stage 08 tests: latlong_uv at the axes, the poles, the seam, for any length, and the mapping's
+// Stage 08 tests: latlong_uv at the axes, the poles, the seam (at -z), for any length, and the mapping's
 // inverse (docs/conventions.md#environment-maps).
 #include <cmath>
 #include <numbers>
@@ -21,23 +21,23 @@ void expect_uv(const Vec3& d, Real u, Real v) {
 }
 
 TEST_F(LatLong, HorizontalAxesAreQuartersOfU) {
-    expect_uv(Vec3(1, 0, 0), 0, 0.5f);
-    expect_uv(Vec3(0, 0, -1), 0.25f, 0.5f);
-    expect_uv(Vec3(-1, 0, 0), 0.5f, 0.5f);
-    expect_uv(Vec3(0, 0, 1), 0.75f, 0.5f);
+    expect_uv(Vec3(0, 0, -1), 0, 0.5f);
+    expect_uv(Vec3(1, 0, 0), 0.25f, 0.5f);
+    expect_uv(Vec3(0, 0, 1), 0.5f, 0.5f);
+    expect_uv(Vec3(-1, 0, 0), 0.75f, 0.5f);
 }
 
 TEST_F(LatLong, VIsZeroStraightUpAndOneStraightDown) {
     EXPECT_NEAR(latlong_uv(Vec3(0, 1, 0)).y, 0, kTol);
     EXPECT_NEAR(latlong_uv(Vec3(0, -1, 0)).y, 1, kTol);
-    expect_uv(Vec3(1, 1, 0), 0, 0.25f);       // 45 degrees above +x
-    expect_uv(Vec3(0, -1, 1), 0.75f, 0.75f);  // 45 degrees below +z
+    expect_uv(Vec3(1, 1, 0), 0.25f, 0.25f);  // 45 degrees above +x
+    expect_uv(Vec3(0, -1, 1), 0.5f, 0.75f);  // 45 degrees below +z
 }
 
 TEST_F(LatLong, AnyLengthGivesTheSameCoordinates) {
     for (Real scale : {Real(1e-3), Real(0.5), Real(7), Real(1e4)}) {
-        expect_uv(scale * Vec3(0, 0, -1), 0.25f, 0.5f);
-        expect_uv(scale * Vec3(-1, 1, 0), 0.5f, 0.25f);
+        expect_uv(scale * Vec3(1, 0, 0), 0.25f, 0.5f);
+        expect_uv(scale * Vec3(-1, 1, 0), 0.75f, 0.25f);
     }
 }
 
@@ -52,22 +52,24 @@ TEST_F(LatLong, PolesNeverGiveNaN) {
     }
 }
 
-TEST_F(LatLong, TheSeamIsAtPlusXAndUStaysBelowOne) {
-    // Just past +x towards +z, u is just below 1; just past towards -z, just above 0.
+TEST_F(LatLong, TheSeamIsAtMinusZAndUStaysBelowOne) {
+    // Just past -z towards -x, u is just below 1; just past towards +x, just above 0.
     const Real eps = 0.01f;
-    expect_uv(Vec3(1, 0, eps), 1 - std::atan(eps) / (2 * kPi), 0.5f);
-    expect_uv(Vec3(1, 0, -eps), std::atan(eps) / (2 * kPi), 0.5f);
-    for (Real z : {Real(1e-9), Real(1e-30), Real(1e-7)}) {
-        const Real u = latlong_uv(Vec3(1, 0, z)).x;
-        EXPECT_GE(u, 0) << "z = " << z;
-        EXPECT_LT(u, 1) << "z = " << z << ": u must stay in [0, 1)";
+    expect_uv(Vec3(-eps, 0, -1), 1 - std::atan(eps) / (2 * kPi), 0.5f);
+    expect_uv(Vec3(eps, 0, -1), std::atan(eps) / (2 * kPi), 0.5f);
+    // On the seam itself (x = +0 or -0) and a hair beside it, u is in [0, 1).
+    for (Real x : {Real(0), -Real(0), Real(-1e-9), Real(-1e-30), Real(-1e-7)}) {
+        const Real u = latlong_uv(Vec3(x, 0, -1)).x;
+        EXPECT_GE(u, 0) << "x = " << x;
+        EXPECT_LT(u, 1) << "x = " << x << ": u must stay in [0, 1)";
     }
 }
 
-// The inverse of the mapping: phi = 2 pi u, theta = pi v.
+// The inverse of the mapping: with phi = 2 pi (u - 1/2) = atan2(-x, z) and theta = pi v,
+// x = -sin(theta) sin(phi), z = sin(theta) cos(phi).
 Vec3 direction_of(Vec2 uv) {
-    const Real phi = 2 * kPi * uv.x, theta = kPi * uv.y;
-    return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+    const Real phi = 2 * kPi * (uv.x - Real(0.5)), theta = kPi * uv.y;
+    return Vec3(-std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
 }
 
 TEST_F(LatLong, RoundTripThroughTheInverse) {

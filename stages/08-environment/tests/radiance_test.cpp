@@ -40,9 +40,10 @@ Color texel(int i, int j) {
     return Color(float(i), float(j), float(1 + i + j)) / 10.0f;
 }
 
+// The direction latlong_uv maps to (u, v) (docs/conventions.md#environment-maps).
 Vec3 latlong_direction(Real u, Real v) {
-    const Real phi = 2 * kPi * u, theta = kPi * v;
-    return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+    const Real phi = 2 * kPi * (u - Real(0.5)), theta = kPi * v;
+    return Vec3(-std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
 }
 
 TEST_F(Radiance, LatLongTexelCentresGiveTheirTexel) {
@@ -56,7 +57,7 @@ TEST_F(Radiance, LatLongTexelCentresGiveTheirTexel) {
 }
 
 TEST_F(Radiance, LatLongWrapsAcrossTheSeam) {
-    // At +x (u = 0) on row 1's centre: half of column 0, half of column 7.
+    // At -z (u = 0) on row 1's centre: half of column 0, half of column 7.
     const Scene scene = latlong_scene(8, 4);
     const Vec3 d = latlong_direction(0, 1.5f / 4);
     expect_colour(environment_radiance(scene, d), (texel(0, 1) + texel(7, 1)) * 0.5f,
