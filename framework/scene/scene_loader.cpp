@@ -25,9 +25,9 @@ Scene SceneSections::load() {
     read_image(root);
     read_render(root);
     if (const json* v = member(root, "background")) scene_.background = color(*v, "/background");
-    read_environment(root);
     if (const json* v = member(root, "ambient_light"))
         scene_.ambient_light = color(*v, "/ambient_light");
+    read_environment(root);  // after ambient_light: its "ambient" adds to it
     read_camera(root);
     read_textures(root);
     read_materials(root);

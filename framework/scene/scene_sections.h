@@ -14,6 +14,7 @@
 
 #include "image/image.h"
 #include "scene/obj_loader.h"
+#include "scene/procedural_sky.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 
@@ -44,6 +45,11 @@ class SceneSections : public SceneReader {
     void read_environment(const json& root);
     // The image file named by the string at `pointer` (relative to base_dir_), linear.
     Image read_environment_image(const json& value, const std::string& pointer);
+    // "sky": the procedural sky's parameters (scene/procedural_sky.h).
+    SkyParameters read_sky(const json& value, const std::string& pointer);
+    // The environment's images into the texture table: one of the three is given.
+    void read_environment_images(const json* latlong, const json* cube, const json* sky,
+                                 const std::string& at);
 
     // scene_materials.cpp
     void read_materials(const json& root);
