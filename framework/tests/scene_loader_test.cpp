@@ -381,7 +381,13 @@ const BadScene kBadScenesTable[] = {
     {"72-cube-face-not-square", 2, 34, R"(cube face "px" is 2x1, not square)"},
     {"73-cube-faces-differ-in-size", 2, 329, R"(cube face "nz" is 16x16 but "px" is 32x32)"},
     {"74-cube-missing-face", 2, 27, R"(a cube map needs "nz")"},
-    {"75-environment-latlong-and-cube", 2, 79, R"(an environment is either "latlong" or "cube")"},
+    {"75-environment-latlong-and-cube", 2, 79,
+     R"(an environment is one of "latlong", "cube" and "sky")"},
+    {"76-sky-sun-narrower-than-a-texel", 2, 49, R"(narrower than a texel of the baked sky)"},
+    {"77-environment-sky-and-latlong", 2, 79,
+     R"(an environment is one of "latlong", "cube" and "sky")"},
+    {"78-sky-unknown-key", 2, 27, R"(unknown key "sun_colour" in "sky")"},
+    {"79-environment-negative-ambient", 2, 41, R"("ambient" must be >= 0, got -0.5)"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};
