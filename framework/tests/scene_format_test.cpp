@@ -29,7 +29,7 @@ std::string canonical(const std::string& text) {
     return rt::canonical_scene_text(text, "test.json", fs::path());
 }
 
-rt::Scene parse(const std::string& text) {
+rt::Scene parse_test_scene(const std::string& text) {
     return rt::parse_scene(text, "test.json", fs::path());
 }
 
@@ -139,9 +139,9 @@ TEST(SceneFormat, WritesTheCanonicalLayout) {
 TEST(SceneFormat, IsIdempotentAndPreservesEveryValue) {
     const std::string once = canonical(kMessy);
     EXPECT_EQ(canonical(once), once);
-    expect_same_scene(parse(kMessy), parse(once));
+    expect_same_scene(parse_test_scene(kMessy), parse_test_scene(once));
     // -0.0 stays negative zero (written "-0.0", since "-0" would read back as the integer 0).
-    EXPECT_TRUE(std::signbit(parse(once).spheres[0].center.x));
+    EXPECT_TRUE(std::signbit(parse_test_scene(once).spheres[0].center.x));
 }
 
 TEST(SceneFormat, StageScenesAreCanonicalAndKeepTheirValues) {
@@ -199,7 +199,7 @@ TEST(SceneFormat, RefusesWhatTheLoaderRefusesWithItsMessage) {
     for (const char* text : bad) {
         std::string loader, formatter;
         try {
-            parse(text);
+            parse_test_scene(text);
         } catch (const rt::SceneError& e) {
             loader = e.what();
         }
@@ -227,7 +227,8 @@ TEST(SceneFormat, EmptyAndSmallScenes) {
 // ---- the checkerboard shorthand --------------------------------------------------------------
 
 TEST(Checkerboard, ExpandsToTheBoxesOfTheFloor) {
-    rt::Scene scene = parse(R"({"materials": [{"name": "dark"}, {"name": "light"}], "surfaces": [
+    rt::Scene scene =
+        parse_test_scene(R"({"materials": [{"name": "dark"}, {"name": "light"}], "surfaces": [
         {"type": "box", "min": [5, 5, 5], "max": [6, 6, 6], "material": "light"},
         {"type": "checkerboard", "min": [-2, -0.1, -1.5], "max": [2, 0, 1.5], "tiles": [2, 3], "materials": ["dark", "light"]},
         {"type": "box", "min": [7, 7, 7], "max": [8, 8, 8]}]})");
@@ -246,7 +247,7 @@ TEST(Checkerboard, ExpandsToTheBoxesOfTheFloor) {
 
 TEST(Checkerboard, EdgesAreComputedInDoubleFromTheNumbersAsWritten) {
     // edge k = min + (max - min) * k / n, then rounded once to Real; the last edge is max.
-    rt::Scene scene = parse(R"({"surfaces": [
+    rt::Scene scene = parse_test_scene(R"({"surfaces": [
         {"type": "checkerboard", "min": [0.1, 0, 0], "max": [0.7, 1, 1], "tiles": [3, 1], "materials": [0, 0]}]})");
     ASSERT_EQ(scene.boxes.size(), 3u);
     for (int k = 0; k < 3; ++k) {
@@ -298,7 +299,7 @@ TEST(Checkerboard, Mistakes) {
             ": error: " + expected.substr(bar + 1);
         std::string message;
         try {
-            parse(text);
+            parse_test_scene(text);
         } catch (const rt::SceneError& e) {
             message = e.what();
         }

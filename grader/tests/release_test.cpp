@@ -317,8 +317,6 @@ class ReleaseTree : public ::testing::Test {
     std::ostringstream log_, errors_;
 };
 
-}  // namespace
-
 TEST_F(ReleaseTree, StripsEveryStageAndSkipsBuildDirs) {
     ASSERT_EQ(release(), 0) << errors_.str();
     EXPECT_NE(log_.str().find("2 regions stripped, 0 regions kept"), std::string::npos)
@@ -460,3 +458,5 @@ TEST_F(ReleaseTree, ForceRewritesOnlyChangedFiles) {
     EXPECT_GT(fs::last_write_time(out_ / "stages/01-rays/rays.cpp"), old_time);  // now solved
     EXPECT_NE(read(out_ / "stages/01-rays/rays.cpp").find("return a > 0;"), std::string::npos);
 }
+
+}  // namespace

@@ -10,11 +10,11 @@ RT_TEST_SUITE(Nearest);
 Scene row_scene() {
     Scene s;
     s.materials.resize(4);
-    s.spheres.push_back(Sphere{Vec3(0, 0, -10), 1, 1});
-    s.planes.push_back(Plane{Vec3(0, 0, -20), Vec3(0, 0, 1), 2});
+    s.spheres.push_back(rt::Sphere{Vec3(0, 0, -10), 1, 1});
+    s.planes.push_back(rt::Plane{Vec3(0, 0, -20), Vec3(0, 0, 1), 2});
     s.vertices = {Vec3(-1, -1, -5), Vec3(1, -1, -5), Vec3(0, 1, -5)};
-    s.triangles.push_back(Triangle{{0, 1, 2}, 3});
-    s.boxes.push_back(Box{Vec3(-1, -1, -16), Vec3(1, 1, -14), 0});
+    s.triangles.push_back(rt::Triangle{{0, 1, 2}, 3});
+    s.boxes.push_back(rt::Box{Vec3(-1, -1, -16), Vec3(1, 1, -14), 0});
     return s;
 }
 

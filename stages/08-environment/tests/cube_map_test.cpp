@@ -11,7 +11,7 @@ namespace {
 
 RT_TEST_SUITE(CubeMap);
 
-constexpr Real kTol = 1e-6f;
+constexpr Real kFaceTol = 1e-6f;
 const char* const kNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 void expect_face(const Vec3& d, int face, Real u, Real v) {
@@ -20,8 +20,8 @@ void expect_face(const Vec3& d, int face, Real u, Real v) {
                              ", " + std::to_string(d.z) + ")";
     ASSERT_EQ(r.face, face) << what << " must be on face " << kNames[face] << ", got face "
                             << r.face;
-    EXPECT_NEAR(r.uv.x, u, kTol) << what << ": u";
-    EXPECT_NEAR(r.uv.y, v, kTol) << what << ": v";
+    EXPECT_NEAR(r.uv.x, u, kFaceTol) << what << ": u";
+    EXPECT_NEAR(r.uv.y, v, kFaceTol) << what << ": v";
 }
 
 TEST_F(CubeMap, AxesHitTheCentreOfTheirFace) {

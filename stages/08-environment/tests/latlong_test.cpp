@@ -1,8 +1,9 @@
 // Stage 08 tests: latlong_uv at the axes, the poles, the seam (at -z), for any length, and the mapping's
-// inverse (docs/conventions.md#environment-maps).
+// inverse, the framework's latlong_direction (docs/conventions.md#environment-maps).
 #include <cmath>
 #include <numbers>
 
+#include "scene/procedural_sky.h"
 #include "stage_api/stage08.h"
 #include "testing/stage_test.h"
 
@@ -11,13 +12,13 @@ namespace {
 
 RT_TEST_SUITE(LatLong);
 
-constexpr Real kPi = std::numbers::pi_v<Real>;
-constexpr Real kTol = 1e-5f;
+constexpr Real kPiUv = std::numbers::pi_v<Real>;
+constexpr Real kUvTol = 1e-5f;
 
 void expect_uv(const Vec3& d, Real u, Real v) {
     const Vec2 uv = latlong_uv(d);
-    EXPECT_NEAR(uv.x, u, kTol) << "u of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
-    EXPECT_NEAR(uv.y, v, kTol) << "v of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
+    EXPECT_NEAR(uv.x, u, kUvTol) << "u of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
+    EXPECT_NEAR(uv.y, v, kUvTol) << "v of direction (" << d.x << ", " << d.y << ", " << d.z << ")";
 }
 
 TEST_F(LatLong, HorizontalAxesAreQuartersOfU) {
@@ -28,8 +29,8 @@ TEST_F(LatLong, HorizontalAxesAreQuartersOfU) {
 }
 
 TEST_F(LatLong, VIsZeroStraightUpAndOneStraightDown) {
-    EXPECT_NEAR(latlong_uv(Vec3(0, 1, 0)).y, 0, kTol);
-    EXPECT_NEAR(latlong_uv(Vec3(0, -1, 0)).y, 1, kTol);
+    EXPECT_NEAR(latlong_uv(Vec3(0, 1, 0)).y, 0, kUvTol);
+    EXPECT_NEAR(latlong_uv(Vec3(0, -1, 0)).y, 1, kUvTol);
     expect_uv(Vec3(1, 1, 0), 0.25f, 0.25f);  // 45 degrees above +x
     expect_uv(Vec3(0, -1, 1), 0.5f, 0.75f);  // 45 degrees below +z
 }
@@ -48,28 +49,21 @@ TEST_F(LatLong, PolesNeverGiveNaN) {
         EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
         EXPECT_GE(uv.x, 0);
         EXPECT_LT(uv.x, 1);
-        EXPECT_NEAR(uv.y, d.y > 0 ? 0 : 1, kTol);
+        EXPECT_NEAR(uv.y, d.y > 0 ? 0 : 1, kUvTol);
     }
 }
 
 TEST_F(LatLong, TheSeamIsAtMinusZAndUStaysBelowOne) {
     // Just past -z towards -x, u is just below 1; just past towards +x, just above 0.
     const Real eps = 0.01f;
-    expect_uv(Vec3(-eps, 0, -1), 1 - std::atan(eps) / (2 * kPi), 0.5f);
-    expect_uv(Vec3(eps, 0, -1), std::atan(eps) / (2 * kPi), 0.5f);
+    expect_uv(Vec3(-eps, 0, -1), 1 - std::atan(eps) / (2 * kPiUv), 0.5f);
+    expect_uv(Vec3(eps, 0, -1), std::atan(eps) / (2 * kPiUv), 0.5f);
     // On the seam itself (x = +0 or -0) and a hair beside it, u is in [0, 1).
     for (Real x : {Real(0), -Real(0), Real(-1e-9), Real(-1e-30), Real(-1e-7)}) {
         const Real u = latlong_uv(Vec3(x, 0, -1)).x;
         EXPECT_GE(u, 0) << "x = " << x;
         EXPECT_LT(u, 1) << "x = " << x << ": u must stay in [0, 1)";
     }
-}
-
-// The inverse of the mapping: with phi = 2 pi (u - 1/2) = atan2(-x, z) and theta = pi v,
-// x = -sin(theta) sin(phi), z = sin(theta) cos(phi).
-Vec3 direction_of(Vec2 uv) {
-    const Real phi = 2 * kPi * (uv.x - Real(0.5)), theta = kPi * uv.y;
-    return Vec3(-std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
 }
 
 TEST_F(LatLong, RoundTripThroughTheInverse) {
@@ -84,7 +78,7 @@ TEST_F(LatLong, RoundTripThroughTheInverse) {
         ASSERT_LT(uv.x, 1);
         ASSERT_GE(uv.y, 0);
         ASSERT_LE(uv.y, 1);
-        const Vec3 back = direction_of(uv);
+        const Vec3 back = latlong_direction(uv.x, uv.y);  // the framework's inverse
         EXPECT_NEAR(glm::length(back - d), 0, 1e-4f) << "direction " << k;
     }
 }

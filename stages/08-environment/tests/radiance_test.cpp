@@ -6,6 +6,7 @@
 
 #include "core/not_implemented.h"
 #include "render/background.h"
+#include "scene/procedural_sky.h"
 #include "scene/scene_loader.h"
 #include "stage_api/stage08.h"
 #include "testing/environment_images.h"
@@ -38,12 +39,6 @@ Scene latlong_scene(int w, int h) {
 
 Color texel(int i, int j) {
     return Color(float(i), float(j), float(1 + i + j)) / 10.0f;
-}
-
-// The direction latlong_uv maps to (u, v) (docs/conventions.md#environment-maps).
-Vec3 latlong_direction(Real u, Real v) {
-    const Real phi = 2 * kPi * (u - Real(0.5)), theta = kPi * v;
-    return Vec3(-std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
 }
 
 TEST_F(Radiance, LatLongTexelCentresGiveTheirTexel) {
