@@ -12,6 +12,9 @@
 #include "apps/cli_parse.h"
 #include "bench/accuracy.h"
 #include "bench/bvh_bench.h"
+#ifdef RT_BENCH_HAVE_VIEW
+#include "bench/view_latency.h"
+#endif
 
 namespace {
 
@@ -129,9 +132,30 @@ int main(int argc, char** argv) {
     acc->add_flag("!--no-textures", cfg.textures, "skip the texture-filter section");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
+#ifdef RT_BENCH_HAVE_VIEW
+    rt::bench::ViewLatencyConfig view_cfg;
+    CLI::App* view = app.add_subcommand(
+        "view", "the lecture viewer's latency: camera change to first coarse and to full frame");
+    view->add_option("scene", view_cfg.scene, "scene file (default: stage 05's whitted.json)")
+        ->check(CLI::ExistingFile);
+    view->add_option("--width", view_cfg.width)->capture_default_str()->check(CLI::Range(16, 8192));
+    view->add_option("--height", view_cfg.height)
+        ->capture_default_str()
+        ->check(CLI::Range(16, 8192));
+    view->add_option("--threads", view_cfg.threads)
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
+    view->add_option("--changes", view_cfg.changes, "camera changes timed")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10000));
+#endif
+
     if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`"))
         return *stop;
     try {
+#ifdef RT_BENCH_HAVE_VIEW
+        if (view->parsed()) return rt::bench::run_view_latency(view_cfg, std::cout) ? 0 : 1;
+#endif
         if (acc->parsed()) {
             for (const CLI::Option* option : app.get_options())
                 if (option->count() > 0 && option->get_name() != "--help") {
