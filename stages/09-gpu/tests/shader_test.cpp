@@ -26,8 +26,9 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-const char* const kStudentFiles[] = {"camera.glsl", "intersect.glsl", "bvh.glsl", "shade.glsl",
-                                     "recursion.glsl"};
+const char* const kStudentFiles[] = {"camera.glsl",     "intersect.glsl", "bvh.glsl",
+                                     "shade.glsl",      "recursion.glsl", "textures.glsl",
+                                     "environment.glsl"};
 
 std::string read(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -147,8 +148,17 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         "#define HAS_SPHERES\n#define HAS_PLANES\n#define HAS_TRIANGLES\n#define HAS_BOXES\n"
         "#define HAS_VERTEX_NORMALS\n#define HAS_BVH\n#define HAS_SHADOWS\n#define HAS_REFLECTION\n"
         "#define MAX_LIGHTS 4\n#define MAX_DEPTH 5\n";
-    const std::string variants[] = {all, all + "#define HAS_REFRACTION\n",
-                                    "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n"};
+    const std::string maps =
+        "#define HAS_VERTEX_UVS\n#define HAS_TEXTURES\n#define HAS_NORMAL_MAPS\n"
+        "#define HAS_IMAGE_TEXTURES\n#define HAS_CHECKER_TEXTURES\n#define HAS_NOISE_TEXTURES\n";
+    const std::string variants[] = {
+        all,
+        all + "#define HAS_REFRACTION\n",
+        all + maps + "#define HAS_ENVIRONMENT\n",
+        "#define HAS_SPHERES\n#define HAS_CHECKER_TEXTURES\n#define HAS_TEXTURES\n"
+        "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
+        "#define HAS_ENVIRONMENT\n#define MAX_LIGHTS 1\n#define MAX_DEPTH 2\n",
+        "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n"};
     int n = 0;
     for (const std::string& defines : variants) {
         const AssembledShader shader =
@@ -166,13 +176,13 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
     }
 }
 
-TEST(GpuShader, ScenesTheGpuCannotDrawYetSaySo) {
-    Scene scene = small_scene("02-intersections/scenes/spheres_normals.json");
+TEST(GpuShader, ScenesTheGpuCannotDrawSaySo) {
+    Scene scene = small_scene("06-bvh/scenes/node_visits.json");
     try {
-        render_gpu(scene, RenderMode::PrimitiveId);
+        render_gpu(scene, RenderMode::BvhVisits);
         FAIL();
     } catch (const GpuError& e) {
-        EXPECT_NE(std::string(e.what()).find("not in the GPU port yet"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find(kNoBvhVisits), std::string::npos) << e.what();
     }
 }
 
