@@ -207,6 +207,12 @@ void main() {
             result.rgb = 0.5 * (ray.direction + 1.0);
     } else if (render_mode == 4) {
         result.rgb = trace(ray);
+    } else if (render_mode == 5) {  // bvh_visits: the count goes through a, mapped on the host
+#ifdef HAS_BVH
+        Hit hit = no_hit();
+        bvh_intersect_nearest(ray, Interval(0.0, kInfinity), hit);
+        result.a = float(bvh_nodes_visited);
+#endif
     } else {
         Hit hit = no_hit();
         if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {

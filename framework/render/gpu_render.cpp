@@ -14,6 +14,7 @@
 #include "gl/compute_program.h"
 #include "gpu/gpu_scene.h"
 #include "image/image.h"
+#include "render/render.h"
 
 namespace fs = std::filesystem;
 
@@ -89,8 +90,10 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
 
 void check_supported(const Scene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (mode == RenderMode::BvhVisits)
-        throw GpuError(where + ": " + kNoBvhVisits + "; render it without --gpu");
+    if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
+        throw GpuError(where +
+                       ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
+                       "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh");
     const bool textured = scene.features.textures || scene.features.normal_maps;
     if (textured && (scene.texture_lookup == TextureLookup::Oiio ||
                      scene.texture_lookup == TextureLookup::OiioAniso))
@@ -240,26 +243,19 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     std::memcpy(flags, &output[0], sizeof flags);
     report_stubs(shader, flags);
 
+    // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
     Image image(width, height);
-    float near = kInfinity, far = 0;
+    std::vector<Real> values(pixel_count);
     for (std::size_t i = 0; i < pixel_count; ++i) {
         const glm::vec4 p = output[i + 1];
-        if (p.a == -2.0f) {
-            image.pixels[i] = kStubColor;
-            continue;
-        }
+        values[i] = Real(p.a);
         const Color rgb(p.r, p.g, p.b);
-        image.pixels[i] = mode == RenderMode::Shaded ? rgb : display_value(rgb);
-        if (p.a >= 0) near = std::min(near, p.a), far = std::max(far, p.a);
+        image.pixels[i] = p.a == -2.0f                 ? kStubColor
+                          : mode == RenderMode::Shaded ? rgb
+                                                       : display_value(rgb);
     }
-    if (mode == RenderMode::Depth) {  // as render.cpp's map_depth: the image's own range
-        const float span = far > near ? far - near : 1.0f;
-        for (std::size_t i = 0; i < pixel_count; ++i) {
-            const float t = output[i + 1].a;
-            if (t == -2.0f) continue;
-            image.pixels[i] = t < 0 ? Color(0) : display_value(Color(1 - 0.8f * (t - near) / span));
-        }
-    }
+    if (mode == RenderMode::Depth) map_depth(values, image);
+    if (mode == RenderMode::BvhVisits) map_visits(values, image);
     return image;
 }
 

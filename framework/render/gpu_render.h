@@ -38,11 +38,6 @@ struct GpuError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Why the GPU port has no "bvh_visits" mode (GpuError says so; the conformance test names it).
-inline constexpr const char* kNoBvhVisits =
-    "mode \"bvh_visits\" counts the nodes stage 06's C++ traversal tests (BvhStats), and the "
-    "GLSL traversal keeps no count";
-
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);

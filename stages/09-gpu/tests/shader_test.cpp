@@ -181,13 +181,17 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         }
 }
 
-TEST(GpuShader, ScenesTheGpuCannotDrawSaySo) {
-    Scene scene = small_scene("06-bvh/scenes/node_visits.json");
+TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
+    Scene scene = small_scene("07-textures/scenes/filtering.json");
+    scene.texture_lookup = TextureLookup::Oiio;
     try {
-        render_gpu(scene, RenderMode::BvhVisits);
+        render_gpu(scene, RenderMode::Shaded);
         FAIL();
     } catch (const GpuError& e) {
-        EXPECT_NE(std::string(e.what()).find(kNoBvhVisits), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("filtering.json: --texture-filter oiio"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("has no GPU port"), std::string::npos) << e.what();
     }
 }
 
