@@ -146,9 +146,10 @@ void start_frame(inout Frame f) {
 
 // render/shade.cpp's trace: a loop over a fixed stack instead of recursion. Level k of the stack
 // keeps what recursion kept in its locals, each field in an array of its own: with an array of
-// Frame structs, llvmpipe (Mesa 22) drew wrong images once the stack held 12 levels or more.
-// (llvmpipe also ends all loops after 65535 iterations in total per 8 invocations, so a ray tree
-// much deeper than the course's max_depth 6 comes out black there: stages/09-gpu/README.md.)
+// Frame structs, llvmpipe (Mesa 22) drew wrong images with the uber shader's 65 levels even on
+// scenes 5 deep; this layout does not. (llvmpipe also ends all loops after 65535 iterations in
+// total per 8 invocations, so a ray tree much deeper than the course's max_depth 6 comes out
+// black there: stages/09-gpu/README.md.)
 vec3 trace(Ray ray) {
     vec3 colour[MAX_DEPTH + 1];  // local light, then each branch's weighted colour as it completes
     int next[MAX_DEPTH + 1];     // the branch to trace next: 0 reflected, 1 refracted ...
