@@ -5,13 +5,8 @@
 #   # expect-same A B              DIR/A.png and DIR/B.png are the same image (tolerance 0)
 #   # expect-files NAME...         the session wrote DIR/NAME.png
 #   cmake -DRT=<rt> -DSCENE=<scene.json> -DSCRIPT=<session.txt> -DOUT=<dir> -P check_view.cmake
-find_program(XVFB_RUN xvfb-run)
-if(NOT XVFB_RUN)
-  message("SKIPPED: xvfb-run is missing; scripts/install-deps.sh installs it (package xvfb)")
-  return()
-endif()
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT})
+include(${CMAKE_CURRENT_LIST_DIR}/xvfb.cmake)
+rt_xvfb_ready(${OUT})
 execute_process(
   COMMAND ${XVFB_RUN} -a -s "-screen 0 1920x1080x24"
           ${RT} view ${SCENE} --script ${SCRIPT} --out ${OUT}

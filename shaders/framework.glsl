@@ -49,13 +49,24 @@ uniform int material_count;
 uniform vec3 background_colour;
 uniform vec3 ambient_light;
 uniform bool fresnel;
-uniform int render_mode;  // 0 directions, 1 normals, 2 depth, 4 shaded (RenderMode)
+uniform int render_mode;  // RenderMode: 0 directions 1 normals 2 depth 3 primitive 4 shaded 5 bvh_visits
+uniform int max_depth;    // the scene's, at most MAX_DEPTH
+// What the scene uses, at run time: a specialised shader has exactly these compiled in (the
+// HAS_ defines); the --uber one compiles everything and tests these bits instead.
+uniform int scene_features;
+const int kFeatureBvh = 1, kFeatureShadows = 2, kFeatureVertexNormals = 4, kFeatureVertexUvs = 8,
+          kFeatureRefraction = 16;
+bool scene_has(int feature) { return (scene_features & feature) != 0; }
 
 // Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
 layout(std430, binding = 15) buffer Output {
     uint stub_flags[4];
     vec4 pixels[];  // rgb colour; a: depth (-1 miss), -2 when the pixel reached a stub
 };
+
+// Stage 06's BvhStats::nodes_visited, without pointers: bvh_intersect_nearest adds each node whose
+// box it tests (the bvh_visits view reads it).
+uint bvh_nodes_visited = 0u;
 
 bool rt_stub_reached = false;
 // What RT_NOT_IMPLEMENTED("...") in a student file becomes (gl/shader_source.h).

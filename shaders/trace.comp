@@ -3,9 +3,20 @@
 // (framework/gl/shader_source.h), which puts the scene's #defines after the #version line:
 //   HAS_SPHERES HAS_PLANES HAS_TRIANGLES HAS_BOXES HAS_VERTEX_NORMALS  what the scene contains
 //   HAS_BVH HAS_SHADOWS HAS_REFLECTION HAS_REFRACTION                  what the render needs
+//   HAS_VERTEX_UVS HAS_TEXTURES HAS_NORMAL_MAPS                         stage 07's maps ...
+//   HAS_IMAGE_TEXTURES HAS_CHECKER_TEXTURES HAS_NOISE_TEXTURES          ... and their kinds
+//   HAS_ENVIRONMENT                                                     stage 08
 //   MAX_LIGHTS (>= 1), MAX_DEPTH (0..64)                                fixed array sizes
+// rt render --gpu --uber defines them all (scene_has() then decides at run time).
 // The student files (stages/09-gpu/) come from the include folders the host passes.
 layout(local_size_x = 8, local_size_y = 8) in;
+
+#if defined(HAS_TEXTURES) || defined(HAS_NORMAL_MAPS)
+#define HAS_MAPS  // some material has a map: texture coordinates and the texturing step
+#endif
+#if defined(HAS_IMAGE_TEXTURES) || defined(HAS_ENVIRONMENT)
+#define HAS_IMAGE_LOOKUP  // stage 07's image lookups (the environment uses sample_bilinear)
+#endif
 
 #include "scene_layout.glsl"
 #include "framework.glsl"
@@ -46,33 +57,37 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
 #include "bvh.glsl"
 #include "shade.glsl"
 #include "recursion.glsl"
+#if defined(HAS_MAPS) || defined(HAS_ENVIRONMENT)
+#include "texture_helpers.glsl"
+#include "textures.glsl"
+#endif
+#ifdef HAS_ENVIRONMENT
+#include "environment.glsl"
+#endif
+#include "texturing.glsl"
 
 // render/accelerate.h's nearest_hit: the BVH when the scene has one, stage 02's loop otherwise.
 bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
 #ifdef HAS_BVH
-    return bvh_intersect_nearest(ray, t_range, hit);
-#else
-    return intersect_nearest(ray, t_range, hit);
+    if (scene_has(kFeatureBvh)) return bvh_intersect_nearest(ray, t_range, hit);
 #endif
+    return intersect_nearest(ray, t_range, hit);
 }
 
 Ray camera_ray(vec2 pixel) {
     return camera.projection == 0 ? perspective_ray(pixel) : orthographic_ray(pixel);
 }
 
-// One ray of the loop's stack: what recursion kept in its locals (render/shade.cpp's Frame).
+// One ray's own work (render/shade.cpp's Frame): start_frame fills the last three.
 struct Frame {
     Ray ray;
     int depth;
-    vec3 colour;  // local light, then each branch's weighted colour as it completes
+    vec3 colour;  // the local light
     bool recurse;
     SecondaryRays branches;
-    int next;  // the branch to trace next: 0 reflected, 1 refracted, 2 done
 };
 
 bool nonzero(vec3 c) { return c.r > 0.0 || c.g > 0.0 || c.b > 0.0; }
-
-SecondaryRay branch(Frame f, int i) { return i == 0 ? f.branches.reflected : f.branches.refracted; }
 
 // A frame's own work, as start_frame in render/shade.cpp: nearest hit, direct light with the
 // shadows, and the secondary rays when the material reflects or transmits.
@@ -80,35 +95,41 @@ void start_frame(inout Frame f) {
     Hit hit = no_hit();
     f.recurse = false;
     if (!nearest_hit(f.ray, Interval(0.0, kInfinity), hit)) {
-        f.colour = background_colour;
+        f.colour = background(f.ray.direction);
         return;
     }
-    const Material material = material_at(hit.material);
+    Material material = material_at(hit.material);
     const SurfacePoint at = surface_point(f.ray, hit);
     const vec3 to_viewer = -normalize(f.ray.direction);
     vec3 lighting_normal = at.normal;
 #ifdef HAS_VERTEX_NORMALS
-    if (primitive_kind(hit.primitive) == kTriangle) {
+    if (scene_has(kFeatureVertexNormals) && primitive_kind(hit.primitive) == kTriangle) {
         const vec3 smooth_normal = shading_normal(primitive_index(hit.primitive), hit.uv);
         if (smooth_normal != vec3(0)) lighting_normal = hit.front_face ? smooth_normal
                                                                        : -smooth_normal;
     }
 #endif
+#ifdef HAS_MAPS
+    // Stage 07: the material as its maps colour it here, and the normal-mapped normal.
+    apply_textures(hit, at, to_viewer, material, lighting_normal);
+#endif
     vec3 visibility[MAX_LIGHTS];
     for (int i = 0; i < MAX_LIGHTS; ++i) visibility[i] = vec3(1);
 #ifdef HAS_SHADOWS
     // Only lights whose Blinn-Phong term is not zero get a shadow ray.
-    for (int i = 0; i < light_count; ++i) {
+    for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i) {
         const LightSample s = illuminate(i, at.point);
         visibility[i] = vec3(0);
         if (blinn_phong(material, lighting_normal, to_viewer, s.direction, s.intensity) == vec3(0))
             continue;
-#if defined(HAS_BVH) && !defined(HAS_REFRACTION)
-        const ShadowRay shadow = shadow_ray(at, s);
-        visibility[i] = vec3(bvh_intersect_any(shadow.ray, shadow.t_range) ? 0.0 : 1.0);
-#else
-        visibility[i] = light_transmittance(at, s);
+#ifdef HAS_BVH
+        if (scene_has(kFeatureBvh) && !scene_has(kFeatureRefraction)) {
+            const ShadowRay shadow = shadow_ray(at, s);
+            visibility[i] = vec3(bvh_intersect_any(shadow.ray, shadow.t_range) ? 0.0 : 1.0);
+            continue;
+        }
 #endif
+        visibility[i] = light_transmittance(at, s);
     }
 #endif
     f.colour = direct_light(material, at.point, lighting_normal, to_viewer, visibility);
@@ -119,33 +140,62 @@ void start_frame(inout Frame f) {
 #ifdef HAS_REFRACTION
     bounces = bounces || nonzero(material.transmissive_ior.rgb);
 #endif
-    f.recurse = f.depth < MAX_DEPTH && bounces;
-    f.next = 0;
+    f.recurse = f.depth < max_depth && bounces;
     if (f.recurse) f.branches = secondary_rays(f.ray, at, material, fresnel);
 }
 
-// render/shade.cpp's trace: a loop over a fixed stack instead of recursion.
+// render/shade.cpp's trace: a loop over a fixed stack instead of recursion. Level k of the stack
+// keeps what recursion kept in its locals, each field in an array of its own: with an array of
+// Frame structs, llvmpipe (Mesa 22) drew wrong images with the uber shader's 65 levels even on
+// scenes 5 deep; this layout does not. (llvmpipe also ends all loops after 65535 iterations in
+// total per 8 invocations, so a ray tree much deeper than the course's max_depth 6 comes out
+// black there: stages/09-gpu/README.md.)
 vec3 trace(Ray ray) {
-    Frame stack[MAX_DEPTH + 1];
+    vec3 colour[MAX_DEPTH + 1];  // local light, then each branch's weighted colour as it completes
+    int next[MAX_DEPTH + 1];     // the branch to trace next: 0 reflected, 1 refracted ...
+    int end[MAX_DEPTH + 1];      // ... up to (not including) end
+    vec3 origin[2 * MAX_DEPTH + 2], direction[2 * MAX_DEPTH + 2];  // branch i of level k: 2k + i
+    vec3 weight[2 * MAX_DEPTH + 2];
     int top = 0;
-    stack[0].ray = ray, stack[0].depth = 0;
-    start_frame(stack[0]);
+    Frame f;
+    f.ray = ray;
     for (;;) {
-        while (stack[top].recurse && stack[top].next < 2 && !branch(stack[top], stack[top].next).valid)
-            ++stack[top].next;
-        if (stack[top].recurse && stack[top].next < 2 && top < MAX_DEPTH) {
-            const SecondaryRay s = branch(stack[top], stack[top].next);
-            ++top;
-            stack[top].ray = s.ray, stack[top].depth = stack[top - 1].depth + 1;
-            start_frame(stack[top]);
-            continue;
+        f.depth = top;
+        start_frame(f);
+        colour[top] = f.colour;
+        next[top] = 0, end[top] = 0;
+        if (f.recurse) {
+            const SecondaryRay a = f.branches.reflected, b = f.branches.refracted;
+            origin[2 * top] = a.ray.origin, direction[2 * top] = a.ray.direction;
+            origin[2 * top + 1] = b.ray.origin, direction[2 * top + 1] = b.ray.direction;
+            weight[2 * top] = a.weight, weight[2 * top + 1] = b.weight;
+            next[top] = a.valid ? 0 : 1;  // an invalid branch is skipped
+            end[top] = b.valid ? 2 : 1;
         }
-        if (top == 0) return stack[0].colour;
-        const vec3 colour = stack[top].colour;
-        --top;
-        stack[top].colour += branch(stack[top], stack[top].next).weight * colour;
-        ++stack[top].next;
+        // Complete levels until one has a branch left (return at the root), as returns would.
+        while (!(next[top] < end[top] && top < MAX_DEPTH)) {
+            if (top == 0) return colour[0];
+            const vec3 child = colour[top];
+            --top;
+            colour[top] += weight[2 * top + next[top]] * child;
+            ++next[top];
+        }
+        // Descend into that branch, as a recursive call would.
+        f.ray = Ray(origin[2 * top + next[top]], direction[2 * top + next[top]]);
+        ++top;
     }
+}
+
+// The primitive-id view (render/render.cpp): the surface's rank when all are listed spheres,
+// planes, triangles, boxes, hashed to a colour (the same integer hash as the CPU's).
+vec3 primitive_colour(int id) {
+    const int kind = primitive_kind(id);
+    int rank = primitive_index(id);
+    for (int k = 0; k < kind; ++k) rank += primitive_counts[k];
+    uint h = uint(rank + 1) * 2654435761u;
+    h ^= h >> 15, h *= 2246822519u, h ^= h >> 13;
+    return vec3(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.0 * 0.8 +
+           0.2;
 }
 
 void main() {
@@ -158,10 +208,17 @@ void main() {
             result.rgb = 0.5 * (ray.direction + 1.0);
     } else if (render_mode == 4) {
         result.rgb = trace(ray);
+    } else if (render_mode == 5) {  // bvh_visits: the count goes through a, mapped on the host
+#ifdef HAS_BVH
+        Hit hit = no_hit();
+        bvh_intersect_nearest(ray, Interval(0.0, kInfinity), hit);
+        result.a = float(bvh_nodes_visited);
+#endif
     } else {
         Hit hit = no_hit();
         if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {
-            result.rgb = 0.5 * (hit.normal + 1.0);
+            result.rgb = render_mode == 3 ? primitive_colour(hit.primitive)
+                                          : 0.5 * (hit.normal + 1.0);
             result.a = hit.t;
         }
     }

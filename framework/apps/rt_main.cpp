@@ -66,6 +66,7 @@ struct RenderArgs {
     int max_depth = -1;          // >= 0: overrides the scene's
     bool gpu = false;            // stage 09: a compute shader renders it (render/gpu_render.h)
     std::string gl = "egl";      // the context --gpu uses: egl, osmesa or window
+    bool uber = false;           // --gpu with every feature compiled in
 };
 
 // Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal.
@@ -96,6 +97,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 int run_render(const RenderArgs& args) {
+    if (args.uber && !args.gpu)
+        throw std::runtime_error("rt: error: --uber chooses the GPU shader; add --gpu");
     if (!args.output.empty()) check_image_output(args.output);
     Scene scene = load_scene(args.scene);
     if (args.width > 0) scene.image.width = args.width;
@@ -137,11 +140,12 @@ int run_render(const RenderArgs& args) {
     GpuRenderOptions gpu;
     gpu.context = *parse_gl_kind(args.gl);
     gpu.log = args.quiet ? nullptr : &std::cout;
+    gpu.uber = args.uber;
     Image image = args.gpu ? render_gpu(scene, mode, gpu) : render(scene, mode, options);
     if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
     const std::string how = args.gpu
-                                ? "GPU (" + args.gl + ")"
+                                ? "GPU (" + args.gl + (args.uber ? ", uber" : "") + ")"
                                 : std::to_string(resolve_thread_count(args.threads)) + " threads";
     if (!args.quiet)
         std::printf("%s: %dx%d, %s, %s, %.2f s -> %s\n", args.scene.c_str(), scene.image.width,
@@ -339,6 +343,9 @@ int main(int argc, char** argv) {
                          "stages/09-gpu/*.glsl)");
     render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
+    render_cmd->add_flag("--uber", render_args.uber,
+                         "with --gpu: compile every feature into the shader instead of only what "
+                         "the scene uses (rt-bench gpu compares the two)");
 
     fs::path gallery_out = "gallery";
     fs::path source = source_dir();

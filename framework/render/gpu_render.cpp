@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "gl/compute_program.h"
 #include "gpu/gpu_scene.h"
 #include "image/image.h"
+#include "render/render.h"
 
 namespace fs = std::filesystem;
 
@@ -21,6 +23,19 @@ namespace {
 
 const Color kStubColor{1, 0, 1};
 constexpr int kMaxGpuLights = 64;  // visibility is a vec3[MAX_LIGHTS] per invocation
+constexpr int kMaxGpuDepth = 64;   // the Frame stack: as the CPU's kMaxTraceDepth
+
+int trace_depth(const Scene& scene, RenderMode mode) {
+    return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
+}
+
+// The bits of framework.glsl's scene_features: what the scene uses, tested at run time.
+int feature_bits(const Scene& scene, RenderMode mode) {
+    const bool shaded = mode == RenderMode::Shaded;
+    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
+           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
+           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
+}
 
 Color display_value(Color v) {
     return Color(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b));
@@ -64,18 +79,27 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
                  scene.ambient_light.b);
     gl.Uniform1i(at("fresnel"), scene.fresnel ? 1 : 0);
     gl.Uniform1i(at("render_mode"), int(mode));
+    gl.Uniform1i(at("max_depth"), trace_depth(scene, mode));
+    gl.Uniform1i(at("scene_features"), feature_bits(scene, mode));
+    // A uniform the shader does not use (no textures) has location -1, which GL ignores.
+    const int lookup = scene.texture_lookup == TextureLookup::Nearest    ? 1
+                       : scene.texture_lookup == TextureLookup::Bilinear ? 2
+                                                                         : 0;
+    gl.Uniform1i(at("texture_lookup"), lookup);
 }
 
 void check_supported(const Scene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (mode == RenderMode::PrimitiveId || mode == RenderMode::BvhVisits)
-        throw GpuError(where + ": mode \"" +
-                       std::string(mode == RenderMode::PrimitiveId ? "primitive" : "bvh_visits") +
-                       "\" is not in the GPU port yet; render it without --gpu");
-    if (scene.features.textures || scene.features.normal_maps || scene.features.environment)
+    if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
-                       ": textures and environment maps (stages 07-08) are not in the GPU port "
-                       "yet; render it without --gpu");
+                       ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
+                       "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh");
+    const bool textured = scene.features.textures || scene.features.normal_maps;
+    if (textured && (scene.texture_lookup == TextureLookup::Oiio ||
+                     scene.texture_lookup == TextureLookup::OiioAniso))
+        throw GpuError(where +
+                       ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
+                       "port; use nearest or bilinear, or render it without --gpu");
     if (scene.lights.size() > std::size_t(kMaxGpuLights))
         throw GpuError(where + ": " + std::to_string(scene.lights.size()) +
                        " lights; the GPU port takes at most " + std::to_string(kMaxGpuLights));
@@ -106,10 +130,10 @@ void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
 
 }  // namespace
 
-std::string gpu_defines(const Scene& scene, RenderMode mode) {
+std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     std::string d;
     auto define = [&](bool on, const char* name) {
-        if (on) d += std::string("#define ") + name + "\n";
+        if (on || uber) d += std::string("#define ") + name + "\n";
     };
     define(!scene.spheres.empty(), "HAS_SPHERES");
     define(!scene.planes.empty(), "HAS_PLANES");
@@ -121,31 +145,51 @@ std::string gpu_defines(const Scene& scene, RenderMode mode) {
     define(shaded && scene.features.shadows, "HAS_SHADOWS");
     define(shaded && scene.features.reflection, "HAS_REFLECTION");
     define(shaded && scene.features.refraction, "HAS_REFRACTION");
-    d += "#define MAX_LIGHTS " + std::to_string(std::max<std::size_t>(1, scene.lights.size())) +
+    const Features& f = scene.features;
+    define(!scene.uvs.empty(), "HAS_VERTEX_UVS");
+    define(shaded && f.textures, "HAS_TEXTURES");
+    define(shaded && f.normal_maps, "HAS_NORMAL_MAPS");
+    define(shaded && f.image_textures, "HAS_IMAGE_TEXTURES");
+    define(shaded && f.checker_textures, "HAS_CHECKER_TEXTURES");
+    define(shaded && f.noise_textures, "HAS_NOISE_TEXTURES");
+    define(shaded && f.environment, "HAS_ENVIRONMENT");
+    const std::size_t lights = uber ? kMaxGpuLights : std::max<std::size_t>(1, scene.lights.size());
+    d += "#define MAX_LIGHTS " + std::to_string(lights) + "\n";
+    d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : trace_depth(scene, mode)) +
          "\n";
-    const int depth = shaded ? std::clamp(scene.max_depth, 0, 64) : 0;
-    d += "#define MAX_DEPTH " + std::to_string(depth) + "\n";
     return d;
 }
 
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
-                                      const fs::path& student_dir) {
+                                      const fs::path& student_dir, bool uber) {
     const fs::path students = student_dir.empty() ? source_dir() / "stages/09-gpu" : student_dir;
     return assemble_shader(source_dir() / "shaders/trace.comp", {students},
-                           gpu_defines(scene, mode));
+                           gpu_defines(scene, mode, uber));
 }
 
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {
     check_supported(scene, mode);
+    GpuTimings timings;
+    auto start = std::chrono::steady_clock::now();
+    // Milliseconds since `start`, which moves on to now.
+    auto lap = [&start] {
+        const auto now = std::chrono::steady_clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+        start = now;
+        return ms;
+    };
     std::string error;
     std::unique_ptr<GlContext> context = GlContext::create(options.context, error);
     if (!context) throw GpuError("rt: error: " + error);
     if (options.log) *options.log << "gpu: " << context->describe() << "\n";
     const GlApi& gl = context->gl();
+    timings.context_ms = lap();
 
-    const AssembledShader shader = assemble_trace_shader(scene, mode, options.student_dir);
+    const AssembledShader shader =
+        assemble_trace_shader(scene, mode, options.student_dir, options.uber);
     const GLuint program = build_compute_program(gl, shader, error);
     if (!program) throw GpuError(error);
+    timings.compile_ms = lap();
 
     const gpu::GpuScene packed = gpu::pack_scene(scene);
     std::vector<GLuint> buffers = {
@@ -173,10 +217,21 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
 
     gl.UseProgram(program);
     set_uniforms(gl, program, scene, mode);
+    gl.Finish();  // the uploads are not the trace's time
+    lap();
+    if (options.timings) {
+        // llvmpipe compiles the shader to machine code at its first dispatch: one work group
+        // (its pixels are written again below) moves that into compile_ms.
+        gl.DispatchCompute(1, 1, 1);
+        gl.Finish();
+        timings.compile_ms += lap();
+    }
     gl.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
     gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
                         output.data());
+    timings.trace_ms = lap();
+    if (options.timings) *options.timings = timings;
     const GLenum status = gl.GetError();
     gl.DeleteBuffers(GLsizei(buffers.size()), buffers.data());
     gl.DeleteProgram(program);
@@ -188,26 +243,19 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     std::memcpy(flags, &output[0], sizeof flags);
     report_stubs(shader, flags);
 
+    // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
     Image image(width, height);
-    float near = kInfinity, far = 0;
+    std::vector<Real> values(pixel_count);
     for (std::size_t i = 0; i < pixel_count; ++i) {
         const glm::vec4 p = output[i + 1];
-        if (p.a == -2.0f) {
-            image.pixels[i] = kStubColor;
-            continue;
-        }
+        values[i] = Real(p.a);
         const Color rgb(p.r, p.g, p.b);
-        image.pixels[i] = mode == RenderMode::Shaded ? rgb : display_value(rgb);
-        if (p.a >= 0) near = std::min(near, p.a), far = std::max(far, p.a);
+        image.pixels[i] = p.a == -2.0f                 ? kStubColor
+                          : mode == RenderMode::Shaded ? rgb
+                                                       : display_value(rgb);
     }
-    if (mode == RenderMode::Depth) {  // as render.cpp's map_depth: the image's own range
-        const float span = far > near ? far - near : 1.0f;
-        for (std::size_t i = 0; i < pixel_count; ++i) {
-            const float t = output[i + 1].a;
-            if (t == -2.0f) continue;
-            image.pixels[i] = t < 0 ? Color(0) : display_value(Color(1 - 0.8f * (t - near) / span));
-        }
-    }
+    if (mode == RenderMode::Depth) map_depth(values, image);
+    if (mode == RenderMode::BvhVisits) map_visits(values, image);
     return image;
 }
 

@@ -17,10 +17,19 @@
 
 namespace rt {
 
+// Where a GPU render's time went (rt-bench gpu): milliseconds of wall-clock time.
+struct GpuTimings {
+    double context_ms = 0;  // creating the OpenGL context
+    double compile_ms = 0;  // assembling, compiling and linking the shader
+    double trace_ms = 0;    // the dispatch, up to the pixels read back (upload excluded)
+};
+
 struct GpuRenderOptions {
     GlKind context = GlKind::Egl;
     std::filesystem::path student_dir;  // empty: stages/09-gpu of the course tree
     std::ostream* log = nullptr;        // "gpu: egl (surfaceless): llvmpipe ..." when set
+    bool uber = false;  // compile every feature in (one shader for every scene), not the scene's
+    GpuTimings* timings = nullptr;  // filled when set
 };
 
 // Thrown for what stops a GPU render: no context, a shader that does not compile (the message
@@ -29,8 +38,9 @@ struct GpuError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// The #defines trace.comp is compiled with for `scene` in `mode` (one per line).
-std::string gpu_defines(const Scene& scene, RenderMode mode);
+// The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
+// feature, the largest array sizes (the shader then tests what the scene has at run time).
+std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
 
 // Renders like render() (render/render.h): debug modes store display values, a pixel that reached
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
@@ -38,6 +48,7 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
 
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
-                                      const std::filesystem::path& student_dir = {});
+                                      const std::filesystem::path& student_dir = {},
+                                      bool uber = false);
 
 }  // namespace rt

@@ -90,6 +90,8 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     return out;
 }
 
+}  // namespace
+
 // Depth: near hits white, far hits dark grey, misses black; the range is the image's own
 // [nearest, farthest] hit, a deterministic reduction over all pixels.
 void map_depth(const std::vector<Real>& depth, Image& image) {
@@ -104,6 +106,8 @@ void map_depth(const std::vector<Real>& depth, Image& image) {
     }
 }
 
+namespace {
+
 // A heat ramp from black through purple, red and orange to pale yellow (the shape of the
 // "inferno" colour map, in five hand-picked stops: dark is cheap, bright is expensive).
 Color heat_colour(float v) {
@@ -117,6 +121,8 @@ Color heat_colour(float v) {
     return glm::mix(stops[i], stops[i + 1], v - float(i));
 }
 
+}  // namespace
+
 // BVH node visits: 0 .. the image's largest count mapped onto the heat ramp (a deterministic
 // reduction over all pixels, like the depth mode).
 void map_visits(const std::vector<Real>& visits, Image& image) {
@@ -127,8 +133,6 @@ void map_visits(const std::vector<Real>& visits, Image& image) {
         image.pixels[i] = display_value(heat_colour(float(visits[i] / most)));
     }
 }
-
-}  // namespace
 
 int resolve_thread_count(int threads) {
     if (threads > 0) return threads;

@@ -37,7 +37,8 @@ bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
 
 // The nearest hit in t_range (planes one by one, then the tree): nearer child first, skipping
 // a node that starts beyond the nearest hit so far. intersect_primitive (given) tests one
-// primitive by its global id and fills hit.primitive and hit.material.
+// primitive by its global id and fills hit.primitive and hit.material. Add each node whose box
+// you test to bvh_nodes_visited (stage 06's stats->nodes_visited; the bvh_visits view).
 bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     // BEGIN SOLUTION
     bool found = false;
@@ -55,6 +56,7 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     float stack_t[kBvhMaxDepth + 1];
     int top = 0;
     float t_root;
+    bvh_nodes_visited += 1u;
     if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) {
         stack_node[0] = 0u;
         stack_t[0] = t_root;
@@ -73,6 +75,7 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
             continue;
         }
         float t_left, t_right;
+        bvh_nodes_visited += 2u;
         const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction, t_range,
                                              t_left);
         const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray, inv_direction,

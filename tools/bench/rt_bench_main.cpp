@@ -12,6 +12,7 @@
 #include "apps/cli_parse.h"
 #include "bench/accuracy.h"
 #include "bench/bvh_bench.h"
+#include "bench/gpu_bench.h"
 #ifdef RT_BENCH_HAVE_VIEW
 #include "bench/view_latency.h"
 #endif
@@ -149,6 +150,23 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));
 #endif
+    rt::bench::GpuBenchConfig gpu;
+    std::string gl = "egl";
+    CLI::App* gpu_cmd = app.add_subcommand(
+        "gpu",
+        "stage 09's compute shader (specialised and uber) against the CPU on 1 and 2 threads");
+    gpu_cmd->add_option("--scene", gpu.scenes, "scene files (default: whitted, large_icosphere)");
+    gpu_cmd->add_option("--width", gpu.width, "image width")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    gpu_cmd->add_option("--height", gpu.height, "image height")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    gpu_cmd->add_option("--repeat", gpu.repeat, "timed runs of each; the fastest counts")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
+    gpu_cmd->add_option("--gl", gl, "the OpenGL context (default: egl)")
+        ->check(CLI::IsMember({"egl", "osmesa"}));
 
     if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`"))
         return *stop;
@@ -156,15 +174,20 @@ int main(int argc, char** argv) {
 #ifdef RT_BENCH_HAVE_VIEW
         if (view->parsed()) return rt::bench::run_view_latency(view_cfg, std::cout) ? 0 : 1;
 #endif
-        if (acc->parsed()) {
+        if (acc->parsed() || gpu_cmd->parsed()) {
+            const std::string sub = acc->parsed() ? "accuracy" : "gpu";
             for (const CLI::Option* option : app.get_options())
                 if (option->count() > 0 && option->get_name() != "--help") {
                     std::fprintf(stderr,
                                  "rt-bench: error: %s is an option of the BVH benchmark, "
-                                 "not of `accuracy`; give it after `accuracy`, if there\n",
-                                 option->get_name().c_str());
+                                 "not of `%s`; give it after `%s`, if there\n",
+                                 option->get_name().c_str(), sub.c_str(), sub.c_str());
                     return 2;
                 }
+            if (gpu_cmd->parsed()) {
+                gpu.context = *rt::parse_gl_kind(gl);
+                return rt::bench::run_gpu_bench(gpu, std::cout);
+            }
             return run_accuracy(cfg, markdown, svg_dir, csv);
         }
         return rt::bench::run_bvh_bench(bench, std::cout);
