@@ -82,6 +82,8 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
     for (const auto& s : specs) {
         if (!r.stages.empty() && std::count(r.stages.begin(), r.stages.end(), s.number) == 0)
             continue;
+        // `compare` calibrates the CPU renderer: a GPU stage's scenes are earlier stages' own.
+        if (s.gpu) continue;
         const std::string stage = fs::path(s.folder).filename().string();
         for (const auto& sc : s.scenes) {
             ++total;

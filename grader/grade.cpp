@@ -35,6 +35,14 @@ fs::path child_dir(const fs::path& path) {
 }
 
 void strip_workspace_roots(const Grading& g, std::string& text) {
+    // A GPU stage's graded GLSL is named as the student knows it: stages/NN-name/file.glsl.
+    for (const auto& [number, dir] : g.glsl_dirs)
+        for (const auto& s : g.graded) {
+            if (s.number != number) continue;
+            const std::string from = dir.string() + "/", to = s.folder + "/";
+            for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p))
+                text.replace(p, from.size(), to), p += to.size();
+        }
     for (const auto& root :
          {g.w.src.string() + "/", g.w.build.string() + "/", g.scratch.string() + "/"}) {
         std::size_t p;

@@ -21,7 +21,8 @@ struct ImageThresholds {
     bool neighbourhood = true;  // forgive anti-aliased edges (3x3 reference neighbourhood)
 };
 struct SceneSpec {
-    std::string name;  // scenes/<name>.json, reference_images/<stage>/<name>.png
+    std::string name;    // <folder>/scenes/<name>.json, reference_images/<folder's name>/<name>.png
+    std::string folder;  // stages/NN-name: the grading stage's own, or another's ("from")
     double points = 1;
     std::string visibility = "visible";
     ImageThresholds thresholds;
@@ -43,7 +44,13 @@ struct StageSpec {
     std::vector<SceneSpec> scenes;
     double test_seconds = 10;
     double render_seconds = 30;
+    // "renderer": "gpu" (stage 09): the student files are GLSL, loaded by the test binaries and
+    // `rt render --gpu` at run time (RT_GPU_STUDENT_DIR), never compiled into objects.
+    bool gpu = false;
 };
+
+// A student file compiled into the stage objects (C++), as opposed to GLSL read at run time.
+bool is_compiled_student_file(const std::string& key);
 
 // Every stage that has a grading.json, in order. Throws std::runtime_error naming the file.
 std::vector<StageSpec> load_stage_specs(const std::filesystem::path& source);

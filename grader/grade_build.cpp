@@ -33,7 +33,7 @@ std::map<std::string, fs::path> compile_submission(Grading& g,
     for (const auto& s : g.graded)
         for (const auto& f : s.student_files) {
             const std::string key = s.folder + "/" + f;
-            if (!g.in.files.count(key) || g_interrupted) continue;
+            if (!is_compiled_student_file(key) || !g.in.files.count(key) || g_interrupted) continue;
             const std::string name = flat_name(key);
             const fs::path raw = trusted_dir(g.scratch / "objects" / name) / (name + ".o");
             std::string compile_log;
@@ -101,6 +101,7 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
         for (const auto& t : g.all_specs)
             for (const auto& f : t.student_files) {
                 const std::string key = t.folder + "/" + f;
+                if (!is_compiled_student_file(key)) continue;
                 if (t.number < s.number)
                     objects.push_back(earlier_stage_object(key));
                 else if (t.number == s.number && student_objects.count(key))
@@ -133,10 +134,34 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
     }
 }
 
+// A GPU stage's GLSL as graded: each submitted file, the released stub for each one missing,
+// in a folder of its own that the children read (it holds nothing but the student's own text
+// and public stubs) and the shader assembler loads at run time. The text is never compiled
+// here: the driver compiles it inside the sandboxed test or render.
+void stage_glsl(Grading& g) {
+    for (const auto& s : g.graded) {
+        if (!s.gpu) continue;
+        const fs::path dir = g.scratch / ("glsl-" + two_digits(s.number));
+        fs::create_directories(dir);
+        for (const auto& f : s.student_files) {
+            const std::string key = s.folder + "/" + f;
+            if (is_compiled_student_file(key)) continue;
+            const auto it = g.in.files.find(key);
+            write_text(dir / f, it != g.in.files.end() ? it->second : read_text(g.w.src / key));
+            fs::permissions(dir / f, fs::perms::owner_read | fs::perms::owner_write |
+                                         fs::perms::group_read | fs::perms::others_read);
+        }
+        fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                 fs::perms::others_read | fs::perms::others_exec);
+        g.glsl_dirs[s.number] = dir;
+    }
+}
+
 }  // namespace
 
 void build_stages(Grading& g) {
     std::map<int, std::string> build_errors;  // stage -> what the student sees
+    stage_glsl(g);
     auto student_objects = compile_submission(g, build_errors);
     const auto own_solutions = compile_own_solutions(g, student_objects);
     link_stages(g, student_objects, own_solutions, build_errors);

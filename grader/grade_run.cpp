@@ -106,6 +106,17 @@ class Runner {
         return r;
     }
 
+    // A GPU stage's children load the graded GLSL (RT_GPU_STUDENT_DIR) and run Mesa's software
+    // rasteriser: its threads count against the process limit, and its shader cache would write
+    // into a home folder the child does not have.
+    void add_gpu(const GradeTask& task, RunSpec& r) const {
+        const auto it = g_.glsl_dirs.find(task.stage->number);
+        if (it == g_.glsl_dirs.end()) return;
+        r.binds.push_back({it->second, {}, false});
+        r.env.insert(r.env.end(), {"RT_GPU_STUDENT_DIR=" + it->second.string(), "LP_NUM_THREADS=2",
+                                   "MESA_SHADER_CACHE_DISABLE=true"});
+    }
+
     double limit(double stage_seconds) const {
         return g_.o.time_limit > 0 ? g_.o.time_limit : stage_seconds;
     }
@@ -121,6 +132,7 @@ class Runner {
         VerdictChannel channel;
         r.env = {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
                  "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
+        add_gpu(task, r);
         r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.child_end, kResultFd}};
         const RunResult res = channel.ok ? run_sandboxed(r) : RunResult{};
         g_.survivors += res.survivors;
@@ -151,12 +163,17 @@ class Runner {
         r.argv = {
             binary.string(),
             "render",
-            (g_.w.src / task.stage->folder / "scenes" / (task.scene->name + ".json")).string(),
+            (g_.w.src / task.scene->folder / "scenes" / (task.scene->name + ".json")).string(),
             "-o",
             (out / "render.exr").string(),
             "--threads",
             "1",
             "-q"};
+        // The student's renderer of a GPU stage is the shader; the reference is the CPU's.
+        if (task.stage->gpu && binary != g_.reference_rt) {
+            r.argv.push_back("--gpu");
+            add_gpu(task, r);
+        }
         if (yaw != 0) {
             char text[32];
             std::snprintf(text, sizeof text, "%.3f", yaw);
@@ -189,7 +206,7 @@ class Runner {
                      TestOutcome& out) {
         const Render mine = render(bin / "rt", task, 0, dir, "shipped");
         const Image8 reference =
-            read_image8(g_.w.priv / "reference_images" / fs::path(task.stage->folder).filename() /
+            read_image8(g_.w.priv / "reference_images" / fs::path(task.scene->folder).filename() /
                         (task.scene->name + ".png"));
         out.output = mine.output;
         if (!mine.ok) return;

@@ -56,7 +56,10 @@ struct Grading {
     Intake in;
     std::string digest;  // of the submitted files: picks the unseen view
     std::map<int, std::filesystem::path> stage_bins;  // stage -> its linked binaries
-    std::atomic<int> survivors{0};                    // processes the sandbox could not kill
+    // A GPU stage -> the folder of its GLSL as graded (submitted files, stubs for the missing),
+    // which its tests and renders load at run time (RT_GPU_STUDENT_DIR).
+    std::map<int, std::filesystem::path> glsl_dirs;
+    std::atomic<int> survivors{0};  // processes the sandbox could not kill
     GradeSummary summary;
 
     Report to_report() const;

@@ -33,6 +33,10 @@ void check_visibility(const std::string& v, const fs::path& file) {
 
 }  // namespace
 
+bool is_compiled_student_file(const std::string& key) {
+    return fs::path(key).extension() != ".glsl";
+}
+
 std::vector<StageSpec> load_stage_specs(const fs::path& source) {
     std::vector<StageSpec> specs;
     std::vector<fs::path> folders;
@@ -52,6 +56,11 @@ std::vector<StageSpec> load_stage_specs(const fs::path& source) {
             s.student_files = stage.at("student_files").get<std::vector<std::string>>();
             s.test_seconds = g.value("test_seconds", s.test_seconds);
             s.render_seconds = g.value("render_seconds", s.render_seconds);
+            const std::string renderer = g.value("renderer", std::string("cpu"));
+            if (renderer != "cpu" && renderer != "gpu")
+                throw std::runtime_error(file.string() + ": \"renderer\" is \"" + renderer +
+                                         "\"; use \"cpu\" (the default) or \"gpu\"");
+            s.gpu = renderer == "gpu";
             const ImageThresholds defaults =
                 parse_thresholds(g.value("image_defaults", json::object()), ImageThresholds{});
             for (const json& u : g.value("unit_tests", json::array())) {
@@ -77,6 +86,17 @@ std::vector<StageSpec> load_stage_specs(const fs::path& source) {
             for (const json& sc : g.value("scenes", json::array())) {
                 SceneSpec scene;
                 scene.name = sc.at("name").get<std::string>();
+                scene.folder = s.folder;
+                if (sc.contains("from")) {
+                    // Another stage's scene and reference (stage 09 renders earlier scenes).
+                    scene.folder = "stages/" + sc.at("from").get<std::string>();
+                    if (!fs::is_regular_file(source / scene.folder / "scenes" /
+                                             (scene.name + ".json")))
+                        throw std::runtime_error(file.string() + ": scene \"" + scene.name +
+                                                 "\" from \"" + sc.at("from").get<std::string>() +
+                                                 "\": no " + scene.folder + "/scenes/" +
+                                                 scene.name + ".json");
+                }
                 scene.points = sc.value("points", scene.points);
                 scene.visibility = sc.value("visibility", scene.visibility);
                 check_visibility(scene.visibility, file);

@@ -241,10 +241,10 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         if (student_keys.count(f)) {
             bool from_source = false;
             const std::string stub = stub_text(o.source, f, text, from_source);
-            if (from_source)
-                solution_from_source.insert(f.string());
-            else
+            if (!from_source)
                 write_text(w.priv / "pristine" / (f.string() + ".solution"), text);
+            else if (is_compiled_student_file(f.string()))  // GLSL is never compiled here
+                solution_from_source.insert(f.string());
             write_text(w.priv / "pristine" / (f.string() + ".stub"), stub);
             text = stub;
         }
@@ -312,6 +312,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
         for (const auto& s : specs)
             for (const auto& f : s.student_files) {
                 const std::string k = s.folder + "/" + f;
+                if (!is_compiled_student_file(k)) continue;  // GLSL: read at run time
                 for (const auto& c : commands)
                     if (c.at("file").get<std::string>() == (w.src / k).string()) {
                         auto argv = command_argv(c.at("command").get<std::string>(), "compile");
@@ -370,6 +371,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     for (const auto& s : specs)
         for (const auto& f : s.student_files) {
             const std::string k = s.folder + "/" + f;
+            if (!is_compiled_student_file(k)) continue;
             for (const bool solution : {true, false}) {
                 if (solution && solution_from_source.count(k)) continue;  // compiled per grading
                 const std::string text =
@@ -401,14 +403,14 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     plan["shipped_hashes"] = shipped;
     write_text(w.priv / "plan.json", plan.dump(1));
     // References of the graded scenes, where children never look.
-    for (const auto& s : specs) {
-        const std::string stage = fs::path(s.folder).filename().string();
-        fs::create_directories(w.priv / "reference_images" / stage);
-        for (const auto& sc : s.scenes)
+    for (const auto& s : specs)
+        for (const auto& sc : s.scenes) {
+            const std::string stage = fs::path(sc.folder).filename().string();
+            fs::create_directories(w.priv / "reference_images" / stage);
             fs::copy_file(o.source / "reference_images" / stage / (sc.name + ".png"),
                           w.priv / "reference_images" / stage / (sc.name + ".png"),
                           fs::copy_options::overwrite_existing, ec);
-    }
+        }
     // The reference renderer (every solution) renders the unseen views at grading time.
     {
         // The secret seeds the unseen views; a student never sees it.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -162,7 +163,12 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
 
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber) {
-    const fs::path students = student_dir.empty() ? source_dir() / "stages/09-gpu" : student_dir;
+    fs::path students = student_dir;
+    if (students.empty()) {
+        // The grader points its sandboxed tests and renders at the GLSL it grades.
+        const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
+        students = graded && *graded ? fs::path(graded) : source_dir() / "stages/09-gpu";
+    }
     return assemble_shader(source_dir() / "shaders/trace.comp", {students},
                            gpu_defines(scene, mode, uber));
 }

@@ -26,7 +26,7 @@ struct GpuTimings {
 
 struct GpuRenderOptions {
     GlKind context = GlKind::Egl;
-    std::filesystem::path student_dir;  // empty: stages/09-gpu of the course tree
+    std::filesystem::path student_dir;  // empty: $RT_GPU_STUDENT_DIR, else stages/09-gpu
     std::ostream* log = nullptr;        // "gpu: egl (surfaceless): llvmpipe ..." when set
     bool uber = false;  // compile every feature in (one shader for every scene), not the scene's
     GpuTimings* timings = nullptr;  // filled when set
