@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/source_dir.h"
+#include "image/compare.h"
 #include "render/sampled.h"
 #include "scene/scene_loader.h"
 
@@ -109,6 +110,30 @@ TEST(SampleStreams, DependOnlyOnSeedPixelAndSample) {
     EXPECT_EQ(seen.size(), 4u) << "neighbouring pixels and samples start alike";
     SampleStream other_seed(10, 0, 0), first(9, 0, 0);
     EXPECT_NE(other_seed.next(), first.next());
+}
+
+// The block-mean comparison of Monte Carlo images (CompareOptions::block): pixel noise around
+// the right mean passes, a block whose mean moved fails all its pixels.
+TEST(BlockMeans, ForgiveNoiseAndCatchShiftedMeans) {
+    Image8 reference{16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 128)};
+    Image8 noisy = reference;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) noisy.at(x, y)[c] = (x + y) % 2 ? 118 : 138;
+    CompareOptions pixels;
+    EXPECT_FALSE(compare_images(noisy, reference, pixels).passed) << "per pixel, noise fails";
+    CompareOptions blocks;
+    blocks.block = 8;
+    const CompareResult quiet = compare_images(noisy, reference, blocks);
+    EXPECT_TRUE(quiet.passed) << quiet.summary();
+    EXPECT_NE(quiet.summary().find("8x8 blocks"), std::string::npos) << quiet.summary();
+    Image8 shifted = noisy;
+    for (int y = 8; y < 16; ++y)
+        for (int x = 0; x < 8; ++x) shifted.at(x, y)[1] += 20;
+    const CompareResult moved = compare_images(shifted, reference, blocks);
+    EXPECT_FALSE(moved.passed);
+    EXPECT_EQ(moved.failing_pixels, 64) << "exactly the moved block fails";
+    EXPECT_GE(moved.max_difference, 15);
 }
 
 }  // namespace
