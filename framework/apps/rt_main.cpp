@@ -177,6 +177,11 @@ int run_info(const std::string& file) {
         scene.spheres.size(), scene.planes.size(), scene.triangles.size(), scene.vertices.size(),
         scene.boxes.size(), scene.materials.size(), scene.lights.size(),
         scene.features.describe().c_str());
+    if (scene.features.sampled())  // stage 10
+        std::printf(
+            "  sampling: %d samples per pixel, seed %llu, %zu area lights, %zu moving spheres\n",
+            scene.sampling.samples_per_pixel, (unsigned long long)scene.sampling.seed,
+            scene.area_lights.size(), scene.moving_spheres.size());
     if (accel.built)
         std::printf("  BVH: %zu primitives, %zu nodes of %zu bytes, depth %d, built in %.1f ms\n",
                     accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
