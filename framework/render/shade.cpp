@@ -320,7 +320,9 @@ Color trace_sample(const Scene& scene, const Ray& ray, SampleStream& stream,
 }
 
 Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
-    if (scene.features.sampled()) {  // stage 10; the debugger shows the first sample's rays
+    // Stage 10: the debugger shows the first sample's rays (with moving spheres, the blockers
+    // its shadow records name are looked up at time 0).
+    if (scene.features.sampled()) {
         if (!tree) return shade_sampled_pixel(scene, x, y);
         *tree = RayNode{};
         RayTreeRecorder recorder(scene, *tree);
