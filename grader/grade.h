@@ -19,6 +19,7 @@ struct ImageThresholds {
     double pass_percent = 0.1;  // failing pixels at or below this: full points
     double fail_percent = 2.0;  // at or above this: no points; linear in between
     bool neighbourhood = true;  // forgive anti-aliased edges (3x3 reference neighbourhood)
+    int block = 0;  // > 0: compare means over block x block squares (Monte Carlo renders)
 };
 struct SceneSpec {
     std::string name;    // <folder>/scenes/<name>.json, reference_images/<folder's name>/<name>.png

@@ -40,6 +40,7 @@ ImageScore score_image(const Image8& actual, const Image8& reference, const Imag
     co.tolerance = th.tolerance;
     co.max_failing_percent = th.pass_percent;
     co.neighbourhood = th.neighbourhood;
+    co.block = th.block;
     score.compare = compare_images(actual, reference, co);
     if (!score.compare.size_matches) {
         score.metrics = "the image is " + std::to_string(actual.width) + "x" +
@@ -54,10 +55,13 @@ ImageScore score_image(const Image8& actual, const Image8& reference, const Imag
         score.fraction = (th.fail_percent - failing) / (th.fail_percent - th.pass_percent);
     score.ssim = ssim_luminance(actual, reference);
     char line[400];
+    const std::string blocks = th.block > 0 ? " in their " + std::to_string(th.block) + "x" +
+                                                  std::to_string(th.block) + "-block means"
+                                            : "";
     std::snprintf(line, sizeof line,
-                  "%.3f%% of the pixels differ by more than %d (full points up to %.2f%%, none "
+                  "%.3f%% of the pixels differ%s by more than %d (full points up to %.2f%%, none "
                   "from %.2f%%); max difference %d; SSIM %.4f (reported, not graded)",
-                  failing, th.tolerance, th.pass_percent, th.fail_percent,
+                  failing, blocks.c_str(), th.tolerance, th.pass_percent, th.fail_percent,
                   score.compare.max_difference, score.ssim);
     score.metrics = line;
     return score;

@@ -21,6 +21,7 @@ ImageThresholds parse_thresholds(const json& j, ImageThresholds t) {
     t.pass_percent = j.value("pass_percent", t.pass_percent);
     t.fail_percent = j.value("fail_percent", t.fail_percent);
     t.neighbourhood = j.value("neighbourhood", t.neighbourhood);
+    t.block = j.value("block", t.block);
     return t;
 }
 

@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   clang-format                        # Format.ClangFormat: the code style CI enforces
   libglm-dev                # vector math
+  libpcg-cpp-dev            # stage 10: the PCG random generators (pcg_random.hpp), header only
   libpng-dev libopenexr-dev # PNG and EXR in and out (fast process start)
   libopenimageio-dev        # every other image format, loaded on first use
   nlohmann-json3-dev        # scene files

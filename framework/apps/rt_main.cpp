@@ -64,6 +64,8 @@ struct RenderArgs {
     double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
     std::string shadows;         // "", on or off: overrides the scene's (the viewer's toggle)
     int max_depth = -1;          // >= 0: overrides the scene's
+    int spp = 0;                 // > 0: overrides the scene's samples_per_pixel (stage 10)
+    std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
     bool gpu = false;            // stage 09: a compute shader renders it (render/gpu_render.h)
     std::string gl = "egl";      // the context --gpu uses: egl, osmesa or window
     bool uber = false;           // --gpu with every feature compiled in
@@ -114,6 +116,8 @@ int run_render(const RenderArgs& args) {
             args.texture_filter == "nearest" ? TextureLookup::Nearest : TextureLookup::Bilinear;
     if (!args.shadows.empty()) scene.shadows = args.shadows == "on";
     if (args.max_depth >= 0) scene.max_depth = args.max_depth;
+    if (args.spp > 0) scene.sampling.samples_per_pixel = args.spp;
+    if (args.seed) scene.sampling.seed = *args.seed;
     scene.update_features();  // after the overrides, as the viewer does
     const RenderMode mode = args.mode.value_or(scene.mode);
     const AccelerationReport accel = build_acceleration(scene);
@@ -156,10 +160,11 @@ int run_render(const RenderArgs& args) {
 
 // The grader's metric on two image files: one line, exit 0 when they match.
 int run_compare(const std::string& actual, const std::string& reference, int tolerance,
-                bool neighbourhood) {
+                bool neighbourhood, int block) {
     CompareOptions options;
     options.tolerance = tolerance;
     options.neighbourhood = neighbourhood;
+    options.block = block;
     const CompareResult result =
         compare_images(read_image8(actual), read_image8(reference), options);
     std::printf("%s vs %s: %s\n", actual.c_str(), reference.c_str(), result.summary().c_str());
@@ -176,6 +181,11 @@ int run_info(const std::string& file) {
         scene.spheres.size(), scene.planes.size(), scene.triangles.size(), scene.vertices.size(),
         scene.boxes.size(), scene.materials.size(), scene.lights.size(),
         scene.features.describe().c_str());
+    if (scene.features.sampled())  // stage 10
+        std::printf(
+            "  sampling: %d samples per pixel, seed %llu, %zu area lights, %zu moving spheres\n",
+            scene.sampling.samples_per_pixel, (unsigned long long)scene.sampling.seed,
+            scene.area_lights.size(), scene.moving_spheres.size());
     if (accel.built)
         std::printf("  BVH: %zu primitives, %zu nodes of %zu bytes, depth %d, built in %.1f ms\n",
                     accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
@@ -338,6 +348,14 @@ int main(int argc, char** argv) {
         ->add_option("--max-depth", render_args.max_depth,
                      "override the scene's bounces of reflected/refracted rays")
         ->check(CLI::Range(0, 64));
+    render_cmd
+        ->add_option("--spp", render_args.spp,
+                     "override the scene's samples per pixel (stage 10: any value > 1 samples)")
+        ->check(CLI::Range(1, 65536));
+    render_cmd
+        ->add_option("--seed", render_args.seed,
+                     "override the scene's random seed (stage 10; 0 to 2^53)")
+        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 53));
     render_cmd->add_flag("--gpu", render_args.gpu,
                          "render with the compute shader of stage 09 (shaders/trace.comp and "
                          "stages/09-gpu/*.glsl)");
@@ -360,6 +378,7 @@ int main(int argc, char** argv) {
     std::string compare_actual, compare_reference;
     int compare_tolerance = 2;
     bool compare_neighbourhood = false;
+    int compare_block = 0;
     auto* compare_cmd = app.add_subcommand(
         "compare", "compare two images by the grader's metric (framework/image/compare.h)");
     compare_cmd->add_option("actual", compare_actual, "image (.png or .exr)")->required();
@@ -368,6 +387,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 255));
     compare_cmd->add_flag("--neighbourhood", compare_neighbourhood,
                           "forgive anti-aliased edges (3x3), as the graders do");
+    compare_cmd
+        ->add_option("--block", compare_block,
+                     "compare the means of NxN blocks (Monte Carlo images, stage 10)")
+        ->check(CLI::Range(0, 256));
 
     ViewArgsForCli view_args;
     auto* view_cmd = app.add_subcommand(
@@ -417,7 +440,7 @@ int main(int argc, char** argv) {
         if (*info_cmd) return run_info(info_scene);
         if (*compare_cmd)
             return run_compare(compare_actual, compare_reference, compare_tolerance,
-                               compare_neighbourhood);
+                               compare_neighbourhood, compare_block);
         if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return gl_kind.empty() ? run_gl_info(gl_window) : run_gl_context_info(gl_kind);
         if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);

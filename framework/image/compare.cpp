@@ -1,8 +1,11 @@
 #include "image/compare.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 namespace rt {
 namespace {
@@ -13,15 +16,77 @@ int channel_difference(const std::uint8_t* a, const std::uint8_t* b) {
     return d;
 }
 
+// The mean linear colour of each block, re-encoded to sRGB on the 0..255 scale.
+std::vector<double> block_means(const Image8& image, int block) {
+    static const std::vector<double> linear = [] {
+        std::vector<double> table(256);
+        for (int i = 0; i < 256; ++i) table[std::size_t(i)] = srgb_to_linear(float(i) / 255.0f);
+        return table;
+    }();
+    const int bw = (image.width + block - 1) / block, bh = (image.height + block - 1) / block;
+    std::vector<double> means(std::size_t(bw) * bh * 3, 0);
+    for (int by = 0; by < bh; ++by)
+        for (int bx = 0; bx < bw; ++bx) {
+            const int x1 = std::min(image.width, (bx + 1) * block);
+            const int y1 = std::min(image.height, (by + 1) * block);
+            double sum[3] = {0, 0, 0};
+            for (int y = by * block; y < y1; ++y)
+                for (int x = bx * block; x < x1; ++x)
+                    for (int c = 0; c < 3; ++c) sum[c] += linear[image.at(x, y)[c]];
+            const double count = double(x1 - bx * block) * double(y1 - by * block);
+            for (int c = 0; c < 3; ++c)
+                means[(std::size_t(by) * bw + bx) * 3 + std::size_t(c)] =
+                    255.0 * linear_to_srgb(float(sum[c] / count));
+        }
+    return means;
+}
+
+// CompareOptions::block: the same result fields, over block means.
+CompareResult compare_block_means(const Image8& actual, const Image8& reference,
+                                  const CompareOptions& options, CompareResult result) {
+    const int w = actual.width, h = actual.height, block = options.block;
+    const int bw = (w + block - 1) / block;
+    const std::vector<double> a = block_means(actual, block), r = block_means(reference, block);
+    double total = 0, largest = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t b = (std::size_t(y / block) * bw + std::size_t(x / block)) * 3;
+            double d = 0;
+            for (int c = 0; c < 3; ++c) {
+                const double dc = std::abs(a[b + std::size_t(c)] - r[b + std::size_t(c)]);
+                d = std::max(d, dc);
+                total += dc;
+            }
+            largest = std::max(largest, d);
+            std::uint8_t* heat = result.heat_map.at(x, y);
+            if (d > options.tolerance) {
+                ++result.failing_pixels;
+                heat[0] = heat[1] = heat[2] = 255;
+            } else {
+                heat[0] = std::uint8_t(std::min(255.0, d * 32));
+            }
+        }
+    const double pixels = double(w) * h;
+    result.max_difference = int(std::ceil(largest));
+    result.failing_percent = 100.0 * double(result.failing_pixels) / pixels;
+    result.mean_abs_difference = total / (pixels * 3);
+    result.passed = result.failing_percent <= options.max_failing_percent;
+    return result;
+}
+
 }  // namespace
 
 std::string CompareResult::summary() const {
     if (!size_matches) return "image size differs from the reference";
-    char line[200];
+    char line[240];
     std::snprintf(line, sizeof line,
-                  "%s: %lld failing pixels (%.3f%%), max channel difference %d, mean %.3f",
+                  "%s: %lld failing pixels (%.3f%%), max channel difference %d, mean %.3f%s",
                   passed ? "match" : "MISMATCH", failing_pixels, failing_percent, max_difference,
-                  mean_abs_difference);
+                  mean_abs_difference,
+                  block > 0 ? (" (of the means over " + std::to_string(block) + "x" +
+                               std::to_string(block) + " blocks)")
+                                  .c_str()
+                            : "");
     return line;
 }
 
@@ -34,6 +99,10 @@ CompareResult compare_images(const Image8& actual, const Image8& reference,
     result.size_matches = true;
     const int w = actual.width, h = actual.height;
     result.heat_map = Image8{w, h, std::vector<std::uint8_t>(std::size_t(w) * h * 3, 0)};
+    if (options.block > 0) {
+        result.block = options.block;
+        return compare_block_means(actual, reference, options, std::move(result));
+    }
     double total = 0;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {

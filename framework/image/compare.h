@@ -16,6 +16,13 @@ struct CompareOptions {
     // Forgive anti-aliased edges: a pixel also passes when some reference pixel in its 3x3
     // neighbourhood is within tolerance.
     bool neighbourhood = false;
+    // Noise-aware comparison of Monte Carlo renders (stage 10): > 0 compares the mean linear
+    // colour of each `block` x `block` square (the last row and column of blocks may be
+    // smaller), re-encoded to 8-bit sRGB steps, instead of single pixels. Two correct renders
+    // with different random numbers differ per pixel but hardly in their block means; a biased
+    // one (light counted twice, a wrong pdf) shifts whole blocks. A failing block fails all its
+    // pixels; `neighbourhood` is ignored.
+    int block = 0;
 };
 
 struct CompareResult {
@@ -24,6 +31,7 @@ struct CompareResult {
     long long failing_pixels = 0;
     double failing_percent = 100;
     double mean_abs_difference = 0;  // per channel, in 8-bit steps
+    int block = 0;                   // the options' block: differences are of block means
     bool passed = false;
     Image8 heat_map;  // black where equal, brighter red the larger the difference, white if failing
 

@@ -15,6 +15,13 @@ AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& optio
     scene.bvh = Bvh{};
     if (scene.accelerator != Accelerator::Bvh) return report;
     report.requested = true;
+    if (!scene.moving_spheres.empty()) {  // its boxes would change with the shutter time
+        report.problem = "moving spheres (stage 10) cannot be in a BVH";
+        std::fprintf(stderr, "%s: %s; rendering without it\n", scene.source.c_str(),
+                     report.problem.c_str());
+        scene.accelerator = Accelerator::None;
+        return report;
+    }
     std::vector<BvhPrimitive> input = bvh_primitives(scene);
     report.primitives = input.size();
     const std::uint64_t stubs = stub_calls_total();

@@ -6,11 +6,13 @@
 #include "render/accelerate.h"
 #include "render/background.h"
 #include "render/camera_ray.h"
+#include "render/sampled.h"
 #include "render/texturing.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage03.h"
 #include "stage_api/stage04.h"
 #include "stage_api/stage05.h"
+#include "stage_api/stage10.h"
 
 namespace rt {
 namespace {
@@ -78,11 +80,127 @@ void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& m
     }
 }
 
-// A frame's own work: the nearest hit, direct light (with stage 04's shadows when the scene has
-// them), and the secondary rays (stage 05) when the material reflects or transmits.
-// `rays`: the camera ray's differentials (texture filter footprints), null for other rays.
+// A hit made ready for lighting: its surface point, material (as its maps colour it here) and
+// the normal it is lit with.
+struct PreparedHit {
+    SurfacePoint at;
+    const Material* material = nullptr;  // the scene's, or `textured`
+    Material textured;
+    Vec3 lighting_normal{0};
+    Vec3 to_viewer{0};
+};
+
+void prepare_hit(const Scene& scene, const Ray& ray, const Hit& hit, const RayDifferential* rays,
+                 PreparedHit& p) {
+    // A scene built in code may lack materials; an out-of-range index must not crash.
+    static const Material kDefaultMaterial;
+    const bool known = hit.material >= 0 && std::size_t(hit.material) < scene.materials.size();
+    const Material& scene_material =
+        known ? scene.materials[std::size_t(hit.material)] : kDefaultMaterial;
+    p.at = surface_point(scene, ray, hit);
+    p.to_viewer = -glm::normalize(ray.direction);
+    // Meshes with vertex normals are lit with the interpolated normal (smooth shading); ray
+    // origins and mirror directions keep the geometric one, which the offsets are built on.
+    p.lighting_normal = p.at.normal;
+    if (!scene.normals.empty()) {
+        std::size_t index = 0;
+        if (scene.primitive_kind(hit.primitive, index) == Scene::Kind::Triangle) {
+            const Vec3 smooth = shading_normal(scene, index, hit.uv);
+            if (smooth != Vec3(0)) p.lighting_normal = hit.front_face ? smooth : -smooth;
+        }
+    }
+    // Stage 07: the material as its maps colour it here, and the normal-mapped normal. Only
+    // textured scenes pay for the copy (and run stage 07 code).
+    p.material = &scene_material;
+    if (scene.features.textures || scene.features.normal_maps) {
+        p.textured = scene_material;
+        apply_textures(scene, hit, p.at, p.to_viewer, p.textured, p.lighting_normal, rays);
+        p.material = &p.textured;
+    }
+}
+
+Color sampled_light(const Scene& scene, const PreparedHit& p, SampleStream& stream, bool indirect);
+
+// The light a hit sends back along its ray, before reflected and refracted rays: direct light
+// (stage 03) with stage 04's shadows when the scene has them, and with a sampler (stage 10)
+// the area lights, ambient occlusion and, if `indirect`, one bounce of diffuse light, which
+// replace the ambient term as the scene says.
+Color local_light(const Scene& scene, const PreparedHit& p, TraceObserver* observer,
+                  SampleStream* stream, bool indirect) {
+    const Material* material = p.material;
+    Material without_ambient;
+    if (stream && (scene.features.ambient_occlusion || scene.features.indirect_diffuse)) {
+        without_ambient = *material;
+        without_ambient.ambient = Color(0);
+        material = &without_ambient;
+    }
+    Color local;
+    if (scene.features.shadows) {
+        // One scratch array a thread: no allocation per hit once it has grown.
+        thread_local std::vector<Color> visibility;
+        shadow_lights(scene, p.at, *material, p.lighting_normal, p.to_viewer, visibility, observer);
+        local = direct_light(scene, *material, p.at.point, p.lighting_normal, p.to_viewer,
+                             LightVisibility{visibility});
+    } else {
+        local = direct_light(scene, *material, p.at.point, p.lighting_normal, p.to_viewer);
+    }
+    if (stream) local += sampled_light(scene, p, *stream, indirect);
+    return local;
+}
+
+// Stage 10's bounce: what a ray leaving a surface brings back (the local light where it lands,
+// without a further bounce, or the background).
+class BounceRadiance : public IncomingRadiance {
+  public:
+    BounceRadiance(const Scene& scene, SampleStream& stream) : scene_(scene), stream_(stream) {}
+    Color operator()(const Ray& ray) const override {
+        Hit hit;
+        if (!nearest_hit(scene_, ray, Interval{0, kInfinity}, hit))
+            return background(scene_, ray.direction);
+        PreparedHit p;
+        prepare_hit(scene_, ray, hit, nullptr, p);
+        return local_light(scene_, p, nullptr, &stream_, false);
+    }
+
+  private:
+    const Scene& scene_;
+    SampleStream& stream_;
+};
+
+// Stage 10's sampled terms, each drawing its numbers from `stream` in this order: one 2D
+// sample per area light, then ambient occlusion, then the indirect bounce.
+Color sampled_light(const Scene& scene, const PreparedHit& p, SampleStream& stream, bool indirect) {
+    const Material& material = *p.material;
+    Color sum(0);
+    for (const AreaLight& light : scene.area_lights)
+        sum += area_light_estimate(scene, material, p.at, p.lighting_normal, p.to_viewer, light,
+                                   stream.next2());
+    if (scene.features.ambient_occlusion)
+        sum += material.ambient * scene.ambient_light *
+               float(ambient_occlusion(scene, p.at, p.lighting_normal,
+                                       scene.sampling.occlusion_distance, stream.next2()));
+    if (scene.features.indirect_diffuse && indirect)
+        sum += indirect_diffuse(p.at, p.lighting_normal, material, stream.next2(),
+                                BounceRadiance(scene, stream));
+    return sum;
+}
+
+// Stage 10's glossy reflection: the mirror ray turned by the material's fuzz; a direction into
+// the surface is absorbed (no ray).
+void make_glossy(const SurfacePoint& at, Real fuzz, SecondaryRay& reflected, SampleStream& stream) {
+    const Vec3 d = glossy_direction(glm::normalize(reflected.ray.direction), fuzz, stream.next2());
+    if (!(glm::dot(d, at.normal) > 0) || !all_finite(d)) {
+        reflected.valid = false;
+        return;
+    }
+    reflected.ray = Ray{offset_ray_origin(at.point, at.error, at.normal, d), d};
+}
+
+// A frame's own work: the nearest hit, its local light, and the secondary rays (stage 05) when
+// the material reflects or transmits. `rays`: the camera ray's differentials (texture filter
+// footprints), null for other rays. `stream`: the camera sample's numbers (stage 10), or null.
 void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
-                 const RayDifferential* rays = nullptr) {
+                 const RayDifferential* rays = nullptr, SampleStream* stream = nullptr) {
     Hit hit;
     if (!nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit)) {
         f.colour = background(scene, f.ray.direction);
@@ -90,50 +208,20 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
         if (observer) observer->miss(f.colour);
         return;
     }
-    // A scene built in code may lack materials; an out-of-range index must not crash.
-    static const Material kDefaultMaterial;
-    const bool known = hit.material >= 0 && std::size_t(hit.material) < scene.materials.size();
-    const Material& scene_material =
-        known ? scene.materials[std::size_t(hit.material)] : kDefaultMaterial;
-    SurfacePoint at = surface_point(scene, f.ray, hit);
-    const Vec3 to_viewer = -glm::normalize(f.ray.direction);
-    // Meshes with vertex normals are lit with the interpolated normal (smooth shading); ray
-    // origins and mirror directions keep the geometric one, which the offsets are built on.
-    Vec3 lighting_normal = at.normal;
-    if (!scene.normals.empty()) {
-        std::size_t index = 0;
-        if (scene.primitive_kind(hit.primitive, index) == Scene::Kind::Triangle) {
-            const Vec3 smooth = shading_normal(scene, index, hit.uv);
-            if (smooth != Vec3(0)) lighting_normal = hit.front_face ? smooth : -smooth;
-        }
-    }
-    // Stage 07: the material as its maps colour it here, and the normal-mapped normal. Only
-    // textured scenes pay for the copy (and run stage 07 code).
-    Material textured;
-    const bool has_maps = scene.features.textures || scene.features.normal_maps;
-    if (has_maps) {
-        textured = scene_material;
-        apply_textures(scene, hit, at, to_viewer, textured, lighting_normal, rays);
-    }
-    const Material& material = has_maps ? textured : scene_material;
-
-    Color local;
-    if (scene.features.shadows) {
-        // One scratch array a thread: no allocation per hit once it has grown.
-        thread_local std::vector<Color> visibility;
-        shadow_lights(scene, at, material, lighting_normal, to_viewer, visibility, observer);
-        local = direct_light(scene, material, at.point, lighting_normal, to_viewer,
-                             LightVisibility{visibility});
-    } else {
-        local = direct_light(scene, material, at.point, lighting_normal, to_viewer);
-    }
-    if (observer) observer->hit(hit, at, local);
+    thread_local PreparedHit p;  // its Material copy is not rebuilt per hit
+    prepare_hit(scene, f.ray, hit, rays, p);
+    const Material& material = *p.material;
+    const Color local = local_light(scene, p, observer, stream, true);
+    if (observer) observer->hit(hit, p.at, local);
     f.colour = local;
     f.recurse = f.depth < std::min(scene.max_depth, kMaxTraceDepth) &&
                 ((scene.features.reflection && nonzero(material.reflective)) ||
                  (scene.features.refraction && nonzero(material.transmissive)));
     f.next = 0;
-    if (f.recurse) f.branches = secondary_rays(f.ray, at, material, scene.fresnel);
+    if (!f.recurse) return;
+    f.branches = secondary_rays(f.ray, p.at, material, scene.fresnel);
+    if (stream && material.fuzz > 0 && f.branches.reflected.valid)
+        make_glossy(p.at, material.fuzz, f.branches.reflected, *stream);
 }
 
 // Builds the debugger's ray tree from what the loop reports.
@@ -182,13 +270,13 @@ class RayTreeRecorder : public TraceObserver {
 namespace {
 
 Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
-            TraceObserver* observer, const RayDifferential* rays) {
+            TraceObserver* observer, const RayDifferential* rays, SampleStream* stream = nullptr) {
     // Once per thread: constructing 65 frames per pixel would cost more than most pixels do.
     static thread_local Frame stack[kMaxTraceDepth + 1];
     int top = 0;
     stack[0].ray = ray, stack[0].depth = depth, stack[0].weight = weight;
     if (observer) observer->begin_ray(RayNode::Kind::Camera, depth, ray, Color(1), weight);
-    start_frame(scene, stack[0], observer, rays);
+    start_frame(scene, stack[0], observer, rays, stream);
     for (;;) {
         Frame& f = stack[top];
         while (f.recurse && f.next < 2 && !branch(f, f.next).valid) ++f.next;
@@ -201,7 +289,7 @@ Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
                 observer->begin_ray(
                     f.next == 0 ? RayNode::Kind::Reflection : RayNode::Kind::Refraction,
                     child.depth, s.ray, s.weight, child.weight);
-            start_frame(scene, child, observer);
+            start_frame(scene, child, observer, nullptr, stream);
             continue;
         }
         // This ray is complete: hand its colour to its parent, weighted, like a return would.
@@ -226,7 +314,20 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, co
     return trace_ray(scene, ray, depth, weight, &recorder);
 }
 
+Color trace_sample(const Scene& scene, const Ray& ray, SampleStream& stream,
+                   TraceObserver* observer) {
+    return trace(scene, ray, 0, Color(1), observer, nullptr, &stream);
+}
+
 Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
+    // Stage 10: the debugger shows the first sample's rays (with moving spheres, the blockers
+    // its shadow records name are looked up at time 0).
+    if (scene.features.sampled()) {
+        if (!tree) return shade_sampled_pixel(scene, x, y);
+        *tree = RayNode{};
+        RayTreeRecorder recorder(scene, *tree);
+        return sample_pixel(scene, x, y, 0, &recorder);
+    }
     const Ray ray =
         camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
     if (tree) *tree = RayNode{};

@@ -4,6 +4,8 @@
 //   shadows               stage 04 light_transmittance, only if scene.features.shadows
 //   reflection/refraction stage 05 secondary_rays, only while depth < scene.max_depth and the
 //                         material hit reflects or transmits
+//   sampled effects       stage 10 (area lights, glossy, ambient occlusion, indirect light,
+//                         lens, shutter), only if scene.features.sampled() (render/sampled.h)
 //
 // So a scene only runs the stages it needs, and a stage's tests pass with later stages stubbed.
 // Optionally records the ray tree of the pixel (the --debug-pixel debugger).
@@ -74,7 +76,15 @@ Color trace_ray(const Scene& scene, const Ray& ray, int depth = 0, RayNode* node
 Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
                 TraceObserver* observer);
 
-// The shaded colour of pixel (x, y) (one ray through its centre), linear RGB.
+class SampleStream;  // render/sampled.h
+
+// One camera sample's ray with stage 10's sampled terms, drawing from `stream`
+// (render/sampled.h; only for scenes with Features::sampled()).
+Color trace_sample(const Scene& scene, const Ray& ray, SampleStream& stream,
+                   TraceObserver* observer = nullptr);
+
+// The shaded colour of pixel (x, y), linear RGB: one ray through its centre, or for a scene
+// with stage 10 features the mean of its samples (render/sampled.h).
 Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree = nullptr);
 
 const char* to_string(RayNode::Kind kind);

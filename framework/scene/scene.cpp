@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace rt {
@@ -101,7 +102,17 @@ void Scene::update_features() {
     }
     f.shadows = shadows && !lights.empty();
     f.environment = environment.kind != EnvironmentKind::None;
+    f.antialiasing = sampling.samples_per_pixel > 1;
+    f.area_lights = !area_lights.empty();
+    f.depth_of_field = sampling.aperture > 0 && camera.projection == Projection::Perspective;
+    for (const MovingSphere& m : moving_spheres)
+        f.motion_blur |= m.velocity != Vec3(0) && sampling.shutter_close > sampling.shutter_open;
+    for (const Material& m : materials) f.glossy |= m.fuzz > 0 && nonzero(m.reflective);
+    f.ambient_occlusion = sampling.indirect == IndirectLight::Occlusion && f.ambient;
+    f.indirect_diffuse = sampling.indirect == IndirectLight::Diffuse;
     features = f;
+    static std::atomic<std::uint64_t> revisions{0};
+    revision = ++revisions;
 }
 
 std::string Features::describe() const {
@@ -130,6 +141,13 @@ std::string Features::describe() const {
         if (!kinds.empty()) s += kinds + ")";
     }
     if (environment) s += " | environment";
+    if (sampled()) {
+        s += " | sampled:";
+        add(antialiasing, "antialiasing"), add(area_lights, "area-lights");
+        add(depth_of_field, "depth-of-field"), add(motion_blur, "motion-blur");
+        add(glossy, "glossy"), add(ambient_occlusion, "ambient-occlusion");
+        add(indirect_diffuse, "indirect-diffuse");
+    }
     return s;
 }
 

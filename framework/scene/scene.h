@@ -57,6 +57,9 @@ struct Material {
     // Stage 07: textures multiply the colour they map (k_d and k_a by diffuse_map, k_s by
     // specular_map, k_e by emissive_map); normal_map bends the shading normal.
     TextureSlot diffuse_map, specular_map, emissive_map, normal_map;
+    // Stage 10: glossy reflection; 0 is a perfect mirror. The reflected direction is perturbed
+    // by fuzz times a random unit vector (docs/conventions.md#sampling).
+    float fuzz = 0;
 };
 
 enum class LightKind { Point, Directional };
@@ -67,6 +70,47 @@ struct Light {
     Vec3 direction{0, -1, 0};   // directional lights: unit direction the light travels
     Color intensity{1};         // I_L
     Vec3 attenuation{1, 0, 1};  // point lights: 1 / (c + l r + q r^2)
+};
+
+// Stage 10: lights with an area, sampled for soft shadows. They emit `radiance` (L_e, the same
+// in every direction of their lit side) and are not surfaces: rays that miss everything else
+// never see them (docs/conventions.md#sampling). A rectangle is corner + s edge_u + t edge_v,
+// s and t in [0, 1], lit on the side of normalize(cross(edge_u, edge_v)); a sphere is lit all
+// round.
+enum class AreaLightKind { Rectangle, Sphere };
+
+struct AreaLight {
+    AreaLightKind kind = AreaLightKind::Rectangle;
+    Vec3 corner{0}, edge_u{1, 0, 0}, edge_v{0, 0, 1};  // rectangles
+    Vec3 center{0};                                    // spheres
+    Real radius = 1;
+    Color radiance{1};
+};
+
+// Stage 10: a sphere whose centre moves while the shutter is open. It is Scene::spheres[sphere]
+// at time 0 (so every query, id and debug view sees it there) and is at
+// spheres[sphere].center + time * velocity at `time` (render/sampled.h moves it per sample).
+struct MovingSphere {
+    std::size_t sphere = 0;
+    Vec3 velocity{0};
+};
+
+enum class PixelFilter { Box, Tent };
+// How the ambient term k_a I_a is computed: as it is, scaled by Monte Carlo ambient occlusion,
+// or replaced by a one-bounce Monte Carlo estimate of diffuse indirect light (stage 10).
+enum class IndirectLight { Ambient, Occlusion, Diffuse };
+
+// Stage 10's settings (docs/scene-format.md#sampling). The defaults are the renderer of
+// stages 01-09: one ray through each pixel centre, a pinhole, no shutter interval.
+struct SamplingSettings {
+    int samples_per_pixel = 1;
+    std::uint64_t seed = 0;
+    PixelFilter filter = PixelFilter::Box;
+    Real aperture = 0;        // diameter of the thin lens; 0 is a pinhole
+    Real focus_distance = 1;  // from the eye along the view direction to the plane in focus
+    Real shutter_open = 0, shutter_close = 0;
+    IndirectLight indirect = IndirectLight::Ambient;
+    Real occlusion_distance = kInfinity;  // ambient occlusion: farther blockers do not count
 };
 
 // What a scene actually contains, so the renderer (and later the shader) computes only that.
@@ -88,6 +132,16 @@ struct Features {
     // checkerboards, marble (gradient noise).
     bool image_textures = false, checker_textures = false, noise_textures = false;
     bool environment = false;  // rays that miss look up an environment map (stage 08)
+    // Stage 10; any of them makes the renderer take several samples per pixel through stage 10
+    // code (render/sampled.h); without them that code is never called.
+    bool antialiasing = false;  // samples_per_pixel > 1
+    bool area_lights = false, depth_of_field = false, motion_blur = false, glossy = false;
+    bool ambient_occlusion = false, indirect_diffuse = false;
+
+    bool sampled() const {
+        return antialiasing || area_lights || depth_of_field || motion_blur || glossy ||
+               ambient_occlusion || indirect_diffuse;
+    }
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
 };
@@ -133,6 +187,10 @@ struct Scene {
     // struct the GPU receives is plain data.
     std::vector<std::string> material_names;
     std::vector<Light> lights;
+    // Stage 10: area lights, moving spheres and the sampling settings.
+    std::vector<AreaLight> area_lights;
+    std::vector<MovingSphere> moving_spheres;
+    SamplingSettings sampling;
     // Stage 07's texture table (scene/texture.h): textures referenced by material slots, the
     // images they read and all image texels in one array. texture_names parallels `textures`.
     std::vector<Texture> textures;
@@ -144,7 +202,10 @@ struct Scene {
     Environment environment;
 
     Features features;  // filled by update_features()
-    Bvh bvh;            // built by build_acceleration when accelerator == Bvh
+    // A new number each update_features(): tells the per-thread copies of a scene with moving
+    // spheres (render/sampled.cpp) that it changed.
+    std::uint64_t revision = 0;
+    Bvh bvh;  // built by build_acceleration when accelerator == Bvh
 
     // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding
     // a kind renumbers nothing (and a shader decodes an id with a shift and a mask). Ids of one

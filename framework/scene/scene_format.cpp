@@ -27,22 +27,27 @@ using Order = std::vector<std::string>;
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
 const Order kTopLevel{"camera",        "image",    "render",    "background", "environment",
                       "ambient_light", "textures", "materials", "surfaces",   "lights"};
-const Order kCamera{"projection", "eye", "look_at", "up", "fov", "view_height"};
+const Order kCamera{"projection",  "eye",      "look_at",        "up",     "fov",
+                    "view_height", "aperture", "focus_distance", "shutter"};
 const Order kImage{"width", "height"};
-const Order kRender{"mode", "max_depth", "shadows", "fresnel", "accelerator"};
-const Order kMaterial{"name",         "ambient",      "diffuse",      "specular", "emissive",
-                      "shininess",    "reflective",   "transmissive", "ior",      "diffuse_map",
-                      "specular_map", "emissive_map", "normal_map"};
+const Order kRender{"mode",        "max_depth",         "shadows", "fresnel",
+                    "accelerator", "samples_per_pixel", "seed",    "filter",
+                    "indirect",    "occlusion_distance"};
+const Order kMaterial{"name",        "ambient",      "diffuse",      "specular",  "emissive",
+                      "shininess",   "reflective",   "transmissive", "ior",       "fuzz",
+                      "diffuse_map", "specular_map", "emissive_map", "normal_map"};
 const Order kTexture{"name",   "image",  "checker", "checker_3d",
                      "marble", "filter", "wrap",    "colour_space"};
 const Order kTextureSlot{"texture", "scale", "offset"};
 const Order kProcedural{"a", "b", "scale"};
-const Order kSurface{"type",      "center", "radius", "point",     "normal",     "vertices",
-                     "min",       "max",    "tiles",  "file",      "procedural", "heightfield",
-                     "triangles", "seed",   "scale",  "translate", "material",   "materials"};
+const Order kSurface{"type",   "center",     "radius",      "velocity",  "point",
+                     "normal", "vertices",   "min",         "max",       "tiles",
+                     "file",   "procedural", "heightfield", "triangles", "seed",
+                     "scale",  "translate",  "material",    "materials"};
 const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
 const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
-const Order kLight{"type", "position", "direction", "intensity", "attenuation"};
+const Order kLight{"type",   "position", "direction", "intensity", "attenuation", "corner",
+                   "edge_u", "edge_v",   "center",    "radius",    "radiance"};
 const Order kNone{};
 
 // The keys of `object` in canonical order: those of `order` first, as listed, then any others

@@ -18,10 +18,10 @@ void SceneSections::read_materials(const json& root) {
 
 void SceneSections::read_material(const json& object, const std::string& pointer) {
     require_object(object, pointer, "{\"name\": \"red\", \"diffuse\": [0.8, 0.1, 0.1]}");
-    check_keys(
-        object, pointer, "a material",
-        {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
-         "transmissive", "ior", "diffuse_map", "specular_map", "emissive_map", "normal_map"});
+    check_keys(object, pointer, "a material",
+               {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
+                "transmissive", "ior", "fuzz", "diffuse_map", "specular_map", "emissive_map",
+                "normal_map"});
     Material m;
     std::string name;
     if (const json* v = member(object, "name")) {
@@ -57,6 +57,10 @@ void SceneSections::read_material(const json& object, const std::string& pointer
         m.ior = float(real_in(
             *v, JsonPositions::child(pointer, "ior"), [](double d) { return d > 0; }, "> 0",
             "glass is about 1.5, water 1.33"));
+    if (const json* v = member(object, "fuzz"))
+        m.fuzz = float(real_in(
+            *v, JsonPositions::child(pointer, "fuzz"), [](double d) { return d >= 0 && d <= 1; },
+            "between 0 and 1", "0 is a mirror, 0.3 brushed metal"));
     struct SlotField {
         const char* key;
         TextureSlot Material::*slot;

@@ -37,9 +37,12 @@ class SceneSections : public SceneReader {
     // scene_settings.cpp
     void read_image(const json& root);
     void read_render(const json& root);
+    void read_sampling(const json& render);
     void read_camera(const json& root);
+    void read_lens_and_shutter(const json& camera, Projection projection);
     void read_lights(const json& root);
     void read_light(const json& object, const std::string& pointer);
+    void read_area_light(const json& object, const std::string& pointer, AreaLightKind kind);
 
     // scene_environment.cpp
     void read_environment(const json& root);

@@ -13,6 +13,7 @@ namespace {
 constexpr double kMaxImageSide = 16384;
 constexpr double kMaxPixels = 64.0 * 1024 * 1024;
 constexpr double kMaxRecursionDepth = 64;
+constexpr double kMaxSamplesPerPixel = 65536;
 
 }  // namespace
 
@@ -47,7 +48,8 @@ void SceneSections::read_render(const json& root) {
     if (!render) return;
     require_object(*render, "/render", "{\"mode\": \"shaded\", \"max_depth\": 5}");
     check_keys(*render, "/render", "\"render\"",
-               {"mode", "max_depth", "shadows", "fresnel", "accelerator"});
+               {"mode", "max_depth", "shadows", "fresnel", "accelerator", "samples_per_pixel",
+                "seed", "filter", "indirect", "occlusion_distance"});
     if (const json* v = member(*render, "mode")) {
         static const std::vector<std::string> modes{"directions", "normals", "depth",
                                                     "primitive",  "shaded",  "bvh_visits"};
@@ -72,11 +74,46 @@ void SceneSections::read_render(const json& root) {
         scene_.accelerator =
             choice(*v, "/render/accelerator", names) == 0 ? Accelerator::None : Accelerator::Bvh;
     }
+    read_sampling(*render);
     if (scene_.mode == RenderMode::BvhVisits && scene_.accelerator != Accelerator::Bvh)
         fail_value(
             "/render/mode",
             "mode \"bvh_visits\" draws the BVH, but the scene has no \"accelerator\": \"bvh\"",
             "add \"accelerator\": \"bvh\" to \"render\"");
+}
+
+// Stage 10's keys of "render" (docs/scene-format.md#sampling).
+void SceneSections::read_sampling(const json& render) {
+    SamplingSettings& s = scene_.sampling;
+    if (const json* v = member(render, "samples_per_pixel")) {
+        const double d = whole_number(*v, "/render/samples_per_pixel");
+        if (d < 1 || d > kMaxSamplesPerPixel)
+            fail_value("/render/samples_per_pixel",
+                       "\"samples_per_pixel\" must be between 1 and 65536, got " +
+                           source_text("/render/samples_per_pixel"),
+                       "16 to 256 is usual");
+        s.samples_per_pixel = int(d);
+    }
+    if (const json* v = member(render, "seed")) {
+        const double d = whole_number(*v, "/render/seed");
+        if (d < 0 || d > 9007199254740992.0)
+            fail_value("/render/seed",
+                       "\"seed\" must be between 0 and 2^53, got " + source_text("/render/seed"),
+                       "any whole number picks another noise pattern");
+        s.seed = std::uint64_t(d);
+    }
+    if (const json* v = member(render, "filter"))
+        s.filter = choice(*v, "/render/filter", {"box", "tent"}) == 0 ? PixelFilter::Box
+                                                                      : PixelFilter::Tent;
+    if (const json* v = member(render, "indirect")) {
+        static const IndirectLight values[] = {IndirectLight::Ambient, IndirectLight::Occlusion,
+                                               IndirectLight::Diffuse};
+        s.indirect = values[choice(*v, "/render/indirect", {"ambient", "occlusion", "diffuse"})];
+    }
+    if (const json* v = member(render, "occlusion_distance"))
+        s.occlusion_distance = real_in(
+            *v, "/render/occlusion_distance", [](double d) { return d > 0; }, "> 0",
+            "blockers farther than this do not occlude");
 }
 
 void SceneSections::read_camera(const json& root) {
@@ -88,7 +125,8 @@ void SceneSections::read_camera(const json& root) {
     if (!camera) camera = &empty;
     require_object(*camera, "/camera", "{\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]}");
     check_keys(*camera, "/camera", "\"camera\"",
-               {"projection", "eye", "look_at", "up", "fov", "view_height"});
+               {"projection", "eye", "look_at", "up", "fov", "view_height", "aperture",
+                "focus_distance", "shutter"});
     if (const json* v = member(*camera, "projection"))
         projection = choice(*v, "/camera/projection", {"perspective", "orthographic"}) == 0
                          ? Projection::Perspective
@@ -104,6 +142,8 @@ void SceneSections::read_camera(const json& root) {
         view_height = real_in(
             *v, "/camera/view_height", [](double d) { return d > 0; }, "> 0",
             "give the height of the visible rectangle in world units");
+
+    read_lens_and_shutter(*camera, projection);
 
     // The frame is only defined for a real viewing direction and an up that is not along it.
     auto where = [&](const char* key) {
@@ -128,6 +168,33 @@ void SceneSections::read_camera(const json& root) {
                    "use smaller camera coordinates");
 }
 
+// Stage 10: the thin lens and the shutter interval of "camera".
+void SceneSections::read_lens_and_shutter(const json& camera, Projection projection) {
+    SamplingSettings& s = scene_.sampling;
+    if (const json* v = member(camera, "aperture")) {
+        s.aperture = real_in(
+            *v, "/camera/aperture", [](double d) { return d >= 0; }, ">= 0",
+            "the lens diameter in world units; 0 is a pinhole");
+        if (s.aperture > 0 && projection != Projection::Perspective)
+            fail_value("/camera/aperture", "an orthographic camera has no lens",
+                       "drop \"aperture\" or use \"projection\": \"perspective\"");
+    }
+    if (const json* v = member(camera, "focus_distance"))
+        s.focus_distance = real_in(
+            *v, "/camera/focus_distance", [](double d) { return d > 0; }, "> 0",
+            "the distance from the eye to the plane in focus");
+    if (const json* v = member(camera, "shutter")) {
+        require_array_of(*v, "/camera/shutter", 2, "numbers", "numbers",
+                         "write it as [open, close], e.g. [0, 1]");
+        const Real open = real((*v)[0], JsonPositions::child("/camera/shutter", std::size_t(0)));
+        const Real close = real((*v)[1], JsonPositions::child("/camera/shutter", std::size_t(1)));
+        if (!(open <= close))
+            fail_value("/camera/shutter", "the shutter closes before it opens",
+                       "give [open, close] with open <= close, e.g. [0, 1]");
+        s.shutter_open = open, s.shutter_close = close;
+    }
+}
+
 void SceneSections::read_lights(const json& root) {
     const json* list = member(root, "lights");
     if (!list) return;
@@ -137,12 +204,18 @@ void SceneSections::read_lights(const json& root) {
 }
 
 void SceneSections::read_light(const json& object, const std::string& pointer) {
-    static const std::vector<std::string> types{"point", "directional"};
+    static const std::vector<std::string> types{"point", "directional", "rectangle", "sphere"};
     require_object(object, pointer, "{\"type\": \"point\", \"position\": [0, 5, 0]}");
     const json& type_value = required(object, pointer, "type", "a light", list_of(types));
     Light light;
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
-    if (choice(type_value, at("type"), types) == 0) {
+    const std::size_t type = choice(type_value, at("type"), types);
+    if (type >= 2) {
+        read_area_light(object, pointer,
+                        type == 2 ? AreaLightKind::Rectangle : AreaLightKind::Sphere);
+        return;
+    }
+    if (type == 0) {
         check_keys(object, pointer, "a point light",
                    {"type", "position", "intensity", "attenuation"});
         light.kind = LightKind::Point;
@@ -164,6 +237,39 @@ void SceneSections::read_light(const json& object, const std::string& pointer) {
     }
     if (const json* v = member(object, "intensity")) light.intensity = color(*v, at("intensity"));
     scene_.lights.push_back(light);
+}
+
+// Stage 10's area lights: a rectangle or a sphere of constant radiance.
+void SceneSections::read_area_light(const json& object, const std::string& pointer,
+                                    AreaLightKind kind) {
+    auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    AreaLight light;
+    light.kind = kind;
+    if (kind == AreaLightKind::Rectangle) {
+        check_keys(object, pointer, "a rectangle light",
+                   {"type", "corner", "edge_u", "edge_v", "radiance"});
+        const char* what = "a rectangle light";
+        light.corner = vec3(required(object, pointer, "corner", what, "[x, y, z]"), at("corner"));
+        light.edge_u = vec3(required(object, pointer, "edge_u", what, "[1, 0, 0]"), at("edge_u"));
+        light.edge_v = vec3(required(object, pointer, "edge_v", what, "[0, 0, 1]"), at("edge_v"));
+        const glm::dvec3 u(light.edge_u), v(light.edge_v);
+        const double lengths = glm::length(u) * glm::length(v);
+        if (!(lengths > 0) || !std::isfinite(glm::length(glm::cross(light.edge_u, light.edge_v))))
+            fail_value(at("edge_v"), "the rectangle has no area (an edge is zero)",
+                       "give two non-zero edges");
+        if (std::abs(glm::dot(u, v)) > 1e-6 * lengths)
+            fail_value(at("edge_v"), "\"edge_u\" and \"edge_v\" are not perpendicular",
+                       "a rectangle light needs perpendicular edges");
+    } else {
+        check_keys(object, pointer, "a sphere light", {"type", "center", "radius", "radiance"});
+        light.center =
+            vec3(required(object, pointer, "center", "a sphere light", "[x, y, z]"), at("center"));
+        light.radius = real_in(
+            required(object, pointer, "radius", "a sphere light", "0.5"), at("radius"),
+            [](double d) { return d > 0; }, "> 0", "give the light a positive radius");
+    }
+    if (const json* v = member(object, "radiance")) light.radiance = color(*v, at("radiance"));
+    scene_.area_lights.push_back(light);
 }
 
 }  // namespace rt::scene_internal

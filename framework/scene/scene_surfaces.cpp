@@ -32,7 +32,9 @@ void SceneSections::read_surface(const json& s, const std::string& pointer) {
         void (SceneSections::*read)(const json& s, const std::string& pointer);
     };
     static const Kind kinds[] = {
-        {"sphere", {"type", "center", "radius", "material"}, &SceneSections::read_sphere},
+        {"sphere",
+         {"type", "center", "radius", "velocity", "material"},
+         &SceneSections::read_sphere},
         {"plane", {"type", "point", "normal", "material"}, &SceneSections::read_plane},
         {"triangle", {"type", "vertices", "material"}, &SceneSections::read_triangle},
         {"box", {"type", "min", "max", "material"}, &SceneSections::read_box},
@@ -64,6 +66,14 @@ void SceneSections::read_sphere(const json& s, const std::string& pointer) {
         required(s, pointer, "radius", "a sphere", "1"), at("radius"),
         [](double d) { return d > 0; }, "> 0", "give the sphere a positive radius");
     sphere.material = material_of(s, pointer);
+    if (const json* v = member(s, "velocity")) {  // stage 10: motion blur
+        if (scene_.accelerator == Accelerator::Bvh)
+            fail_value(at("velocity"),
+                       "a moving sphere cannot be in a BVH (its box would change with time)",
+                       "use \"accelerator\": \"none\" or drop \"velocity\"");
+        scene_.moving_spheres.push_back(
+            MovingSphere{scene_.spheres.size(), vec3(*v, at("velocity"))});
+    }
     scene_.spheres.push_back(sphere);
 }
 

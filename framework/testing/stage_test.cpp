@@ -24,7 +24,8 @@ std::filesystem::path source_dir() {
     return rt::source_dir();
 }
 
-void expect_matches_reference(const std::string& stage, const std::string& scene_name) {
+void expect_matches_reference(const std::string& stage, const std::string& scene_name,
+                              const CompareOptions& options) {
     const auto scene_file = source_dir() / "stages" / stage / "scenes" / (scene_name + ".json");
     const auto reference_file = source_dir() / "reference_images" / stage / (scene_name + ".png");
     Scene scene;
@@ -43,7 +44,7 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
         ADD_FAILURE() << e.what();
         return;
     }
-    const CompareResult result = compare_images(actual, reference);
+    const CompareResult result = compare_images(actual, reference, options);
     if (result.passed) return;
     const auto out_dir = std::filesystem::path(RT_TEST_OUTPUT_DIR) / stage;
     std::filesystem::create_directories(out_dir);

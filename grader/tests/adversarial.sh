@@ -53,7 +53,7 @@ case $case in
     [ -s "$root/results/report.html" ] || { echo "FAIL: no report.html next to results.json"; exit 1; }
     # Full marks in stages 01-05 (a stage in progress may not have them yet).
     checks=()
-    for n in ${all_stages//,/ }; do checks+=(--full-marks-tag "stage0$n"); done
+    for n in ${all_stages//,/ }; do checks+=(--full-marks-tag "$(stage_tag "$n")"); done
     "$bin/results_check" "$root/results/results.json" "${checks[@]}" --not-contains "not run" \
       --not-contains "is missing from the submission" || exit 1
     exit 0 ;;
@@ -102,12 +102,12 @@ case $case in
   reference)  # the instructor's own files: full marks in every stage
     solution_all; stages=$all_stages; limit=()
     checks=(--full-marks --not-contains "not run")
-    for n in ${all_stages//,/ }; do checks+=(--has-tag "stage0$n"); done ;;
+    for n in ${all_stages//,/ }; do checks+=(--has-tag "$(stage_tag "$n")"); done ;;
   starter)  # the released starter tree: 0 points, and the report names every stub's section
     "$bin/rt-grade" release --source "$src" --out "$work/starter" > /dev/null || exit 1
     sub=$work/starter; stages=$all_stages; limit=()
     checks=(--score-max 0)
-    for n in ${all_stages//,/ }; do checks+=(--has-tag "stage0$n"); done
+    for n in ${all_stages//,/ }; do checks+=(--has-tag "$(stage_tag "$n")"); done
     while read -r section; do checks+=(--contains "Read the handout: $section"); done < <(sections)
     [ ${#checks[@]} -gt 12 ] || { echo "FAIL: no stub section found"; exit 1; } ;;
   compile_error)

@@ -6,12 +6,16 @@ trap 'rm -rf "$work"' EXIT
 sub=$work/submission
 s1=stages/01-camera-rays s2=stages/02-intersections s3=stages/03-blinn-phong
 s4=stages/04-shadows s5=stages/05-recursion s6=stages/06-bvh s7=stages/07-textures
-s8=stages/08-environment
+s8=stages/08-environment s9=stages/09-gpu s10=stages/10-sampling
 mkdir -p "$sub/$s1" "$sub/$s2"
-# Every stage that grading covers here, its student file, and the stubs' handout sections.
-all_stages=1,2,3,4,5,6,7,8
+# Every stage that grading covers here, its student files, and the stubs' handout sections
+# (stage 09's are GLSL, graded on the GPU).
+all_stages=1,2,3,4,5,6,7,8,9,10
 files=("$s1/camera_rays.cpp" "$s2/intersections.cpp" "$s3/blinn_phong.cpp" "$s4/shadows.cpp"
-       "$s5/recursion.cpp" "$s6/bvh.cpp" "$s7/textures.cpp" "$s8/environment.cpp")
+       "$s5/recursion.cpp" "$s6/bvh.cpp" "$s7/textures.cpp" "$s8/environment.cpp"
+       "$s9/camera.glsl" "$s9/intersect.glsl" "$s9/bvh.glsl" "$s9/shade.glsl" "$s9/recursion.glsl"
+       "$s9/textures.glsl" "$s9/environment.glsl" "$s10/sampling.cpp" "$s10/lights.cpp")
+stage_tag() { printf 'stage%02d' "$1"; }  # results.json's tag of stage N
 sections() { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/' | sort -u; }
 
 # The starter (stub) version of a student file: what `rt-grade release` writes.

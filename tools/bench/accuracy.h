@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/sampling_error.h"
 #include "bench/texture_filters.h"
 
 namespace rt::bench {
@@ -21,6 +22,7 @@ struct AccuracyConfig {
     bool self_intersection = true;
     bool rendering = true;
     bool textures = true;    // the texture-filter rows (needs the OpenImageIO module for all)
+    bool sampling = true;    // stage 10's rows (rt-bench fills them: they need the renderer)
     int render_divisor = 2;  // stage scenes are rendered at 1/divisor of their size
     std::function<void(const std::string&)> progress;  // one line per finished part
 };
@@ -68,6 +70,7 @@ struct AccuracyResults {
     int render_width_sum = 0, render_height_sum = 0;
     std::vector<TexturePoint> texture;
     std::string texture_note;
+    SamplingSeries sampling;  // filled by rt-bench's main, not run_accuracy (see sampling_error.h)
     double seconds = 0;
 };
 

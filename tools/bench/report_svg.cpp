@@ -127,17 +127,21 @@ std::string svg_plot(const std::string& title, const std::string& xlabel, const 
     for (const auto& [g, path] : lines)
         s << "<polyline points=\"" << path << "\" fill=\"none\" stroke=\"#888\"/>\n";
     // Points carry numbers; the names are in a legend in the top right corner (close points would
-    // otherwise write their names over each other).
+    // otherwise write their names over each other). Unlabelled points (the later points of a
+    // labelled series) get neither.
+    int legend = 0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const PlotPoint& p = pts[i];
         s << "<circle cx=\"" << fmt("%.1f", X(p.x)) << "\" cy=\"" << fmt("%.1f", Y(p.y))
           << "\" r=\"4\" fill=\"" << p.colour << "\"/>\n";
+        if (p.label.empty()) continue;
+        ++legend;
         s << "<text x=\"" << fmt("%.1f", X(p.x) + 5) << "\" y=\"" << fmt("%.1f", Y(p.y) - 5)
-          << "\" font-size=\"10\">" << i + 1 << "</text>\n";
-        const double lx = W - R - 175, ly = T + 14 + 13 * double(i);
+          << "\" font-size=\"10\">" << legend << "</text>\n";
+        const double lx = W - R - 175, ly = T + 14 + 13 * double(legend - 1);
         s << "<circle cx=\"" << lx << "\" cy=\"" << fmt("%.1f", ly - 4) << "\" r=\"4\" fill=\""
           << p.colour << "\"/>\n<text x=\"" << lx + 8 << "\" y=\"" << fmt("%.1f", ly) << "\">"
-          << i + 1 << "  " << p.label << "</text>\n";
+          << legend << "  " << p.label << "</text>\n";
     }
     s << "</svg>\n";
     return s.str();
@@ -191,6 +195,27 @@ void write_svgs(const AccuracyResults& r, const std::string& dir) {
                  "wrong decisions, % of rays", family_points(r, "sphere"), kFloor,
                  "wrong = false miss + false hit over all sphere scenarios; 0 drawn at 0.001"));
     if (!r.render.empty()) put("render.svg", render_svg(r));
+    if (!r.sampling.points.empty()) {
+        static const char* const colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c",
+                                              "#d62728", "#9467bd", "#8c564b"};
+        std::vector<PlotPoint> pts;
+        std::vector<std::string> scenes;
+        double top = 0;
+        for (const SamplingPoint& p : r.sampling.points) {
+            if (scenes.empty() || scenes.back() != p.scene) scenes.push_back(p.scene);
+            pts.push_back({p.spp == 1 ? p.scene : "", double(p.spp), p.rmse, p.scene,
+                           colours[(scenes.size() - 1) % 6]});
+            top = std::max(top, p.rmse);
+        }
+        // The 1/sqrt(N) line from the largest error at 1 sample.
+        for (int spp : {1, 256})
+            pts.push_back({spp == 256 ? "1/sqrt(N)" : "", double(spp), top / std::sqrt(double(spp)),
+                           "slope", "#000000"});
+        put("sampling.svg",
+            svg_plot("Stage 10: error against samples per pixel", "samples per pixel",
+                     "RMSE vs 1024 spp (8-bit units)", pts, 1e-3,
+                     "one line per scene; black: slope -1/2 (time grows as the samples)"));
+    }
     if (!r.texture.empty()) {
         std::vector<PlotPoint> pts;
         for (const TexturePoint& p : r.texture)

@@ -36,7 +36,12 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "[%6.1f s] %s\n", s, what.c_str());
     };
-    const rt::bench::AccuracyResults res = rt::bench::run_accuracy(cfg);
+    rt::bench::AccuracyResults res = rt::bench::run_accuracy(cfg);
+    if (cfg.sampling) {
+        res.sampling = rt::bench::measure_sampling_error(48, 36, 1024, cfg.progress);
+        res.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     std::string link_dir = svg_dir;
     if (!markdown.empty() && !svg_dir.empty()) {
         const auto md_dir = std::filesystem::absolute(markdown).parent_path();
@@ -131,6 +136,8 @@ int main(int argc, char** argv) {
     acc->add_option("--csv", csv, "write every table row as CSV");
     acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
     acc->add_flag("!--no-textures", cfg.textures, "skip the texture-filter section");
+    acc->add_flag("!--no-sampling", cfg.sampling,
+                  "skip stage 10's error against samples per pixel");
     acc->add_flag("!--no-timing", cfg.timing, "classification only");
 
 #ifdef RT_BENCH_HAVE_VIEW

@@ -1,0 +1,76 @@
+#include "render/sampled.h"
+
+#include <limits>
+
+#include "render/camera_ray.h"
+#include "render/shade.h"
+#include "stage_api/stage10.h"
+
+namespace rt {
+namespace {
+
+// SplitMix64's finaliser: spreads neighbouring pixel indices over the generator's state.
+std::uint64_t mix(std::uint64_t z) {
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+// As many random bits as Real holds exactly (24 for float, 32 for double), so next() < 1.
+constexpr int kBits =
+    std::numeric_limits<Real>::digits < 32 ? std::numeric_limits<Real>::digits : 32;
+
+}  // namespace
+
+SampleStream::SampleStream(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample)
+    : rng_(mix(seed ^ mix(pixel)), sample) {}
+
+Real SampleStream::next() {
+    return Real(rng_() >> (32 - kBits)) * (Real(1) / Real(std::uint64_t(1) << kBits));
+}
+
+const Scene& scene_at_time(const Scene& scene, Real time) {
+    if (scene.moving_spheres.empty()) return scene;
+    // One copy per thread, made again when the thread meets another scene (or a changed one).
+    thread_local Scene copy;
+    thread_local const Scene* of = nullptr;
+    thread_local std::uint64_t revision = 0;
+    if (of != &scene || revision != scene.revision) {
+        copy = scene;
+        of = &scene, revision = scene.revision;
+    }
+    for (const MovingSphere& m : scene.moving_spheres)
+        copy.spheres[m.sphere].center =
+            sphere_center_at(scene.spheres[m.sphere].center, m.velocity, time);
+    return copy;
+}
+
+Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* observer) {
+    const SamplingSettings& settings = scene.sampling;
+    SampleStream stream(settings.seed, std::uint64_t(y) * std::uint64_t(scene.image.width) + x,
+                        std::uint64_t(sample));
+    const Vec2 jitter = stratified_sample(sample, settings.samples_per_pixel, stream.next2());
+    const Vec2 offset = settings.filter == PixelFilter::Tent ? tent_filter_offset(jitter)
+                                                             : box_filter_offset(jitter);
+    Ray ray = camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)) + offset,
+                         scene.image);
+    if (scene.features.depth_of_field)
+        ray = thin_lens_ray(scene.camera, ray, settings.aperture, settings.focus_distance,
+                            stream.next2());
+    const Scene& now =
+        scene.features.motion_blur
+            ? scene_at_time(
+                  scene, shutter_time(settings.shutter_open, settings.shutter_close, stream.next()))
+            : scene;
+    return trace_sample(now, ray, stream, observer);
+}
+
+Color shade_sampled_pixel(const Scene& scene, int x, int y) {
+    const int count = scene.sampling.samples_per_pixel;
+    Color sum(0);
+    for (int s = 0; s < count; ++s) sum += sample_pixel(scene, x, y, s);
+    return sum / float(count);
+}
+
+}  // namespace rt

@@ -1,0 +1,140 @@
+// Stage 10's framework tests (no student code): the scene syntax, Features, the one-line errors,
+// the generator's determinism, and that no scene of stages 01-09 takes the sampled path.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "core/source_dir.h"
+#include "image/compare.h"
+#include "render/sampled.h"
+#include "scene/scene_loader.h"
+
+namespace rt {
+namespace {
+
+Scene scene_of(const std::string& body) {
+    return parse_scene("{" + body + "}", "s.json", ".");
+}
+
+std::string error_of(const std::string& body) {
+    try {
+        scene_of(body);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(SamplingScenes, KeysReachTheScene) {
+    const Scene s = scene_of(R"(
+  "camera": {"eye": [0, 0, 5], "aperture": 0.2, "focus_distance": 4.5, "shutter": [0, 0.5]},
+  "render": {"mode": "shaded", "samples_per_pixel": 16, "seed": 7, "filter": "tent", "indirect": "occlusion", "occlusion_distance": 2},
+  "ambient_light": [0.2, 0.2, 0.2],
+  "materials": [{"ambient": [1, 1, 1], "reflective": [0.5, 0.5, 0.5], "fuzz": 0.3}],
+  "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "velocity": [1, 0, 0]}],
+  "lights": [{"type": "rectangle", "corner": [0, 2, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 1], "radiance": [2, 2, 2]},
+             {"type": "sphere", "center": [0, 3, 0], "radius": 0.5}])");
+    EXPECT_EQ(s.sampling.samples_per_pixel, 16);
+    EXPECT_EQ(s.sampling.seed, 7u);
+    EXPECT_EQ(s.sampling.filter, PixelFilter::Tent);
+    EXPECT_EQ(s.sampling.indirect, IndirectLight::Occlusion);
+    EXPECT_FLOAT_EQ(s.sampling.occlusion_distance, 2);
+    EXPECT_FLOAT_EQ(s.sampling.aperture, 0.2f);
+    EXPECT_FLOAT_EQ(s.sampling.focus_distance, 4.5f);
+    EXPECT_FLOAT_EQ(s.sampling.shutter_close, 0.5f);
+    ASSERT_EQ(s.area_lights.size(), 2u);
+    EXPECT_EQ(s.area_lights[1].kind, AreaLightKind::Sphere);
+    EXPECT_EQ(s.lights.size(), 0u) << "area lights are not point lights";
+    ASSERT_EQ(s.moving_spheres.size(), 1u);
+    EXPECT_EQ(s.spheres.size(), 1u) << "a moving sphere is a sphere at time 0";
+    EXPECT_FLOAT_EQ(s.materials[0].fuzz, 0.3f);
+    const Features& f = s.features;
+    EXPECT_TRUE(f.antialiasing && f.area_lights && f.depth_of_field && f.motion_blur && f.glossy &&
+                f.ambient_occlusion && !f.indirect_diffuse);
+    EXPECT_NE(f.describe().find("sampled: antialiasing area-lights"), std::string::npos)
+        << f.describe();
+}
+
+TEST(SamplingScenes, BadInputIsOneLineNamingPlaceAndFix) {
+    const std::pair<const char*, const char*> cases[] = {
+        {R"("render": {"samples_per_pixel": 0})",
+         "s.json:1:34: error: \"samples_per_pixel\" must be between 1 and 65536, got 0"},
+        {R"("render": {"filter": "gauss"})", "s.json:1:23: error:"},
+        {R"("camera": {"shutter": [1, 0]})", "the shutter closes before it opens"},
+        {R"("camera": {"projection": "orthographic", "aperture": 1})",
+         "an orthographic camera has no lens"},
+        {R"("materials": [{"fuzz": 2}])", "\"fuzz\" must be between 0 and 1"},
+        {R"("lights": [{"type": "rectangle", "corner": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [1, 0, 1]}])",
+         "are not perpendicular; a rectangle light needs perpendicular edges"},
+        {R"("lights": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}])", "must be > 0"},
+        {R"("render": {"accelerator": "bvh"}, "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "velocity": [1, 0, 0]}])",
+         "a moving sphere cannot be in a BVH"},
+    };
+    for (auto [body, expected] : cases) {
+        const std::string message = error_of(body);
+        EXPECT_NE(message.find(expected), std::string::npos) << body << "\n  gave: " << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+        EXPECT_NE(message.find("; "), std::string::npos) << "no fix named: " << message;
+    }
+}
+
+TEST(SamplingScenes, NoEarlierStageSceneTakesTheSampledPath) {
+    int scenes = 0;
+    for (const auto& stage : std::filesystem::directory_iterator(source_dir() / "stages")) {
+        if (stage.path().filename().string() >= "10") continue;
+        if (!std::filesystem::is_directory(stage.path() / "scenes")) continue;
+        for (const auto& file : std::filesystem::directory_iterator(stage.path() / "scenes")) {
+            if (file.path().extension() != ".json") continue;
+            const Scene s = load_scene(file.path());
+            EXPECT_FALSE(s.features.sampled()) << file.path();
+            ++scenes;
+        }
+    }
+    EXPECT_GT(scenes, 30);
+}
+
+TEST(SampleStreams, DependOnlyOnSeedPixelAndSample) {
+    std::set<float> seen;
+    for (std::uint64_t pixel : {0u, 1u}) {
+        for (std::uint64_t sample : {0u, 1u}) {
+            SampleStream a(9, pixel, sample), b(9, pixel, sample);
+            for (int i = 0; i < 100; ++i) {
+                const Real x = a.next();
+                ASSERT_EQ(x, b.next());
+                ASSERT_TRUE(x >= 0 && x < 1);
+                if (i == 0) seen.insert(float(x));
+            }
+        }
+    }
+    EXPECT_EQ(seen.size(), 4u) << "neighbouring pixels and samples start alike";
+    SampleStream other_seed(10, 0, 0), first(9, 0, 0);
+    EXPECT_NE(other_seed.next(), first.next());
+}
+
+// The block-mean comparison of Monte Carlo images (CompareOptions::block): pixel noise around
+// the right mean passes, a block whose mean moved fails all its pixels.
+TEST(BlockMeans, ForgiveNoiseAndCatchShiftedMeans) {
+    Image8 reference{16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 128)};
+    Image8 noisy = reference;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) noisy.at(x, y)[c] = (x + y) % 2 ? 118 : 138;
+    CompareOptions pixels;
+    EXPECT_FALSE(compare_images(noisy, reference, pixels).passed) << "per pixel, noise fails";
+    CompareOptions blocks;
+    blocks.block = 8;
+    const CompareResult quiet = compare_images(noisy, reference, blocks);
+    EXPECT_TRUE(quiet.passed) << quiet.summary();
+    EXPECT_NE(quiet.summary().find("8x8 blocks"), std::string::npos) << quiet.summary();
+    Image8 shifted = noisy;
+    for (int y = 8; y < 16; ++y)
+        for (int x = 0; x < 8; ++x) shifted.at(x, y)[1] += 20;
+    const CompareResult moved = compare_images(shifted, reference, blocks);
+    EXPECT_FALSE(moved.passed);
+    EXPECT_EQ(moved.failing_pixels, 64) << "exactly the moved block fails";
+    EXPECT_GE(moved.max_difference, 15);
+}
+
+}  // namespace
+}  // namespace rt

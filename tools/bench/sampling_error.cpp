@@ -1,0 +1,81 @@
+// Stage 10's speed against error: see sampling_error.h. Uses the renderer as `rt` does (the
+// reference solution's stage 10 code), one scene at a time, all cores.
+#include "bench/sampling_error.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/source_dir.h"
+#include "image/compare.h"
+#include "render/accelerate.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace rt::bench {
+namespace {
+
+const char* const kScenes[] = {"soft_shadows", "depth_of_field",    "motion_blur",
+                               "glossy",       "ambient_occlusion", "indirect"};
+
+Image8 render_with(Scene& scene, int spp, std::uint64_t seed, double* ms) {
+    scene.sampling.samples_per_pixel = spp;
+    scene.sampling.seed = seed;
+    scene.update_features();
+    const auto start = std::chrono::steady_clock::now();
+    Image image = render(scene, RenderMode::Shaded);
+    if (ms)
+        *ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count();
+    return to_image8(image);
+}
+
+double rmse(const Image8& a, const Image8& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.data.size(); ++i) {
+        const double d = double(a.data[i]) - double(b.data[i]);
+        sum += d * d;
+    }
+    return std::sqrt(sum / double(a.data.size()));
+}
+
+}  // namespace
+
+double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& scene) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const SamplingPoint& p : points) {
+        if (p.scene != scene || !(p.rmse > 0)) continue;
+        const double x = std::log(double(p.spp)), y = std::log(p.rmse);
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    return n < 2 ? 0 : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
+                                      const std::function<void(const std::string&)>& progress) {
+    SamplingSeries series;
+    series.width = width, series.height = height, series.reference_spp = reference_spp;
+    series.threads = resolve_thread_count(0);
+    CompareOptions grader;  // stage 10's grading.json
+    grader.block = 8, grader.tolerance = 6;
+    for (const char* name : kScenes) {
+        Scene scene = load_scene(source_dir() / "stages" / "10-sampling" / "scenes" /
+                                 (std::string(name) + ".json"));
+        scene.image = ImageSize{width, height};
+        build_acceleration(scene);
+        const std::uint64_t seed = scene.sampling.seed;
+        // Another seed than the series', so the reference's noise is independent of theirs.
+        const Image8 reference = render_with(scene, reference_spp, seed + 1000, nullptr);
+        for (int spp = 1; spp <= 256; spp *= 4) {
+            SamplingPoint p;
+            p.scene = name, p.spp = spp;
+            const Image8 image = render_with(scene, spp, seed, &p.ms);
+            p.rmse = rmse(image, reference);
+            p.block_percent = compare_images(image, reference, grader).failing_percent;
+            series.points.push_back(p);
+        }
+        if (progress) progress(std::string("sampling: ") + name);
+    }
+    return series;
+}
+
+}  // namespace rt::bench
