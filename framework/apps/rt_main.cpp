@@ -66,9 +66,9 @@ struct RenderArgs {
     int max_depth = -1;          // >= 0: overrides the scene's
     int spp = 0;                 // > 0: overrides the scene's samples_per_pixel (stage 10)
     std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
-    bool gpu = false;            // stage 09: a compute shader renders it (render/gpu_render.h)
-    std::string gl = "egl";      // the context --gpu uses: egl, osmesa or window
-    bool uber = false;           // --gpu with every feature compiled in
+    bool gpu = false;        // stage 09: a compute shader renders it (render/gpu_render.h)
+    std::string gl = "egl";  // the context --gpu uses: egl, osmesa or window
+    bool uber = false;       // --gpu with every feature compiled in
 };
 
 // Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal.

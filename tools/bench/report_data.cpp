@@ -1,13 +1,25 @@
 // The accuracy report as data: the CSV of every row, and parse_report, which reads the counts
 // back from the markdown for the consistency test (Report.CountsMatchAFreshRun).
 #include <cctype>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench/accuracy.h"
+#include "bench/sampling_error.h"
 
 namespace rt::bench {
+
+double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& scene) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const SamplingPoint& p : points) {
+        if (p.scene != scene || !(p.rmse > 0)) continue;
+        const double x = std::log(double(p.spp)), y = std::log(p.rmse);
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    return n < 2 ? 0 : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
 
 std::string csv_report(const AccuracyResults& r) {
     std::ostringstream s;

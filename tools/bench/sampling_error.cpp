@@ -40,16 +40,6 @@ double rmse(const Image8& a, const Image8& b) {
 
 }  // namespace
 
-double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& scene) {
-    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (const SamplingPoint& p : points) {
-        if (p.scene != scene || !(p.rmse > 0)) continue;
-        const double x = std::log(double(p.spp)), y = std::log(p.rmse);
-        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    return n < 2 ? 0 : (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
                                       const std::function<void(const std::string&)>& progress) {
     SamplingSeries series;

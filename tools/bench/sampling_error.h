@@ -24,7 +24,8 @@ struct SamplingSeries {
     int width = 0, height = 0, reference_spp = 0, threads = 0;
 };
 
-// The least-squares slope of log(RMSE) against log(spp) of one scene's points (-0.5 expected).
+// The least-squares slope of log(RMSE) against log(spp) of one scene's points (-0.5 expected;
+// in rt_accuracy, report_data.cpp, with the report writers that print it).
 double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& scene);
 
 // Renders stages/10-sampling/scenes/*.json at width x height (rt_sampling_bench).

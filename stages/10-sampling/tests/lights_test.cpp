@@ -13,8 +13,8 @@
 namespace rt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 100000;
+using stats::kPi;
+using stats::kSamples;
 
 SurfacePoint point_at(const Vec3& p, const Vec3& normal) {
     SurfacePoint at;

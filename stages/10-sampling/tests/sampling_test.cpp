@@ -12,8 +12,8 @@
 namespace rt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 100000;
+using stats::kPi;
+using stats::kSamples;
 
 RT_TEST_SUITE(Warps);
 

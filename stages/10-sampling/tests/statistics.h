@@ -17,6 +17,10 @@
 
 namespace rt::stats {
 
+// Shared by the tests: pi, and the samples of one Monte Carlo estimate or histogram.
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr int kSamples = 100000;
+
 // Significance of each chi-square test: a correct sampler fails one in 1000 seeds.
 inline constexpr double kChiSquareAlpha = 1e-3;
 // |t| beyond this fails a mean: two-sided false-failure rate 1e-4 for a normal mean.
