@@ -178,9 +178,47 @@ AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
                            gpu_defines(scene, mode, uber));
 }
 
-Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {
+struct GpuRenderer::Program {
+    AssembledShader shader;  // for the stub report's names and lines
+    GLuint id = 0;
+};
+
+GpuRenderer::GpuRenderer(const GpuRenderOptions& options) : options_(options) {
+    std::string error;
+    context_ = GlContext::create(options.context, error);
+    if (!context_) throw GpuError("rt: error: " + error);
+    if (options.log) *options.log << "gpu: " << context_->describe() << "\n";
+}
+
+GpuRenderer::~GpuRenderer() {
+    for (const auto& [defines, program] : programs_) context_->gl().DeleteProgram(program->id);
+}
+
+std::string GpuRenderer::describe() const {
+    return context_->describe();
+}
+
+const GpuRenderer::Program& GpuRenderer::program_for(const Scene& scene, RenderMode mode,
+                                                     GpuTimings& timings) {
+    const std::string defines = gpu_defines(scene, mode, options_.uber);
+    if (const auto it = programs_.find(defines); it != programs_.end()) return *it->second;
+    const auto start = std::chrono::steady_clock::now();
+    auto program = std::make_unique<Program>();
+    program->shader = assemble_trace_shader(scene, mode, options_.student_dir, options_.uber);
+    std::string error;
+    program->id = build_compute_program(context_->gl(), program->shader, error);
+    if (!program->id) throw GpuError(error);
+    timings.compile_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return *(programs_[defines] = std::move(program));
+}
+
+Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out) {
     check_supported(scene, mode);
     GpuTimings timings;
+    const bool fresh = programs_.find(gpu_defines(scene, mode, options_.uber)) == programs_.end();
+    const Program& program = program_for(scene, mode, timings);
+    const GlApi& gl = context_->gl();
     auto start = std::chrono::steady_clock::now();
     // Milliseconds since `start`, which moves on to now.
     auto lap = [&start] {
@@ -189,19 +227,6 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
         start = now;
         return ms;
     };
-    std::string error;
-    std::unique_ptr<GlContext> context = GlContext::create(options.context, error);
-    if (!context) throw GpuError("rt: error: " + error);
-    if (options.log) *options.log << "gpu: " << context->describe() << "\n";
-    const GlApi& gl = context->gl();
-    timings.context_ms = lap();
-
-    const AssembledShader shader =
-        assemble_trace_shader(scene, mode, options.student_dir, options.uber);
-    const GLuint program = build_compute_program(gl, shader, error);
-    if (!program) throw GpuError(error);
-    timings.compile_ms = lap();
-
     const gpu::GpuScene packed = gpu::pack_scene(scene);
     std::vector<GLuint> buffers = {
         upload(gl, gpu::kSpheres, packed.spheres),
@@ -226,11 +251,11 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     std::vector<glm::vec4> output(pixel_count + 1, glm::vec4(0));
     buffers.push_back(upload(gl, 15, output));
 
-    gl.UseProgram(program);
-    set_uniforms(gl, program, scene, mode);
+    gl.UseProgram(program.id);
+    set_uniforms(gl, program.id, scene, mode);
     gl.Finish();  // the uploads are not the trace's time
     lap();
-    if (options.timings) {
+    if (timings_out && fresh) {
         // llvmpipe compiles the shader to machine code at its first dispatch: one work group
         // (its pixels are written again below) moves that into compile_ms.
         gl.DispatchCompute(1, 1, 1);
@@ -242,17 +267,16 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
                         output.data());
     timings.trace_ms = lap();
-    if (options.timings) *options.timings = timings;
+    if (timings_out) *timings_out = timings;
     const GLenum status = gl.GetError();
     gl.DeleteBuffers(GLsizei(buffers.size()), buffers.data());
-    gl.DeleteProgram(program);
     if (status != GL_NO_ERROR)
         throw GpuError("gpu: OpenGL error " + std::to_string(status) +
                        " while rendering; rerun with --gl osmesa, or without --gpu");
 
     std::uint32_t flags[4];
     std::memcpy(flags, &output[0], sizeof flags);
-    report_stubs(shader, flags);
+    report_stubs(program.shader, flags);
 
     // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
     Image image(width, height);
@@ -267,6 +291,16 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
     }
     if (mode == RenderMode::Depth) map_depth(values, image);
     if (mode == RenderMode::BvhVisits) map_visits(values, image);
+    return image;
+}
+
+Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    GpuRenderer renderer(options);
+    const double context_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    Image image = renderer.render(scene, mode, options.timings);
+    if (options.timings) options.timings->context_ms = context_ms;
     return image;
 }
 

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -41,6 +43,32 @@ struct GpuError : std::runtime_error {
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
+
+// A GPU renderer that keeps its context and compiled programs between renders (the viewer, the
+// benchmark): programs are cached by their #defines, i.e. by the scene's feature mask, so a
+// camera change reuses the program and only uploads and traces. Lives on the thread that made
+// it (an OpenGL context is current on one thread). Throws GpuError when there is no context.
+class GpuRenderer {
+  public:
+    explicit GpuRenderer(const GpuRenderOptions& options = {});
+    ~GpuRenderer();
+    GpuRenderer(const GpuRenderer&) = delete;
+    GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+    // As render_gpu below; `timings`, when set, gets this render's figures (compile_ms is 0
+    // when the program came from the cache).
+    Image render(const Scene& scene, RenderMode mode, GpuTimings* timings = nullptr);
+    std::string describe() const;  // the context, as --gpu logs it
+    std::size_t cached_programs() const { return programs_.size(); }
+
+  private:
+    struct Program;
+    const Program& program_for(const Scene& scene, RenderMode mode, GpuTimings& timings);
+
+    GpuRenderOptions options_;
+    std::unique_ptr<GlContext> context_;
+    std::map<std::string, std::unique_ptr<Program>> programs_;  // by the shader's #defines
+};
 
 // Renders like render() (render/render.h): debug modes store display values, a pixel that reached
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).

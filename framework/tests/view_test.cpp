@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "core/source_dir.h"
+#include "render/gpu_render.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "view/progressive.h"
@@ -125,6 +126,34 @@ TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
     }
     ASSERT_TRUE(refined) << "no refined frame within 60 s";
     EXPECT_EQ(refined->image.pixels, render(other, other.mode).pixels);
+}
+
+// The GPU path: the refined frame is `rt render --gpu`'s image, and a second camera reuses the
+// program compiled for the first (same features).
+TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
+    Scene scene = whitted();
+    scene.image = ImageSize{64, 48};  // small: no coarse passes, and llvmpipe is slow
+    ProgressiveRenderer renderer(1);
+    const auto refined = [&](const Scene& s) -> std::optional<Frame> {
+        const std::uint64_t generation = renderer.restart(s, true);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (std::chrono::steady_clock::now() < deadline) {
+            if (auto frame = renderer.take(); frame && frame->generation == generation &&
+                                              (frame->refined() || !frame->error.empty()))
+                return frame;
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        return std::nullopt;
+    };
+    const std::optional<Frame> first = refined(scene);
+    ASSERT_TRUE(first) << "no refined GPU frame within 120 s";
+    ASSERT_TRUE(first->error.empty()) << first->error;
+    EXPECT_TRUE(first->gpu);
+    EXPECT_EQ(first->image.pixels, render_gpu(scene, scene.mode).pixels);
+    orbit(scene.camera, 5, scene.camera.v, 10, 0);
+    const std::optional<Frame> second = refined(scene);
+    ASSERT_TRUE(second && second->error.empty());
+    EXPECT_EQ(second->image.pixels, render_gpu(scene, scene.mode).pixels);
 }
 
 TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {

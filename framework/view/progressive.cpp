@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <exception>
+#include <memory>
 
+#include "render/gpu_render.h"
 #include "render/render.h"
 
 namespace rt::view {
@@ -33,11 +35,12 @@ ProgressiveRenderer::~ProgressiveRenderer() {
     worker_.join();
 }
 
-std::uint64_t ProgressiveRenderer::restart(Scene scene) {
+std::uint64_t ProgressiveRenderer::restart(Scene scene, bool gpu) {
     std::uint64_t generation = 0;
     {
         std::lock_guard lock(mutex_);
         pending_ = std::move(scene);
+        pending_gpu_ = gpu;
         generation = ++generation_;
         cancel_ = true;  // the pass in flight stops at its next tile
     }
@@ -53,8 +56,12 @@ std::optional<Frame> ProgressiveRenderer::take() {
 }
 
 void ProgressiveRenderer::run() {
+    // Made on first use, on this thread, and kept: its context is current here, and its programs
+    // (one per feature mask) survive camera changes.
+    std::unique_ptr<GpuRenderer> gpu_renderer;
     for (;;) {
         Scene scene;
+        bool gpu = false;
         std::uint64_t generation = 0;
         {
             std::unique_lock lock(mutex_);
@@ -62,6 +69,7 @@ void ProgressiveRenderer::run() {
             if (quit_) return;
             scene = std::move(*pending_);
             pending_.reset();
+            gpu = pending_gpu_;
             generation = generation_;
             cancel_ = false;
         }
@@ -75,10 +83,16 @@ void ProgressiveRenderer::run() {
             scene.image = {(full.width + block - 1) / block, (full.height + block - 1) / block};
             Frame frame;
             frame.block = block;
+            frame.gpu = gpu;
             frame.generation = generation;
             const auto start = std::chrono::steady_clock::now();
             try {
-                frame.image = render(scene, scene.mode, options);
+                if (gpu) {
+                    if (!gpu_renderer) gpu_renderer = std::make_unique<GpuRenderer>();
+                    frame.image = gpu_renderer->render(scene, scene.mode);
+                } else {
+                    frame.image = render(scene, scene.mode, options);
+                }
             } catch (const std::exception& e) {
                 frame.error = e.what();
             }

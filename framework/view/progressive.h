@@ -1,7 +1,8 @@
 // Progressive rendering for the viewer: a worker thread renders the scene at 1/8, 1/4, 1/2 and
 // then full resolution, each pass through rt::render itself (so the last pass is the image
-// `rt render` writes, bit for bit), and starts again whenever the viewer hands it a new scene.
-// The UI thread never waits for it.
+// `rt render` writes, bit for bit), or through stage 09's GPU renderer (`rt render --gpu`'s
+// image: a headless EGL context and its cached programs, owned by the worker), and starts again
+// whenever the viewer hands it a new scene. The UI thread never waits for it.
 #pragma once
 
 #include <atomic>
@@ -22,6 +23,7 @@ struct Frame {
     int block = 1;                 // 8, 4, 2: a coarse pass; 1: the full-resolution render
     std::uint64_t generation = 0;  // which restart() it belongs to
     double seconds = 0;            // this pass's render time
+    bool gpu = false;              // rendered by the GPU path
     std::string error;             // the renderer refused (e.g. bvh_visits without a BVH)
     bool refined() const { return block == 1 && error.empty(); }
 };
@@ -31,8 +33,9 @@ class ProgressiveRenderer {
     explicit ProgressiveRenderer(int threads);
     ~ProgressiveRenderer();  // cancels the current pass and joins the worker
 
-    // Drops whatever is being rendered and starts on `scene`; returns its generation.
-    std::uint64_t restart(Scene scene);
+    // Drops whatever is being rendered and starts on `scene` (on the GPU path when `gpu`);
+    // returns its generation.
+    std::uint64_t restart(Scene scene, bool gpu = false);
     // The newest pass finished since the last call, if any (older ones are dropped).
     std::optional<Frame> take();
     int threads() const { return threads_; }
@@ -44,6 +47,7 @@ class ProgressiveRenderer {
     std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<Scene> pending_;
+    bool pending_gpu_ = false;
     std::optional<Frame> ready_;
     std::uint64_t generation_ = 0;
     bool quit_ = false;

@@ -36,7 +36,7 @@ bool ViewSettings::operator==(const ViewSettings& o) const {
         a.projection == b.projection && a.eye == b.eye && a.u == b.u && a.v == b.v && a.w == b.w &&
         a.vertical_fov_degrees == b.vertical_fov_degrees && a.view_height == b.view_height;
     return same_camera && mode == o.mode && shadows == o.shadows && max_depth == o.max_depth &&
-           accelerator == o.accelerator && texture_lookup == o.texture_lookup;
+           accelerator == o.accelerator && texture_lookup == o.texture_lookup && gpu == o.gpu;
 }
 
 ViewSettings settings_of(const Scene& scene) {
@@ -75,7 +75,7 @@ Scene SceneSource::make(const ViewSettings& settings) {
 
 const char* setting_names() {
     return "mode directions|normals|depth|primitive|shaded|bvh_visits, shadows on|off, "
-           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear";
+           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, gpu on|off";
 }
 
 std::string set_by_name(ViewSettings& s, const std::string& name, const std::string& value) {
@@ -87,11 +87,13 @@ std::string set_by_name(ViewSettings& s, const std::string& name, const std::str
         s.mode = it->second;
         return "";
     }
-    if (name == "shadows" || name == "bvh") {
+    if (name == "shadows" || name == "bvh" || name == "gpu") {
         const std::optional<bool> on = on_off(value);
         if (!on) return name + " takes on or off, not \"" + value + "\"";
         if (name == "shadows")
             s.shadows = *on;
+        else if (name == "gpu")
+            s.gpu = *on;
         else
             s.accelerator = *on ? Accelerator::Bvh : Accelerator::None;
         return "";

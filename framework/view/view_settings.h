@@ -16,6 +16,8 @@ struct ViewSettings {
     Accelerator accelerator = Accelerator::None;
     TextureLookup texture_lookup = TextureLookup::PerTexture;
     Camera camera;
+    bool gpu =
+        false;  // render with stage 09's compute shader (the renderer's choice, not the scene's)
 
     bool operator==(const ViewSettings& other) const;  // Camera has no ==: field by field
 };

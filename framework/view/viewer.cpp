@@ -54,13 +54,13 @@ Viewer::Viewer(Scene loaded, const ViewArgs& args, std::vector<ScriptCommand> sc
     up_ = settings.camera.v;
     initial_pivot_distance_ = pivot_distance_ = pivot_distance(scene_);
     reference_ = find_reference(args.scene);
-    generation_ = renderer_.restart(scene_);
+    generation_ = renderer_.restart(scene_, settings.gpu);
     restarted_at_ = std::chrono::steady_clock::now();
 }
 
 void Viewer::settings_changed() {
     scene_ = source_.make(settings);
-    generation_ = renderer_.restart(scene_);
+    generation_ = renderer_.restart(scene_, settings.gpu);
     restarted_at_ = std::chrono::steady_clock::now();
     if (selected_) selected_ = debug_pixel(scene_, selected_->x, selected_->y);
     display_dirty_ = true;

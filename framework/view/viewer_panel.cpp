@@ -80,7 +80,10 @@ int count_rays(const RayNode& n) {
 void hud(const Viewer& viewer) {
     const Scene& scene = viewer.scene();
     ImGui::TextWrapped("%s", viewer.scene_file().c_str());
-    ImGui::Text("%d x %d, %d threads", scene.image.width, scene.image.height, viewer.threads());
+    if (viewer.settings.gpu)
+        ImGui::Text("%d x %d, GPU (stage 09, headless EGL)", scene.image.width, scene.image.height);
+    else
+        ImGui::Text("%d x %d, %d threads", scene.image.width, scene.image.height, viewer.threads());
     if (const auto& frame = viewer.frame()) {
         if (frame->generation != viewer.scene_version()) {
             // The first pass of the change is not done (a slow setting, e.g. no BVH).
@@ -91,8 +94,9 @@ void hud(const Viewer& viewer) {
             ImGui::PopStyleColor();
         } else if (viewer.refined()) {
             const double pixels = double(scene.image.width) * scene.image.height;
-            ImGui::Text("refined: %.3f s a frame, %.2f Mrays/s (camera rays)", frame->seconds,
-                        pixels / frame->seconds / 1e6);
+            ImGui::Text("refined: %.3f s a frame (%.1f fps), %.2f Mrays/s (camera rays)%s",
+                        frame->seconds, 1 / frame->seconds, pixels / frame->seconds / 1e6,
+                        frame->gpu ? " on the GPU" : "");
         } else {
             ImGui::Text("refining: 1/%d resolution", frame->block);
         }
@@ -135,6 +139,7 @@ void settings(Viewer& viewer) {
         s.texture_lookup = TextureLookup(filter);
         changed = true;
     }
+    changed |= ImGui::Checkbox("GPU (stage 09's shader)", &s.gpu);
     if (changed) viewer.settings_changed();
     ImGui::Checkbox("raster preview (OpenGL Blinn-Phong)", &viewer.raster);
     if (ImGui::Button("reset camera (R)")) viewer.reset_camera();

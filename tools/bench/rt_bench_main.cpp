@@ -153,6 +153,7 @@ int main(int argc, char** argv) {
     view->add_option("--threads", view_cfg.threads)
         ->capture_default_str()
         ->check(CLI::Range(1, 256));
+    view->add_flag("--gpu", view_cfg.gpu, "the viewer's GPU path (stage 09's shader)");
     view->add_option("--changes", view_cfg.changes, "camera changes timed")
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));

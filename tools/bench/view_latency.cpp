@@ -62,7 +62,7 @@ bool run_view_latency(const ViewLatencyConfig& config, std::ostream& out) {
     const auto change_and_wait = [&](double& first_ms, double& full_ms, int& first_block) {
         const auto start = Clock::now();
         view::orbit(settings.camera, pivot, up, 3, 0);
-        const std::uint64_t generation = renderer.restart(source.make(settings));
+        const std::uint64_t generation = renderer.restart(source.make(settings), config.gpu);
         first_ms = -1;
         for (;;) {
             if (auto frame = renderer.take(); frame && frame->generation == generation) {
@@ -88,13 +88,20 @@ bool run_view_latency(const ViewLatencyConfig& config, std::ostream& out) {
         firsts.push_back(first);
         fulls.push_back(full);
     }
+    const std::string path = config.gpu ? "the GPU path (stage 09's shader, headless EGL)"
+                                        : std::to_string(renderer.threads()) + " CPU threads";
     out << "Viewer latency: " << file.filename().string() << " at " << config.width << "x"
-        << config.height << ", " << renderer.threads() << " threads, " << config.changes
+        << config.height << ", " << path << ", " << config.changes
         << " camera changes (orbits of 3 degrees), milliseconds\n\n"
         << "| from a camera change to | median | fastest | slowest |\n|---|---|---|---|\n"
         << row(("the first frame (1/" + std::to_string(block) + " resolution)").c_str(),
                stats(firsts))
         << row("the full-resolution frame", stats(fulls));
+    const Stats full_stats = stats(fulls);
+    char rate[96];
+    std::snprintf(rate, sizeof rate, "\nFull frames per second while orbiting: %.2f (median)\n",
+                  1000 / full_stats.median);
+    out << rate;
     return true;
 }
 

@@ -13,6 +13,7 @@ struct ViewLatencyConfig {
     int width = 640, height = 480;
     int threads = 2;
     int changes = 20;  // camera changes (orbits of 3 degrees), each timed
+    bool gpu = false;  // the viewer's GPU path (stage 09's shader on a headless context)
 };
 
 // Prints the figures as a Markdown table; returns false (with a line on `out`) when the scene
