@@ -5,6 +5,7 @@
 #include <chrono>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include "core/source_dir.h"
 #include "render/gpu_render.h"
@@ -126,6 +127,31 @@ TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
     }
     ASSERT_TRUE(refined) << "no refined frame within 60 s";
     EXPECT_EQ(refined->image.pixels, render(other, other.mode).pixels);
+}
+
+// A Monte Carlo scene (stage 10) refines its samples: 1, 4, then its own 16, the last pass
+// being `rt render`'s image bit for bit.
+TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
+    Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
+    scene.image = ImageSize{48, 32};  // no coarse passes
+    ASSERT_EQ(scene.sampling.samples_per_pixel, 16);
+    ProgressiveRenderer renderer(2);
+    const std::uint64_t generation = renderer.restart(scene);
+    std::vector<int> samples;
+    std::optional<Frame> last;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!last && std::chrono::steady_clock::now() < deadline) {
+        if (auto frame = renderer.take(); frame && frame->generation == generation) {
+            ASSERT_TRUE(frame->error.empty()) << frame->error;
+            samples.push_back(frame->samples);
+            if (frame->refined()) last = std::move(frame);
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    ASSERT_TRUE(last) << "no refined frame within 60 s";
+    EXPECT_EQ(samples.back(), 16);
+    for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
+    EXPECT_EQ(last->image.pixels, render(scene, scene.mode).pixels);
 }
 
 // The GPU path: the refined frame is `rt render --gpu`'s image, and a second camera reuses the

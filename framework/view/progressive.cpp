@@ -1,8 +1,10 @@
 #include "view/progressive.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <memory>
+#include <vector>
 
 #include "render/gpu_render.h"
 #include "render/render.h"
@@ -18,6 +20,25 @@ Image blow_up(const Image& coarse, int block, int width, int height) {
             full.at(x, y) = coarse.at(std::min(x / block, coarse.width - 1),
                                       std::min(y / block, coarse.height - 1));
     return full;
+}
+
+struct Pass {
+    int block = 1;
+    int samples = 1;
+};
+
+// Coarse passes (1 sample: they are a preview) only while they are much cheaper than the full
+// one; then full size, with the samples of a Monte Carlo scene raised fourfold a pass, each pass
+// a whole render at its count (stratified samples do not nest, so they are not accumulated); the
+// last pass is the scene's own count, `rt render`'s image.
+std::vector<Pass> passes_for(const Scene& scene) {
+    const int samples = std::max(1, scene.sampling.samples_per_pixel);
+    std::vector<Pass> passes;
+    for (int block : {8, 4, 2})
+        if (scene.image.width * scene.image.height >= 64 * 64 * block) passes.push_back({block, 1});
+    for (int s = 1; s < samples; s *= 4) passes.push_back({1, s});
+    passes.push_back({1, samples});
+    return passes;
 }
 
 }  // namespace
@@ -77,12 +98,18 @@ void ProgressiveRenderer::run() {
         RenderOptions options;
         options.threads = threads_;
         options.cancel = &cancel_;
-        for (int block : {8, 4, 2, 1}) {
-            // Coarse passes only while they are much cheaper than the full one.
-            if (block > 1 && full.width * full.height < 64 * 64 * block) continue;
+        const std::vector<Pass> passes = passes_for(scene);
+        for (std::size_t k = 0; k < passes.size(); ++k) {
+            const int block = passes[k].block;
             scene.image = {(full.width + block - 1) / block, (full.height + block - 1) / block};
+            if (scene.sampling.samples_per_pixel != passes[k].samples) {
+                scene.sampling.samples_per_pixel = passes[k].samples;
+                scene.update_features();
+            }
             Frame frame;
             frame.block = block;
+            frame.samples = passes[k].samples;
+            frame.last = k + 1 == passes.size();
             frame.gpu = gpu;
             frame.generation = generation;
             const auto start = std::chrono::steady_clock::now();

@@ -98,7 +98,11 @@ void hud(const Viewer& viewer) {
                         frame->seconds, 1 / frame->seconds, pixels / frame->seconds / 1e6,
                         frame->gpu ? " on the GPU" : "");
         } else {
-            ImGui::Text("refining: 1/%d resolution", frame->block);
+            if (frame->block > 1)
+                ImGui::Text("refining: 1/%d resolution", frame->block);
+            else
+                ImGui::Text("refining: %d of %d samples a pixel", frame->samples,
+                            scene.sampling.samples_per_pixel);
         }
     } else {
         ImGui::TextUnformatted("rendering...");
