@@ -56,6 +56,31 @@ TEST(ViewSettings, ShadowsOffIsWhatTheRendererComputesWithoutShadows) {
     EXPECT_EQ(render(made, made.mode).pixels, render(by_hand, by_hand.mode).pixels);
 }
 
+// A term or effect off changes the scene the renderer gets, not the picture afterwards: the
+// features lose it, and the image is the render of the scene with that coefficient zero.
+TEST(ViewSettings, TermsAndEffectsOffAreLeftOutOfTheScene) {
+    SceneSource source{whitted()};
+    ViewSettings settings = source.initial();
+    for (const char* term : {"specular", "reflection", "refraction"})
+        ASSERT_EQ(set_by_name(settings, term, "off"), "");
+    Scene made = source.make(settings);
+    EXPECT_FALSE(made.features.specular);
+    EXPECT_FALSE(made.features.reflection);
+    EXPECT_FALSE(made.features.refraction);
+    made.image = ImageSize{80, 60};
+    Scene by_hand = whitted();
+    for (Material& m : by_hand.materials) m.specular = m.reflective = m.transmissive = Color(0);
+    by_hand.update_features();
+    by_hand.image = made.image;
+    EXPECT_EQ(render(made, made.mode).pixels, render(by_hand, by_hand.mode).pixels);
+
+    SceneSource sky{load_scene(source_dir() / "stages/08-environment/scenes/sky.json")};
+    ViewSettings no_sky = sky.initial();
+    ASSERT_EQ(set_by_name(no_sky, "environment", "off"), "");
+    EXPECT_FALSE(sky.make(no_sky).features.environment);
+    EXPECT_TRUE(sky.make(sky.initial()).features.environment);
+}
+
 TEST(ViewSettings, BadNamesAndValuesSayWhatIsAccepted) {
     ViewSettings s;
     EXPECT_NE(set_by_name(s, "mode", "shady").find("shaded"), std::string::npos);

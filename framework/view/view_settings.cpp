@@ -36,7 +36,10 @@ bool ViewSettings::operator==(const ViewSettings& o) const {
         a.projection == b.projection && a.eye == b.eye && a.u == b.u && a.v == b.v && a.w == b.w &&
         a.vertical_fov_degrees == b.vertical_fov_degrees && a.view_height == b.view_height;
     return same_camera && mode == o.mode && shadows == o.shadows && max_depth == o.max_depth &&
-           accelerator == o.accelerator && texture_lookup == o.texture_lookup && gpu == o.gpu;
+           accelerator == o.accelerator && texture_lookup == o.texture_lookup && gpu == o.gpu &&
+           ambient == o.ambient && diffuse == o.diffuse && specular == o.specular &&
+           emissive == o.emissive && reflection == o.reflection && refraction == o.refraction &&
+           environment == o.environment && fresnel == o.fresnel;
 }
 
 ViewSettings settings_of(const Scene& scene) {
@@ -47,6 +50,7 @@ ViewSettings settings_of(const Scene& scene) {
     s.accelerator = scene.accelerator;
     s.texture_lookup = scene.texture_lookup;
     s.camera = scene.camera;
+    s.fresnel = scene.fresnel;
     return s;
 }
 
@@ -69,13 +73,26 @@ Scene SceneSource::make(const ViewSettings& settings) {
     scene.max_depth = std::clamp(settings.max_depth, 0, 64);
     scene.texture_lookup = settings.texture_lookup;
     scene.camera = settings.camera;
+    scene.fresnel = settings.fresnel;
+    // A term off is a coefficient of zero in every material (texture maps multiply it, so they
+    // go too); update_features() then leaves the term out of what the renderer computes.
+    for (Material& m : scene.materials) {
+        if (!settings.ambient) m.ambient = Color(0);
+        if (!settings.diffuse) m.diffuse = Color(0);
+        if (!settings.specular) m.specular = Color(0);
+        if (!settings.emissive) m.emissive = Color(0);
+        if (!settings.reflection) m.reflective = Color(0);
+        if (!settings.refraction) m.transmissive = Color(0);
+    }
+    if (!settings.environment) scene.environment.kind = EnvironmentKind::None;
     scene.update_features();
     return scene;
 }
 
 const char* setting_names() {
     return "mode directions|normals|depth|primitive|shaded|bvh_visits, shadows on|off, "
-           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, gpu on|off";
+           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, gpu on|off, "
+           "ambient|diffuse|specular|emissive|reflection|refraction|fresnel|environment on|off";
 }
 
 std::string set_by_name(ViewSettings& s, const std::string& name, const std::string& value) {
@@ -87,15 +104,19 @@ std::string set_by_name(ViewSettings& s, const std::string& name, const std::str
         s.mode = it->second;
         return "";
     }
-    if (name == "shadows" || name == "bvh" || name == "gpu") {
+    const std::map<std::string, bool*> switches = {
+        {"shadows", &s.shadows},       {"gpu", &s.gpu},
+        {"ambient", &s.ambient},       {"diffuse", &s.diffuse},
+        {"specular", &s.specular},     {"emissive", &s.emissive},
+        {"reflection", &s.reflection}, {"refraction", &s.refraction},
+        {"fresnel", &s.fresnel},       {"environment", &s.environment}};
+    if (switches.count(name) || name == "bvh") {
         const std::optional<bool> on = on_off(value);
         if (!on) return name + " takes on or off, not \"" + value + "\"";
-        if (name == "shadows")
-            s.shadows = *on;
-        else if (name == "gpu")
-            s.gpu = *on;
-        else
+        if (name == "bvh")
             s.accelerator = *on ? Accelerator::Bvh : Accelerator::None;
+        else
+            *switches.at(name) = *on;
         return "";
     }
     if (name == "max-depth") {

@@ -16,8 +16,12 @@ struct ViewSettings {
     Accelerator accelerator = Accelerator::None;
     TextureLookup texture_lookup = TextureLookup::PerTexture;
     Camera camera;
-    bool gpu =
-        false;  // render with stage 09's compute shader (the renderer's choice, not the scene's)
+    bool gpu = false;  // stage 09's compute shader renders (the renderer's choice, not the scene's)
+    // Terms and effects, switched off in the scene copy itself (a material coefficient zeroed, the
+    // environment dropped), so the renderer computes less rather than hiding a result.
+    bool ambient = true, diffuse = true, specular = true, emissive = true;
+    bool reflection = true, refraction = true, environment = true;
+    bool fresnel = false;  // as the scene file says, until changed
 
     bool operator==(const ViewSettings& other) const;  // Camera has no ==: field by field
 };

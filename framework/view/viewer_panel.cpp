@@ -94,9 +94,9 @@ void hud(const Viewer& viewer) {
             ImGui::PopStyleColor();
         } else if (viewer.refined()) {
             const double pixels = double(scene.image.width) * scene.image.height;
-            ImGui::Text("refined: %.3f s a frame (%.1f fps), %.2f Mrays/s (camera rays)%s",
-                        frame->seconds, 1 / frame->seconds, pixels / frame->seconds / 1e6,
-                        frame->gpu ? " on the GPU" : "");
+            ImGui::TextWrapped("refined: %.3f s a frame (%.1f fps), %.2f Mrays/s (camera rays)%s",
+                               frame->seconds, 1 / frame->seconds, pixels / frame->seconds / 1e6,
+                               frame->gpu ? " on the GPU" : "");
         } else {
             if (frame->block > 1)
                 ImGui::Text("refining: 1/%d resolution", frame->block);
@@ -143,6 +143,21 @@ void settings(Viewer& viewer) {
         s.texture_lookup = TextureLookup(filter);
         changed = true;
     }
+    // The terms of stage 03 and the effects of stages 05 and 08, off in the scene itself.
+    changed |= ImGui::Checkbox("ambient", &s.ambient);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("diffuse", &s.diffuse);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("specular", &s.specular);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("emissive", &s.emissive);
+    changed |= ImGui::Checkbox("reflection", &s.reflection);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("refraction", &s.refraction);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("Fresnel", &s.fresnel);
+    changed |= ImGui::Checkbox("environment", &s.environment);
+    ImGui::SameLine();
     changed |= ImGui::Checkbox("GPU (stage 09's shader)", &s.gpu);
     if (changed) viewer.settings_changed();
     ImGui::Checkbox("raster preview (OpenGL Blinn-Phong)", &viewer.raster);
