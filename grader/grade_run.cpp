@@ -184,7 +184,7 @@ class Runner {
         const RunResult res = run_sandboxed(r);
         g_.survivors += res.survivors;
         result.output = clean_output(res.output);
-        if (result.output.size() > 3000) result.output.resize(3000);
+        result.output = cap_output(result.output, 3000);
         Image image;
         std::string why;
         if (!res.ok()) {

@@ -18,6 +18,21 @@ std::vector<std::string> handout_hints(const std::string& output) {
     return hints;
 }
 
+std::string cap_output(const std::string& text, std::size_t limit) {
+    if (text.size() <= limit) return text;
+    // A stub's "not implemented: NAME (file:line); read HANDOUT" line (and a GPU shader's
+    // "also a stub in this shader ...; read HANDOUT") says what to do: the lines a student must
+    // see, and they come last (stderr, after the failures). Keep every such line, and cut the
+    // rest at a line's end, so no handout link is left half.
+    std::size_t cut = limit == 0 ? std::string::npos : text.rfind('\n', limit - 1);
+    cut = cut == std::string::npos ? 0 : cut + 1;
+    std::string pointers;
+    std::istringstream rest(text.substr(cut));
+    for (std::string line; std::getline(rest, line);)
+        if (line.find("; read stages/") != std::string::npos) pointers += line + "\n";
+    return text.substr(0, cut) + "[... output truncated]\n" + pointers;
+}
+
 std::string trim_gtest_output(const std::string& raw) {
     std::string out;
     std::istringstream lines(clean_output(raw));
@@ -30,18 +45,7 @@ std::string trim_gtest_output(const std::string& raw) {
             continue;
         out += line + "\n";
     }
-    if (out.size() > 4000) {
-        // The stub's "not implemented" line names the function and the handout section: the one
-        // line a student must see, and it comes last (stderr, after the failures). Keep it.
-        std::string stubs;
-        for (std::size_t p = out.find("not implemented: ", 4000); p != std::string::npos;
-             p = out.find("not implemented: ", p + 1)) {
-            const std::size_t end = out.find('\n', p);
-            stubs += out.substr(p, end == std::string::npos ? std::string::npos : end - p) + "\n";
-        }
-        out = out.substr(0, 4000) + "\n[... output truncated]\n" + stubs;
-    }
-    return out;
+    return cap_output(out, 4000);
 }
 
 // The first failure of a GoogleTest output, as one line: where (the test's own line: a trace's

@@ -9,6 +9,9 @@ namespace rt::grader {
 
 std::vector<std::string> handout_hints(const std::string& output);  // "stages/...md#section"
 std::string trim_gtest_output(const std::string& raw);
+// `text` cut to about `limit` characters at a line's end, every handout pointer line ("; read
+// stages/...") after the cut kept.
+std::string cap_output(const std::string& text, std::size_t limit);
 std::string first_failure(const std::string& output);
 std::string first_errors(const std::string& compiler_log);
 

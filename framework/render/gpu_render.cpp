@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <vector>
 
 #include "core/not_implemented.h"
@@ -131,6 +133,21 @@ void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
         }
         report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
                                *once);
+    }
+    // Every pixel runs the whole shader, so an early stub (a camera ray) hides the later ones
+    // (shading, reflection) from the flags: name the rest of this shader's stubs too, once each,
+    // so a student sees the whole to-do list of the scene, not one function a run.
+    const bool any = flags[0] || flags[1] || flags[2] || flags[3];
+    for (std::size_t k = 0; any && k < shader.stubs.size() && k < 128; ++k) {
+        if (flags[k / 32] & (1u << (k % 32))) continue;
+        const ShaderStub& s = shader.stubs[k];
+        {
+            static std::set<std::string> named;
+            std::lock_guard lock(mutex);
+            if (!named.insert(s.file + ":" + std::to_string(s.line)).second) continue;
+        }
+        std::fprintf(stderr, "also a stub in this shader, not reached yet: %s (%s:%d); read %s\n",
+                     s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str());
     }
 }
 
