@@ -25,18 +25,6 @@ const Color kStubColor{1, 0, 1};
 constexpr int kMaxGpuLights = 64;  // visibility is a vec3[MAX_LIGHTS] per invocation
 constexpr int kMaxGpuDepth = 64;   // the Frame stack: as the CPU's kMaxTraceDepth
 
-int trace_depth(const Scene& scene, RenderMode mode) {
-    return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
-}
-
-// The bits of framework.glsl's scene_features: what the scene uses, tested at run time.
-int feature_bits(const Scene& scene, RenderMode mode) {
-    const bool shaded = mode == RenderMode::Shaded;
-    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
-           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
-           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
-}
-
 Color display_value(Color v) {
     return Color(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b));
 }
@@ -79,34 +67,10 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
                  scene.ambient_light.b);
     gl.Uniform1i(at("fresnel"), scene.fresnel ? 1 : 0);
     gl.Uniform1i(at("render_mode"), int(mode));
-    gl.Uniform1i(at("max_depth"), trace_depth(scene, mode));
-    gl.Uniform1i(at("scene_features"), feature_bits(scene, mode));
+    gl.Uniform1i(at("max_depth"), gpu_trace_depth(scene, mode));
+    gl.Uniform1i(at("scene_features"), gpu_feature_bits(scene, mode));
     // A uniform the shader does not use (no textures) has location -1, which GL ignores.
-    const int lookup = scene.texture_lookup == TextureLookup::Nearest    ? 1
-                       : scene.texture_lookup == TextureLookup::Bilinear ? 2
-                                                                         : 0;
-    gl.Uniform1i(at("texture_lookup"), lookup);
-}
-
-void check_supported(const Scene& scene, RenderMode mode) {
-    const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
-        throw GpuError(where +
-                       ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
-                       "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh");
-    const bool textured = scene.features.textures || scene.features.normal_maps;
-    if (textured && (scene.texture_lookup == TextureLookup::Oiio ||
-                     scene.texture_lookup == TextureLookup::OiioAniso))
-        throw GpuError(where +
-                       ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
-                       "port; use nearest or bilinear, or render it without --gpu");
-    if (scene.lights.size() > std::size_t(kMaxGpuLights))
-        throw GpuError(where + ": " + std::to_string(scene.lights.size()) +
-                       " lights; the GPU port takes at most " + std::to_string(kMaxGpuLights));
-    if (scene.accelerator == Accelerator::Bvh && !scene.bvh.built())
-        throw GpuError(where +
-                       ": the scene asks for a BVH and has none (is stage 06's build_bvh a "
-                       "stub?); render it with --accelerator none");
+    gl.Uniform1i(at("texture_lookup"), gpu_texture_lookup(scene));
 }
 
 // Reports each stub whose flag is set, once per process (core/not_implemented.h's message).
@@ -129,6 +93,44 @@ void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
 }
 
 }  // namespace
+
+int gpu_trace_depth(const Scene& scene, RenderMode mode) {
+    return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
+}
+
+int gpu_feature_bits(const Scene& scene, RenderMode mode) {
+    const bool shaded = mode == RenderMode::Shaded;
+    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
+           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
+           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
+}
+
+int gpu_texture_lookup(const Scene& scene) {
+    return scene.texture_lookup == TextureLookup::Nearest    ? 1
+           : scene.texture_lookup == TextureLookup::Bilinear ? 2
+                                                             : 0;
+}
+
+void check_gpu_supported(const Scene& scene, RenderMode mode) {
+    const std::string where = scene.source.empty() ? "the scene" : scene.source;
+    if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
+        throw GpuError(where +
+                       ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
+                       "\"accelerator\": \"bvh\" to \"render\" or pass --accelerator bvh");
+    const bool textured = scene.features.textures || scene.features.normal_maps;
+    if (textured && (scene.texture_lookup == TextureLookup::Oiio ||
+                     scene.texture_lookup == TextureLookup::OiioAniso))
+        throw GpuError(where +
+                       ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
+                       "port; use nearest or bilinear, or render it without --gpu");
+    if (scene.lights.size() > std::size_t(kMaxGpuLights))
+        throw GpuError(where + ": " + std::to_string(scene.lights.size()) +
+                       " lights; the GPU port takes at most " + std::to_string(kMaxGpuLights));
+    if (scene.accelerator == Accelerator::Bvh && !scene.bvh.built())
+        throw GpuError(where +
+                       ": the scene asks for a BVH and has none (is stage 06's build_bvh a "
+                       "stub?); render it with --accelerator none");
+}
 
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     std::string d;
@@ -155,7 +157,7 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     define(shaded && f.environment, "HAS_ENVIRONMENT");
     const std::size_t lights = uber ? kMaxGpuLights : std::max<std::size_t>(1, scene.lights.size());
     d += "#define MAX_LIGHTS " + std::to_string(lights) + "\n";
-    d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : trace_depth(scene, mode)) +
+    d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : gpu_trace_depth(scene, mode)) +
          "\n";
     return d;
 }
@@ -168,7 +170,7 @@ AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
 }
 
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {
-    check_supported(scene, mode);
+    check_gpu_supported(scene, mode);
     GpuTimings timings;
     auto start = std::chrono::steady_clock::now();
     // Milliseconds since `start`, which moves on to now.

@@ -38,6 +38,15 @@ struct GpuError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What the shader is told besides the #defines (compute_io.glsl's uniforms; the constants of an
+// export): the ray tree's depth, framework.glsl's scene_features bits, texture_lookup's code.
+int gpu_trace_depth(const Scene& scene, RenderMode mode);
+int gpu_feature_bits(const Scene& scene, RenderMode mode);
+int gpu_texture_lookup(const Scene& scene);
+
+// Throws GpuError ("SCENE: ...", one line) for what the GPU port cannot draw.
+void check_gpu_supported(const Scene& scene, RenderMode mode);
+
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
