@@ -73,25 +73,6 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
     gl.Uniform1i(at("texture_lookup"), gpu_texture_lookup(scene));
 }
 
-// Reports each stub whose flag is set, once per process (core/not_implemented.h's message).
-void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
-    static std::mutex mutex;
-    static std::map<std::string, std::unique_ptr<std::atomic<bool>>> reported;
-    for (std::size_t k = 0; k < shader.stubs.size() && k < 128; ++k) {
-        if (!(flags[k / 32] & (1u << (k % 32)))) continue;
-        const ShaderStub& s = shader.stubs[k];
-        std::atomic<bool>* once = nullptr;
-        {
-            std::lock_guard lock(mutex);
-            auto& slot = reported[s.file + ":" + std::to_string(s.line)];
-            if (!slot) slot = std::make_unique<std::atomic<bool>>(false);
-            once = slot.get();
-        }
-        report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
-                               *once);
-    }
-}
-
 }  // namespace
 
 int gpu_trace_depth(const Scene& scene, RenderMode mode) {
@@ -130,6 +111,25 @@ void check_gpu_supported(const Scene& scene, RenderMode mode) {
         throw GpuError(where +
                        ": the scene asks for a BVH and has none (is stage 06's build_bvh a "
                        "stub?); render it with --accelerator none");
+}
+
+// Reports each stub whose flag is set, once per process (core/not_implemented.h's message).
+void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
+    static std::mutex mutex;
+    static std::map<std::string, std::unique_ptr<std::atomic<bool>>> reported;
+    for (std::size_t k = 0; k < shader.stubs.size() && k < 128; ++k) {
+        if (!(flags[k / 32] & (1u << (k % 32)))) continue;
+        const ShaderStub& s = shader.stubs[k];
+        std::atomic<bool>* once = nullptr;
+        {
+            std::lock_guard lock(mutex);
+            auto& slot = reported[s.file + ":" + std::to_string(s.line)];
+            if (!slot) slot = std::make_unique<std::atomic<bool>>(false);
+            once = slot.get();
+        }
+        report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
+                               *once);
+    }
 }
 
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
@@ -243,7 +243,7 @@ Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& op
 
     std::uint32_t flags[4];
     std::memcpy(flags, &output[0], sizeof flags);
-    report_stubs(shader, flags);
+    report_gpu_stubs(shader, flags);
 
     // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
     Image image(width, height);

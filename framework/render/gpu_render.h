@@ -5,6 +5,7 @@
 // On the "calls student code" side: the GLSL it compiles is the student's.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <stdexcept>
@@ -54,6 +55,10 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
 // Renders like render() (render/render.h): debug modes store display values, a pixel that reached
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options = {});
+
+// Reports each stub whose bit is set in the shader's stub_flags (compute_io.glsl), once per
+// process, as core/not_implemented.h does for C++ stubs.
+void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]);
 
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
