@@ -1,7 +1,8 @@
-// The framework's side of the GPU stage (stage 09): the types the student functions share, the
-// scene's uniforms, the output buffer, the stub flag, and the given geometry helpers (the GLSL
-// twins of framework/core/hit.h and framework/geometry/offset.cpp). Included by trace.comp after
-// scene_layout.glsl; everything here is float (GLSL has double, most GPUs run it slowly).
+// The framework's side of the GPU stage (stage 09): the types the student functions share and
+// the given geometry helpers (the GLSL twins of framework/core/hit.h and
+// framework/geometry/offset.cpp). Included by trace.glsl after the scene's structs and what holds
+// the scene (compute_io.glsl's uniforms, or an export's constants); everything here is float
+// (GLSL has double, most GPUs run it slowly).
 
 // A macro: uintBitsToFloat is not a constant expression for glslang.
 #define kInfinity uintBitsToFloat(0x7f800000u)
@@ -34,46 +35,15 @@ int primitive_id(int kind, int index) { return (kind << kKindShift) | index; }
 int primitive_kind(int id) { return id >> kKindShift; }
 int primitive_index(int id) { return id & ((1 << kKindShift) - 1); }
 
-// The scene besides its buffers (set by framework/render/gpu_render.cpp).
-struct Camera {
-    int projection;  // 0 perspective, 1 orthographic
-    vec3 eye, u, v, w;  // u right, v up, the camera looks along -w
-    float vertical_fov_degrees;
-    float view_height;
-};
-uniform Camera camera;
-uniform ivec2 image_size;
-uniform ivec4 primitive_counts;  // spheres, planes, triangles, boxes
-uniform int light_count;
-uniform int material_count;
-uniform vec3 background_colour;
-uniform vec3 ambient_light;
-uniform bool fresnel;
-uniform int render_mode;  // RenderMode: 0 directions 1 normals 2 depth 3 primitive 4 shaded 5 bvh_visits
-uniform int max_depth;    // the scene's, at most MAX_DEPTH
-// What the scene uses, at run time: a specialised shader has exactly these compiled in (the
-// HAS_ defines); the --uber one compiles everything and tests these bits instead.
-uniform int scene_features;
+// What the scene uses when the shader has it compiled in (scene_features: compute_io.glsl, or
+// the constants of an export); the --uber shader tests these bits at run time.
 const int kFeatureBvh = 1, kFeatureShadows = 2, kFeatureVertexNormals = 4, kFeatureVertexUvs = 8,
           kFeatureRefraction = 16;
 bool scene_has(int feature) { return (scene_features & feature) != 0; }
 
-// Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
-layout(std430, binding = 15) buffer Output {
-    uint stub_flags[4];
-    vec4 pixels[];  // rgb colour; a: depth (-1 miss), -2 when the pixel reached a stub
-};
-
 // Stage 06's BvhStats::nodes_visited, without pointers: bvh_intersect_nearest adds each node whose
 // box it tests (the bvh_visits view reads it).
 uint bvh_nodes_visited = 0u;
-
-bool rt_stub_reached = false;
-// What RT_NOT_IMPLEMENTED("...") in a student file becomes (gl/shader_source.h).
-void rt_not_implemented(int stub) {
-    atomicOr(stub_flags[stub / 32], 1u << uint(stub % 32));
-    rt_stub_reached = true;
-}
 
 // A hit made ready for shading and for spawning rays (geometry/offset.h).
 struct SurfacePoint {

@@ -24,6 +24,13 @@ struct TextureImage { ivec4 width_height_first; };
 struct Environment { ivec4 kind_image; ivec4 faces_px_nx_py_ny; ivec4 faces_pz_nz; vec4 intensity_rotate_y; };
 struct Light { vec4 position_kind; vec4 direction; vec4 intensity; vec4 attenuation; };
 struct BvhNode { vec3 min; uint first; vec3 max; uint count; };
+// The camera (set as the uniform `camera`, or baked in as a constant by rt export-shadertoy).
+struct Camera {
+    int projection;  // 0 perspective, 1 orthographic
+    vec3 eye, u, v, w;  // u right, v up, the camera looks along -w
+    float vertical_fov_degrees;
+    float view_height;
+};
 
 layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres[]; };
 layout(std430, binding = 1) readonly buffer Planes { Plane planes[]; };

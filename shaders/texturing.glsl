@@ -1,8 +1,7 @@
 // The framework's texturing step and background, as framework/render/texturing.cpp and
 // framework/render/background.cpp do them on the CPU, over the student's stage 07-08 GLSL.
-// Only nearest and bilinear lookups: --texture-filter oiio has no GPU port (render_gpu says so).
-
-uniform int texture_lookup;  // 0 each texture's own filter, 1 all nearest, 2 all bilinear
+// Only nearest and bilinear lookups (texture_lookup, set by the host, may force one for every
+// image): --texture-filter oiio has no GPU port (render_gpu says so).
 
 #ifdef HAS_MAPS
 // The vertex uvs of a triangle; (0, 0), (1, 0), (0, 1) when the scene has none.

@@ -8,6 +8,7 @@
 //   rt compare ACTUAL.png REFERENCE.png            the grader's image metric, one line
 //   rt info SCENE.json           what the scene contains and which features the renderer uses
 //   rt gl-info [--window]        the OpenGL context the GPU stage will use
+//   rt export-shadertoy SCENE.json -o scene.glsl   stage 09's GLSL and the scene for Shadertoy
 //   rt fmt [--check] SCENE.json...   rewrite scene files in canonical form (--check: only report)
 #include <CLI/CLI.hpp>
 
@@ -35,6 +36,7 @@
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
+#include "render/shadertoy_export.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 #ifdef RT_HAVE_VIEW
@@ -191,6 +193,21 @@ int run_info(const std::string& file) {
                     accel.primitives, accel.nodes, sizeof(BvhNode), accel.depth, accel.build_ms);
     else if (accel.requested)
         std::printf("  BVH: requested but not built (%s)\n", accel.problem.c_str());
+    return 0;
+}
+
+// `rt export-shadertoy`: the scene and stages/09-gpu's GLSL as one Shadertoy fragment shader.
+int run_export_shadertoy(const std::string& file, const fs::path& output,
+                         std::optional<RenderMode> mode) {
+    Scene scene = load_scene(file);
+    build_acceleration(scene);
+    const ShadertoyExport shader = export_shadertoy(scene, mode.value_or(scene.mode));
+    std::ofstream out(output, std::ios::binary);
+    if (!(out << shader.text))
+        throw std::runtime_error("rt: error: " + output.string() +
+                                 ": cannot write the shader; check that its folder exists");
+    std::printf("%s: %zu KB; paste it into Shadertoy's Image tab\n", output.string().c_str(),
+                (shader.text.size() + 1023) / 1024);
     return 0;
 }
 
@@ -419,6 +436,17 @@ int main(int argc, char** argv) {
         ->add_option("--gl", gl_kind, "create the GPU stage's context instead and print its limits")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
 
+    std::string export_scene, export_mode;
+    fs::path export_output;
+    auto* export_cmd = app.add_subcommand(
+        "export-shadertoy",
+        "write the scene and stages/09-gpu's GLSL as one self-contained Shadertoy shader "
+        "(stages/09-gpu/README.md#publish-on-shadertoy)");
+    export_cmd->add_option("scene", export_scene, "scene file (.json)")->required();
+    export_cmd->add_option("-o,--output", export_output, "the shader to write (.glsl)")->required();
+    export_cmd->add_option("--mode", export_mode, "override the scene's mode")
+        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+
     std::vector<std::string> fmt_files;
     bool fmt_check = false;
     auto* fmt_cmd = app.add_subcommand(
@@ -444,6 +472,10 @@ int main(int argc, char** argv) {
         if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return gl_kind.empty() ? run_gl_info(gl_window) : run_gl_context_info(gl_kind);
         if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);
+        if (*export_cmd)
+            return run_export_shadertoy(
+                export_scene, export_output,
+                export_mode.empty() ? std::nullopt : std::optional(kModes.at(export_mode)));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -28,18 +28,6 @@ const Color kStubColor{1, 0, 1};
 constexpr int kMaxGpuLights = 64;  // visibility is a vec3[MAX_LIGHTS] per invocation
 constexpr int kMaxGpuDepth = 64;   // the Frame stack: as the CPU's kMaxTraceDepth
 
-int trace_depth(const Scene& scene, RenderMode mode) {
-    return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
-}
-
-// The bits of framework.glsl's scene_features: what the scene uses, tested at run time.
-int feature_bits(const Scene& scene, RenderMode mode) {
-    const bool shaded = mode == RenderMode::Shaded;
-    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
-           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
-           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
-}
-
 Color display_value(Color v) {
     return Color(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b));
 }
@@ -82,16 +70,32 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
                  scene.ambient_light.b);
     gl.Uniform1i(at("fresnel"), scene.fresnel ? 1 : 0);
     gl.Uniform1i(at("render_mode"), int(mode));
-    gl.Uniform1i(at("max_depth"), trace_depth(scene, mode));
-    gl.Uniform1i(at("scene_features"), feature_bits(scene, mode));
+    gl.Uniform1i(at("max_depth"), gpu_trace_depth(scene, mode));
+    gl.Uniform1i(at("scene_features"), gpu_feature_bits(scene, mode));
     // A uniform the shader does not use (no textures) has location -1, which GL ignores.
-    const int lookup = scene.texture_lookup == TextureLookup::Nearest    ? 1
-                       : scene.texture_lookup == TextureLookup::Bilinear ? 2
-                                                                         : 0;
-    gl.Uniform1i(at("texture_lookup"), lookup);
+    gl.Uniform1i(at("texture_lookup"), gpu_texture_lookup(scene));
 }
 
-void check_supported(const Scene& scene, RenderMode mode) {
+}  // namespace
+
+int gpu_trace_depth(const Scene& scene, RenderMode mode) {
+    return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
+}
+
+int gpu_feature_bits(const Scene& scene, RenderMode mode) {
+    const bool shaded = mode == RenderMode::Shaded;
+    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
+           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
+           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
+}
+
+int gpu_texture_lookup(const Scene& scene) {
+    return scene.texture_lookup == TextureLookup::Nearest    ? 1
+           : scene.texture_lookup == TextureLookup::Bilinear ? 2
+                                                             : 0;
+}
+
+void check_gpu_supported(const Scene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
@@ -118,7 +122,7 @@ void check_supported(const Scene& scene, RenderMode mode) {
 }
 
 // Reports each stub whose flag is set, once per process (core/not_implemented.h's message).
-void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
+void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
     static std::mutex mutex;
     static std::map<std::string, std::unique_ptr<std::atomic<bool>>> reported;
     for (std::size_t k = 0; k < shader.stubs.size() && k < 128; ++k) {
@@ -151,8 +155,6 @@ void report_stubs(const AssembledShader& shader, const std::uint32_t flags[4]) {
     }
 }
 
-}  // namespace
-
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     std::string d;
     auto define = [&](bool on, const char* name) {
@@ -178,7 +180,7 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     define(shaded && f.environment, "HAS_ENVIRONMENT");
     const std::size_t lights = uber ? kMaxGpuLights : std::max<std::size_t>(1, scene.lights.size());
     d += "#define MAX_LIGHTS " + std::to_string(lights) + "\n";
-    d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : trace_depth(scene, mode)) +
+    d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : gpu_trace_depth(scene, mode)) +
          "\n";
     return d;
 }
@@ -231,7 +233,7 @@ const GpuRenderer::Program& GpuRenderer::program_for(const Scene& scene, RenderM
 }
 
 Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out) {
-    check_supported(scene, mode);
+    check_gpu_supported(scene, mode);
     GpuTimings timings;
     const bool fresh = programs_.find(gpu_defines(scene, mode, options_.uber)) == programs_.end();
     const Program& program = program_for(scene, mode, timings);
@@ -293,7 +295,7 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
 
     std::uint32_t flags[4];
     std::memcpy(flags, &output[0], sizeof flags);
-    report_stubs(program.shader, flags);
+    report_gpu_stubs(program.shader, flags);
 
     // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
     Image image(width, height);

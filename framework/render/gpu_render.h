@@ -5,6 +5,7 @@
 // On the "calls student code" side: the GLSL it compiles is the student's.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -40,6 +41,15 @@ struct GpuError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What the shader is told besides the #defines (compute_io.glsl's uniforms; the constants of an
+// export): the ray tree's depth, framework.glsl's scene_features bits, texture_lookup's code.
+int gpu_trace_depth(const Scene& scene, RenderMode mode);
+int gpu_feature_bits(const Scene& scene, RenderMode mode);
+int gpu_texture_lookup(const Scene& scene);
+
+// Throws GpuError ("SCENE: ...", one line) for what the GPU port cannot draw.
+void check_gpu_supported(const Scene& scene, RenderMode mode);
+
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
@@ -73,6 +83,10 @@ class GpuRenderer {
 // Renders like render() (render/render.h): debug modes store display values, a pixel that reached
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options = {});
+
+// Reports each stub whose bit is set in the shader's stub_flags (compute_io.glsl), once per
+// process, as core/not_implemented.h does for C++ stubs.
+void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]);
 
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,

@@ -1,5 +1,5 @@
 // Stage 09, reflection and refraction: stage 05 (stages/05-recursion/recursion.cpp) in GLSL.
-// The recursion itself is gone: the framework's loop in shaders/trace.comp keeps an explicit
+// The recursion itself is gone: the framework's loop in shaders/trace.glsl keeps an explicit
 // stack of rays, as framework/render/shade.cpp does. GLSL has reflect() and refract() built in
 // (with other conventions), so these are named *_direction.
 // Handout: stages/09-gpu/README.md#reflection-and-refraction.

@@ -18,6 +18,7 @@
 #include "release.h"
 #include "render/accelerate.h"
 #include "render/gpu_render.h"
+#include "render/shadertoy_export.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
 
@@ -109,7 +110,7 @@ TEST(GpuShader, MissingIncludeIsOneLine) {
                    options);
         FAIL() << "rendered without bvh.glsl";
     } catch (const GpuError& e) {
-        EXPECT_NE(std::string(e.what()).find("shaders/trace.comp:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("shaders/trace.glsl:"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("\"bvh.glsl\" not found"), std::string::npos)
             << e.what();
     }
@@ -193,6 +194,50 @@ TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
             << e.what();
         EXPECT_NE(std::string(e.what()).find("has no GPU port"), std::string::npos) << e.what();
     }
+}
+
+// rt export-shadertoy refuses, in one line naming the scene, what it cannot bake.
+TEST(GpuShader, ShadertoyExportRefuses) {
+    const Scene sky = small_scene("08-environment/scenes/procedural_sky.json");
+    try {
+        export_shadertoy(sky, sky.mode);
+        FAIL() << "exported a 256-wide sky";
+    } catch (const GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("procedural_sky.json: its images hold"),
+                  std::string::npos)
+            << e.what();
+    }
+    const Scene depth = small_scene("02-intersections/scenes/plane_depth.json");
+    try {
+        export_shadertoy(depth, RenderMode::Depth);
+        FAIL() << "exported the depth view";
+    } catch (const GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("plane_depth.json: mode \"depth\""), std::string::npos)
+            << e.what();
+    }
+}
+
+// A starter tree's export (every stub in) is still GLSL ES 3.00 that Shadertoy compiles.
+TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
+    if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
+        GTEST_SKIP() << "glslangValidator not installed (apt-get install glslang-tools)";
+    StudentCopy stubs("shadertoy");
+    for (const char* f : kStudentFiles)
+        write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
+    const Scene scene = small_scene("05-recursion/scenes/whitted.json");
+    const std::string text =
+        "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+        "uniform vec3 iResolution;\n" +
+        export_shadertoy(scene, scene.mode, stubs.dir()).text +
+        "out vec4 colour;\nvoid main() { mainImage(colour, gl_FragCoord.xy); }\n";
+    const fs::path file =
+        fs::temp_directory_path() / ("rt-stage09-toy-" + std::to_string(getpid()) + ".frag");
+    write(file, text);
+    const fs::path log = file.string() + ".log";
+    const int status = std::system(
+        ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
+    EXPECT_EQ(status, 0) << read(log);
+    fs::remove(file), fs::remove(log);
 }
 
 }  // namespace

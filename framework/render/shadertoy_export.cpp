@@ -1,0 +1,266 @@
+#include "render/shadertoy_export.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/source_dir.h"
+#include "gpu/gpu_scene.h"
+#include "render/gpu_render.h"
+#include "render/render.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+// The shortest literal that reads back as exactly `x` (std::to_chars round-trips).
+std::string literal(float x) {
+    if (!std::isfinite(x))
+        throw GpuError("rt: error: the scene holds a value that is not finite (" +
+                       std::to_string(x) + "), which a GLSL constant cannot spell");
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+    std::string s(buffer, end);
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string literal(int x) {
+    return std::to_string(x);
+}
+std::string literal(std::uint32_t x) {
+    return std::to_string(x) + "u";
+}
+
+// A float whose bits hold an int (gpu_scene.h's int_bits: a material, a light's kind). glslang
+// does not fold intBitsToFloat into a constant, so a small non-negative int is written as the
+// denormal float of the same bits (its shortest literal reads back exactly).
+std::string bits_literal(float x) {
+    int bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    if (bits < 0 || bits >= (1 << 23))
+        throw GpuError("rt: error: an index of " + std::to_string(bits) +
+                       " (a material or light kind) cannot be baked into a constant");
+    return literal(x);
+}
+
+// "vec4(a, b, c, d)" and the like; `bits_w`: w holds an int's bits.
+template <typename V>
+std::string vec(const char* type, const V& v, int n, bool bits_w = false) {
+    std::string s = std::string(type) + "(";
+    for (int i = 0; i < n; ++i)
+        s += (i ? ", " : "") + (bits_w && i == 3 ? bits_literal(v[i]) : literal(v[i]));
+    return s + ")";
+}
+std::string v4(const glm::vec4& v, bool bits_w = false) {
+    return vec("vec4", v, 4, bits_w);
+}
+std::string iv4(const glm::ivec4& v) {
+    return vec("ivec4", v, 4);
+}
+std::string v3(const Vec3& v) {
+    return "vec3(" + literal(float(v.x)) + ", " + literal(float(v.y)) + ", " + literal(float(v.z)) +
+           ")";
+}
+
+// `const T name[N] = T[N](...)`, one element a line. GLSL has no empty arrays: an empty one gets
+// `dummy` (the counts keep the shader from reading it).
+template <typename T, typename F>
+std::string const_array(const char* type, const char* name, const std::vector<T>& items, F format,
+                        const std::string& dummy) {
+    const std::size_t n = std::max<std::size_t>(1, items.size());
+    std::string s = "const " + std::string(type) + " " + name + "[" + std::to_string(n) +
+                    "] = " + type + "[" + std::to_string(n) + "](\n";
+    for (std::size_t i = 0; i < n; ++i)
+        s += "    " + (items.empty() ? dummy : format(items[i])) + (i + 1 < n ? ",\n" : ");\n");
+    return s;
+}
+
+std::string scene_constants(const Scene& scene, RenderMode mode) {
+    const gpu::GpuScene g = gpu::pack_scene(scene);
+    const Camera& c = scene.camera;
+    std::string s = "// The scene (" + (scene.source.empty() ? "built in code" : scene.source) +
+                    "), as trace.comp reads it from its storage buffers and uniforms.\n";
+    s += "const Camera camera = Camera(" +
+         literal(c.projection == Projection::Perspective ? 0 : 1) + ", " + v3(c.eye) + ", " +
+         v3(c.u) + ", " + v3(c.v) + ", " + v3(c.w) + ", " + literal(float(c.vertical_fov_degrees)) +
+         ", " + literal(float(c.view_height)) + ");\n";
+    s += "const ivec4 primitive_counts = ivec4(" + std::to_string(scene.spheres.size()) + ", " +
+         std::to_string(scene.planes.size()) + ", " + std::to_string(scene.triangles.size()) +
+         ", " + std::to_string(scene.boxes.size()) + ");\n";
+    s += "const int light_count = " + std::to_string(scene.lights.size()) + ";\n";
+    s += "const int material_count = " + std::to_string(scene.materials.size()) + ";\n";
+    s += "const vec3 background_colour = " + vec("vec3", scene.background, 3) + ";\n";
+    s += "const vec3 ambient_light = " + vec("vec3", scene.ambient_light, 3) + ";\n";
+    s += std::string("const bool fresnel = ") + (scene.fresnel ? "true" : "false") + ";\n";
+    s += "const int render_mode = " + std::to_string(int(mode)) + ";\n";
+    s += "const int max_depth = " + std::to_string(gpu_trace_depth(scene, mode)) + ";\n";
+    s += "const int scene_features = " + std::to_string(gpu_feature_bits(scene, mode)) + ";\n";
+    s += "const int texture_lookup = " + std::to_string(gpu_texture_lookup(scene)) + ";\n";
+
+    const std::string z4 = "vec4(0.0)", zi4 = "ivec4(0)";
+    s += const_array(
+        "Sphere", "spheres", g.spheres,
+        [](const gpu::GpuSphere& x) {
+            return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
+        },
+        "Sphere(" + z4 + ", " + zi4 + ")");
+    s += const_array(
+        "Triangle", "triangles", g.triangles,
+        [](const gpu::GpuTriangle& x) {
+            return "Triangle(" + vec("uvec4", x.vertices_material, 4) + ")";
+        },
+        "Triangle(uvec4(0u))");
+    auto vec4_item = [](const glm::vec4& x) { return v4(x); };
+    s += const_array("vec4", "positions", g.positions, vec4_item, z4);
+    s += const_array("vec4", "normals", g.normals, vec4_item, z4);
+    s += const_array(
+        "vec2", "uvs", g.uvs, [](const glm::vec2& x) { return vec("vec2", x, 2); }, "vec2(0.0)");
+    s += const_array(
+        "Material", "materials", g.materials,
+        [](const gpu::GpuMaterial& m) {
+            std::string t = "Material(" + v4(m.ambient) + ", " + v4(m.diffuse) + ", " +
+                            v4(m.specular_shininess) + ", " + v4(m.emissive) + ", " +
+                            v4(m.reflective) + ", " + v4(m.transmissive_ior) + ", " + iv4(m.maps) +
+                            ", vec4[4](";
+            for (int i = 0; i < 4; ++i) t += v4(m.map_transform[i]) + (i < 3 ? ", " : "))");
+            return t;
+        },
+        "Material(" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + zi4 +
+            ", vec4[4](" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + "))");
+    s += const_array(
+        "BvhNode", "bvh_nodes", g.bvh_nodes,
+        [](const BvhNode& n) {
+            return "BvhNode(" + vec("vec3", n.min, 3) + ", " + literal(n.first) + ", " +
+                   vec("vec3", n.max, 3) + ", " + literal(n.count) + ")";
+        },
+        "BvhNode(vec3(0.0), 0u, vec3(0.0), 0u)");
+    s += const_array(
+        "uint", "bvh_primitives", g.bvh_primitives, [](std::uint32_t x) { return literal(x); },
+        "0u");
+    s += const_array(
+        "Texture", "textures", g.textures,
+        [](const gpu::GpuTexture& t) {
+            return "Texture(" + iv4(t.kind_image_filter_wrap) + ", " + v4(t.a_srgb) + ", " +
+                   v4(t.b_scale) + ")";
+        },
+        "Texture(" + zi4 + ", " + z4 + ", " + z4 + ")");
+    s += const_array(
+        "TextureImage", "texture_images", g.texture_images,
+        [](const gpu::GpuTextureImage& t) {
+            return "TextureImage(" + iv4(t.width_height_first) + ")";
+        },
+        "TextureImage(" + zi4 + ")");
+    s += const_array("vec4", "texels", g.texels, vec4_item, z4);
+    s += const_array(
+        "Environment", "environment", g.environment,
+        [](const gpu::GpuEnvironment& e) {
+            return "Environment(" + iv4(e.kind_image) + ", " + iv4(e.faces_px_nx_py_ny) + ", " +
+                   iv4(e.faces_pz_nz) + ", " + v4(e.intensity_rotate_y) + ")";
+        },
+        "Environment(" + zi4 + ", " + zi4 + ", " + zi4 + ", " + z4 + ")");
+
+    s += const_array(
+        "Plane", "planes", g.planes,
+        [](const gpu::GpuPlane& p) {
+            return "Plane(" + v4(p.point_material, true) + ", " + v4(p.normal) + ")";
+        },
+        "Plane(" + z4 + ", " + z4 + ")");
+    s += const_array(
+        "Box", "boxes", g.boxes,
+        [](const gpu::GpuBox& b) {
+            return "Box(" + v4(b.min_material, true) + ", " + v4(b.max) + ")";
+        },
+        "Box(" + z4 + ", " + z4 + ")");
+    s += const_array(
+        "Light", "lights", g.lights,
+        [](const gpu::GpuLight& l) {
+            return "Light(" + v4(l.position_kind, true) + ", " + v4(l.direction) + ", " +
+                   v4(l.intensity) + ", " + v4(l.attenuation) + ")";
+        },
+        "Light(" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ")");
+    return s;
+}
+
+// Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
+// dropped from declarations inside functions (ES takes it only with constant initialisers).
+std::string for_shadertoy(const AssembledShader& shader) {
+    static const std::regex line_re(R"(^#line (\d+) (\d+)$)");
+    static const std::regex local_const_re(R"(^(\s+)const\s+)");
+    constexpr long kFileLines = 100000;  // shader_source.cpp's encoding of the file in the line
+    std::istringstream lines(shader.text);
+    std::string line, out;
+    int depth = 0;
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, line_re)) {
+            const std::size_t file = std::stoul(m[2]);
+            if (std::stol(m[1]) % kFileLines == 1 && file < shader.files.size())
+                out += "// ---- " + shader.files[file] + " ----\n";
+            continue;
+        }
+        if (depth > 0) line = std::regex_replace(line, local_const_re, "$1");
+        const std::string code = line.substr(0, line.find("//"));
+        for (char ch : code) depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
+        out += line + "\n";
+    }
+    return out;
+}
+
+// scene_layout.glsl's structs, without its storage buffers (the export's arrays are constants).
+std::string scene_structs() {
+    const fs::path file = source_dir() / "shaders/scene_layout.glsl";
+    std::ifstream in(file);
+    if (!in) throw GpuError(display_path(file) + ": cannot read the shader file");
+    std::string line, out;
+    while (std::getline(in, line))
+        if (!line.starts_with("layout(")) out += line + "\n";
+    return out;
+}
+
+void check_exportable(const Scene& scene, RenderMode mode) {
+    const std::string where = scene.source.empty() ? "the scene" : scene.source;
+    if (mode == RenderMode::Depth || mode == RenderMode::BvhVisits)
+        throw GpuError(where + ": mode \"" + to_string(mode) +
+                       "\" scales each pixel by the whole image's range, which one Shadertoy "
+                       "pixel cannot know; export it with --mode normals or --mode shaded");
+    if (scene.texels.size() > kMaxShadertoyTexels)
+        throw GpuError(where + ": its images hold " + std::to_string(scene.texels.size()) +
+                       " texels; Shadertoy cannot load the scene's image files and an export "
+                       "bakes at most " +
+                       std::to_string(kMaxShadertoyTexels) +
+                       " as constants: use a checker or marble texture, or a smaller image");
+    check_gpu_supported(scene, mode);
+}
+
+}  // namespace
+
+ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::path& student_dir) {
+    check_exportable(scene, mode);
+    const fs::path students = student_dir.empty() ? source_dir() / "stages/09-gpu" : student_dir;
+    const AssembledShader shader =
+        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students}, "");
+    if (!shader.error.empty()) throw GpuError(shader.error);
+    ShadertoyExport out;
+    out.text = "// " + (scene.source.empty() ? std::string("A scene") : scene.source) +
+               " in mode " + to_string(mode) +
+               ", exported by `rt export-shadertoy` (stages/09-gpu/README.md#publish-on-shadertoy)"
+               ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "
+               "field of view; the image takes the canvas's shape.\n\n" +
+               gpu_defines(scene, mode) + "\n" + scene_structs() + "\n" +
+               scene_constants(scene, mode) + "\n" + for_shadertoy(shader);
+    if (out.text.size() > kMaxShadertoyBytes)
+        throw GpuError((scene.source.empty() ? "the scene" : scene.source) + ": its export " +
+                       "would be " + std::to_string(out.text.size() / 1024) +
+                       " KB of constants and code, and an export takes at most " +
+                       std::to_string(kMaxShadertoyBytes / 1024) +
+                       " KB (a browser compiles it all at every load): use fewer triangles");
+    out.stubs = shader.stubs;
+    return out;
+}
+
+}  // namespace rt

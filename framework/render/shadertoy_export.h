@@ -1,0 +1,40 @@
+// rt export-shadertoy: the scene and the student's stage 09 GLSL as one self-contained fragment
+// shader in Shadertoy's form (mainImage, iResolution), the scene baked in as constants and only
+// the code the scene needs compiled in (the #defines of gpu_defines). Shadertoy compiles GLSL ES
+// 3.00, so the export drops `const` from local variables (ES allows it only on constant
+// initialisers) and writes no #line directives (its editor counts the file's own lines).
+//
+// On the "calls student code" side: the GLSL it writes is the student's.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gl/shader_source.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct ShadertoyExport {
+    std::string text;               // the shader, to paste into Shadertoy's Image tab
+    std::vector<ShaderStub> stubs;  // by the value of rt_first_stub (stubs paint magenta)
+};
+
+// Images are baked as constant arrays up to this many texels in all; Shadertoy cannot load the
+// scene's image files, and big constant arrays compile slowly (stage 07's 64x64 image, 4096
+// texels, did not draw 64x48 pixels in 5 minutes under llvmpipe).
+constexpr std::size_t kMaxShadertoyTexels = 1024;
+// And the whole export up to this size (a browser compiles it all at every load): stage 06's
+// meshes with their BVHs come to 10-15 MB.
+constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
+
+// The export of `scene` (its BVH built when it has one) drawn in `mode`. Throws GpuError
+// (render/gpu_render.h), one line naming the scene, for what it cannot export: the depth and
+// bvh_visits views (they scale by the whole image's range, which one pixel cannot know), images
+// beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes, and what render --gpu cannot
+// draw either.
+ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode,
+                                 const std::filesystem::path& student_dir = {});
+
+}  // namespace rt

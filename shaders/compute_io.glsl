@@ -1,0 +1,30 @@
+// What the compute shader (trace.comp) takes from the host and gives back: the scene's uniforms
+// (set by framework/render/gpu_render.cpp), the output buffer and the stub flags. An export for
+// Shadertoy (shadertoy.glsl) declares the same names as constants instead.
+uniform Camera camera;
+uniform ivec2 image_size;
+uniform ivec4 primitive_counts;  // spheres, planes, triangles, boxes
+uniform int light_count;
+uniform int material_count;
+uniform vec3 background_colour;
+uniform vec3 ambient_light;
+uniform bool fresnel;
+uniform int render_mode;  // RenderMode: 0 directions 1 normals 2 depth 3 primitive 4 shaded 5 bvh_visits
+uniform int max_depth;    // the scene's, at most MAX_DEPTH
+// What the scene uses, at run time: a specialised shader has exactly these compiled in (the
+// HAS_ defines); the --uber one compiles everything and tests these bits instead.
+uniform int scene_features;
+uniform int texture_lookup;  // 0 each texture's own filter, 1 all nearest, 2 all bilinear
+
+// Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
+layout(std430, binding = 15) buffer Output {
+    uint stub_flags[4];
+    vec4 pixels[];  // rgb colour; a: depth (-1 miss), -2 when the pixel reached a stub
+};
+
+bool rt_stub_reached = false;
+// What RT_NOT_IMPLEMENTED("...") in a student file becomes (gl/shader_source.h).
+void rt_not_implemented(int stub) {
+    atomicOr(stub_flags[stub / 32], 1u << uint(stub % 32));
+    rt_stub_reached = true;
+}

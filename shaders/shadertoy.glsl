@@ -1,0 +1,33 @@
+// rt export-shadertoy's entry point: the tracer (trace.glsl) as a Shadertoy fragment shader. The
+// command writes, before this file, the scene's #defines, its structs (scene_layout.glsl without
+// the storage buffers) and the whole scene as constants of the same names the compute shader
+// reads from its buffers and uniforms (framework/render/shadertoy_export.cpp).
+
+ivec2 image_size;  // the canvas: mainImage sets it from Shadertoy's iResolution
+
+bool rt_stub_reached = false;
+// Shadertoy has nowhere to report a stub: its pixels turn magenta. rt_first_stub says which stub
+// (the export's test reads it through a wrapper; Shadertoy ignores it).
+int rt_first_stub = -1;
+void rt_not_implemented(int stub) {
+    if (rt_first_stub < 0) rt_first_stub = stub;
+    rt_stub_reached = true;
+}
+
+#include "trace.glsl"
+
+// image/image.cpp's linear_to_srgb: Shadertoy shows fragColor as sRGB-encoded bytes.
+float rt_encode_srgb(float x) {
+    if (!(x > 0.0)) return 0.0;
+    if (x >= 1.0) return 1.0;
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    image_size = ivec2(iResolution.xy);
+    // Shadertoy's fragCoord has y up; the camera's image points have y down.
+    vec4 result = trace_pixel(vec2(fragCoord.x, iResolution.y - fragCoord.y));
+    vec3 c = result.rgb;
+    if (render_mode == 4) c = vec3(rt_encode_srgb(c.r), rt_encode_srgb(c.g), rt_encode_srgb(c.b));
+    fragColor = vec4(c, 1.0);  // the debug modes' values are display values already
+}

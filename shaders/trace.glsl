@@ -1,0 +1,219 @@
+// The tracer both entry points share: trace.comp (the compute shader of rt render --gpu) and
+// shadertoy.glsl (rt export-shadertoy). Before it come the scene's structs and what holds the
+// scene: trace.comp's storage buffers and uniforms, or an export's constants. The HAS_ defines
+// (listed in trace.comp) say what the scene needs; the student files (stages/09-gpu/) come from
+// the include folders the host passes.
+#if defined(HAS_TEXTURES) || defined(HAS_NORMAL_MAPS)
+#define HAS_MAPS  // some material has a map: texture coordinates and the texturing step
+#endif
+#if defined(HAS_IMAGE_TEXTURES) || defined(HAS_ENVIRONMENT)
+#define HAS_IMAGE_LOOKUP  // stage 07's image lookups (the environment uses sample_bilinear)
+#endif
+
+#include "framework.glsl"
+#include "camera.glsl"
+#include "intersect.glsl"
+
+// Given: one primitive by its global id (stage 06's intersect_primitive), for the BVH queries.
+bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
+    const int i = primitive_index(id);
+    bool found = false;
+    int material = -1;
+    switch (primitive_kind(id)) {
+        case kSphere:
+            found = intersect_sphere(ray, spheres[i].center_radius, t_range, hit);
+            material = spheres[i].material.x;
+            break;
+        case kPlane:
+            found = intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz,
+                                    t_range, hit);
+            material = floatBitsToInt(planes[i].point_material.w);
+            break;
+        case kTriangle: {
+            vec3 a, b, c;
+            triangle_vertices(i, a, b, c);
+            found = intersect_triangle(ray, a, b, c, t_range, hit);
+            material = int(triangles[i].vertices_material.w);
+            break;
+        }
+        case kBox:
+            found = intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit);
+            material = floatBitsToInt(boxes[i].min_material.w);
+            break;
+    }
+    if (found) hit.primitive = id, hit.material = material;
+    return found;
+}
+
+#include "bvh.glsl"
+#include "shade.glsl"
+#include "recursion.glsl"
+#if defined(HAS_MAPS) || defined(HAS_ENVIRONMENT)
+#include "texture_helpers.glsl"
+#include "textures.glsl"
+#endif
+#ifdef HAS_ENVIRONMENT
+#include "environment.glsl"
+#endif
+#include "texturing.glsl"
+
+// render/accelerate.h's nearest_hit: the BVH when the scene has one, stage 02's loop otherwise.
+bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
+#ifdef HAS_BVH
+    if (scene_has(kFeatureBvh)) return bvh_intersect_nearest(ray, t_range, hit);
+#endif
+    return intersect_nearest(ray, t_range, hit);
+}
+
+Ray camera_ray(vec2 pixel) {
+    return camera.projection == 0 ? perspective_ray(pixel) : orthographic_ray(pixel);
+}
+
+// One ray's own work (render/shade.cpp's Frame): start_frame fills the last three.
+struct Frame {
+    Ray ray;
+    int depth;
+    vec3 colour;  // the local light
+    bool recurse;
+    SecondaryRays branches;
+};
+
+bool nonzero(vec3 c) { return c.r > 0.0 || c.g > 0.0 || c.b > 0.0; }
+
+// A frame's own work, as start_frame in render/shade.cpp: nearest hit, direct light with the
+// shadows, and the secondary rays when the material reflects or transmits.
+void start_frame(inout Frame f) {
+    Hit hit = no_hit();
+    f.recurse = false;
+    if (!nearest_hit(f.ray, Interval(0.0, kInfinity), hit)) {
+        f.colour = background(f.ray.direction);
+        return;
+    }
+    Material material = material_at(hit.material);
+    const SurfacePoint at = surface_point(f.ray, hit);
+    const vec3 to_viewer = -normalize(f.ray.direction);
+    vec3 lighting_normal = at.normal;
+#ifdef HAS_VERTEX_NORMALS
+    if (scene_has(kFeatureVertexNormals) && primitive_kind(hit.primitive) == kTriangle) {
+        const vec3 smooth_normal = shading_normal(primitive_index(hit.primitive), hit.uv);
+        if (smooth_normal != vec3(0)) lighting_normal = hit.front_face ? smooth_normal
+                                                                       : -smooth_normal;
+    }
+#endif
+#ifdef HAS_MAPS
+    // Stage 07: the material as its maps colour it here, and the normal-mapped normal.
+    apply_textures(hit, at, to_viewer, material, lighting_normal);
+#endif
+    vec3 visibility[MAX_LIGHTS];
+    for (int i = 0; i < MAX_LIGHTS; ++i) visibility[i] = vec3(1);
+#ifdef HAS_SHADOWS
+    // Only lights whose Blinn-Phong term is not zero get a shadow ray.
+    for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i) {
+        const LightSample s = illuminate(i, at.point);
+        visibility[i] = vec3(0);
+        if (blinn_phong(material, lighting_normal, to_viewer, s.direction, s.intensity) == vec3(0))
+            continue;
+#ifdef HAS_BVH
+        if (scene_has(kFeatureBvh) && !scene_has(kFeatureRefraction)) {
+            const ShadowRay shadow = shadow_ray(at, s);
+            visibility[i] = vec3(bvh_intersect_any(shadow.ray, shadow.t_range) ? 0.0 : 1.0);
+            continue;
+        }
+#endif
+        visibility[i] = light_transmittance(at, s);
+    }
+#endif
+    f.colour = direct_light(material, at.point, lighting_normal, to_viewer, visibility);
+    bool bounces = false;
+#ifdef HAS_REFLECTION
+    bounces = bounces || nonzero(material.reflective.rgb);
+#endif
+#ifdef HAS_REFRACTION
+    bounces = bounces || nonzero(material.transmissive_ior.rgb);
+#endif
+    f.recurse = f.depth < max_depth && bounces;
+    if (f.recurse) f.branches = secondary_rays(f.ray, at, material, fresnel);
+}
+
+// render/shade.cpp's trace: a loop over a fixed stack instead of recursion. Level k of the stack
+// keeps what recursion kept in its locals, each field in an array of its own: with an array of
+// Frame structs, llvmpipe (Mesa 22) drew wrong images with the uber shader's 65 levels even on
+// scenes 5 deep; this layout does not. (llvmpipe also ends all loops after 65535 iterations in
+// total per 8 invocations, so a ray tree much deeper than the course's max_depth 6 comes out
+// black there: stages/09-gpu/README.md.)
+vec3 trace(Ray ray) {
+    vec3 colour[MAX_DEPTH + 1];  // local light, then each branch's weighted colour as it completes
+    int next[MAX_DEPTH + 1];     // the branch to trace next: 0 reflected, 1 refracted ...
+    int end[MAX_DEPTH + 1];      // ... up to (not including) end
+    vec3 origin[2 * MAX_DEPTH + 2], direction[2 * MAX_DEPTH + 2];  // branch i of level k: 2k + i
+    vec3 weight[2 * MAX_DEPTH + 2];
+    int top = 0;
+    Frame f;
+    f.ray = ray;
+    for (;;) {
+        f.depth = top;
+        start_frame(f);
+        colour[top] = f.colour;
+        next[top] = 0, end[top] = 0;
+        if (f.recurse) {
+            const SecondaryRay a = f.branches.reflected, b = f.branches.refracted;
+            origin[2 * top] = a.ray.origin, direction[2 * top] = a.ray.direction;
+            origin[2 * top + 1] = b.ray.origin, direction[2 * top + 1] = b.ray.direction;
+            weight[2 * top] = a.weight, weight[2 * top + 1] = b.weight;
+            next[top] = a.valid ? 0 : 1;  // an invalid branch is skipped
+            end[top] = b.valid ? 2 : 1;
+        }
+        // Complete levels until one has a branch left (return at the root), as returns would.
+        while (!(next[top] < end[top] && top < MAX_DEPTH)) {
+            if (top == 0) return colour[0];
+            const vec3 child = colour[top];
+            --top;
+            colour[top] += weight[2 * top + next[top]] * child;
+            ++next[top];
+        }
+        // Descend into that branch, as a recursive call would.
+        f.ray = Ray(origin[2 * top + next[top]], direction[2 * top + next[top]]);
+        ++top;
+    }
+}
+
+// The primitive-id view (render/render.cpp): the surface's rank when all are listed spheres,
+// planes, triangles, boxes, hashed to a colour (the same integer hash as the CPU's).
+vec3 primitive_colour(int id) {
+    const int kind = primitive_kind(id);
+    int rank = primitive_index(id);
+    for (int k = 0; k < kind; ++k) rank += primitive_counts[k];
+    uint h = uint(rank + 1) * 2654435761u;
+    h ^= h >> 15, h *= 2246822519u, h ^= h >> 13;
+    return vec3(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.0 * 0.8 +
+           0.2;
+}
+
+// One pixel's value in render_mode at image point `pixel` (pixel units, y down): rgb the colour
+// (display values in the debug modes); a the hit distance (depth) or the node count
+// (bvh_visits), -1 for nothing, -2 when the pixel reached a stub.
+vec4 trace_pixel(vec2 pixel) {
+    const Ray ray = camera_ray(pixel);
+    vec4 result = vec4(0, 0, 0, -1);
+    if (render_mode == 0) {
+        if (!any(isinf(ray.direction)) && !any(isnan(ray.direction)))
+            result.rgb = 0.5 * (ray.direction + 1.0);
+    } else if (render_mode == 4) {
+        result.rgb = trace(ray);
+    } else if (render_mode == 5) {  // bvh_visits: the count goes through a, mapped on the host
+#ifdef HAS_BVH
+        Hit hit = no_hit();
+        bvh_intersect_nearest(ray, Interval(0.0, kInfinity), hit);
+        result.a = float(bvh_nodes_visited);
+#endif
+    } else {
+        Hit hit = no_hit();
+        if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {
+            result.rgb = render_mode == 3 ? primitive_colour(hit.primitive)
+                                          : 0.5 * (hit.normal + 1.0);
+            result.a = hit.t;
+        }
+    }
+    if (rt_stub_reached) result = vec4(1, 0, 1, -2);
+    return result;
+}
