@@ -4,6 +4,8 @@
 #   # expect-differs A B MIN       DIR/A.png and DIR/B.png differ in at least MIN pixels
 #   # expect-same A B              DIR/A.png and DIR/B.png are the same image (tolerance 0)
 #   # expect-files NAME...         the session wrote DIR/NAME.png
+#   # expect-scene FILE NAME       `rt render DIR/FILE` (a scene the session wrote) matches
+#                                  DIR/NAME.png under the grader's metric
 #   cmake -DRT=<rt> -DSCENE=<scene.json> -DSCRIPT=<session.txt> -DOUT=<dir> -P check_view.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/xvfb.cmake)
 rt_xvfb_ready(${OUT})
@@ -56,6 +58,20 @@ foreach(line ${lines})
     if(NOT failing EQUAL 0)
       message(FATAL_ERROR "${CMAKE_MATCH_1} and ${CMAKE_MATCH_2} differ in ${failing} pixels")
     endif()
+  elseif(line MATCHES "^# expect-scene ([^ ]+) ([^ ]+)$")
+    set(file ${CMAKE_MATCH_1})
+    set(name ${CMAKE_MATCH_2})
+    execute_process(COMMAND ${RT} render ${OUT}/${file} -q -o ${OUT}/cli-${file}.png
+                    RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "rt render ${OUT}/${file} (written by the session) failed: ${err}")
+    endif()
+    execute_process(COMMAND ${RT} compare ${OUT}/${name}.png ${OUT}/cli-${file}.png
+                    OUTPUT_VARIABLE cmp ERROR_VARIABLE err)
+    if(NOT cmp MATCHES ": match: ")
+      message(FATAL_ERROR "${file} does not render the view ${name} shows: ${cmp}${err}")
+    endif()
+    message(STATUS "${file}: ${cmp}")
   elseif(line MATCHES "^# expect-files (.*)$")
     separate_arguments(names UNIX_COMMAND "${CMAKE_MATCH_1}")
     foreach(name ${names})

@@ -185,14 +185,15 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     return d;
 }
 
+fs::path gpu_student_dir() {
+    // The grader points its sandboxed tests and renders at the GLSL it grades.
+    const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
+    return graded && *graded ? fs::path(graded) : source_dir() / "stages/09-gpu";
+}
+
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber) {
-    fs::path students = student_dir;
-    if (students.empty()) {
-        // The grader points its sandboxed tests and renders at the GLSL it grades.
-        const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
-        students = graded && *graded ? fs::path(graded) : source_dir() / "stages/09-gpu";
-    }
+    const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     return assemble_shader(source_dir() / "shaders/trace.comp", {students},
                            gpu_defines(scene, mode, uber));
 }

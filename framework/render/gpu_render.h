@@ -54,6 +54,10 @@ void check_gpu_supported(const Scene& scene, RenderMode mode);
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
 
+// Where the student's GLSL is read from: $RT_GPU_STUDENT_DIR when set (the grader's sandboxed
+// tests and renders: the submission being graded), else stages/09-gpu of the course tree.
+std::filesystem::path gpu_student_dir();
+
 // A GPU renderer that keeps its context and compiled programs between renders (the viewer, the
 // benchmark): programs are cached by their #defines, i.e. by the scene's feature mask, so a
 // camera change reuses the program and only uploads and traces. Lives on the thread that made

@@ -241,7 +241,7 @@ void check_exportable(const Scene& scene, RenderMode mode) {
 
 ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::path& student_dir) {
     check_exportable(scene, mode);
-    const fs::path students = student_dir.empty() ? source_dir() / "stages/09-gpu" : student_dir;
+    const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const AssembledShader shader =
         assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students}, "");
     if (!shader.error.empty()) throw GpuError(shader.error);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <thread>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "core/source_dir.h"
 #include "render/gpu_render.h"
 #include "render/render.h"
+#include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 #include "view/progressive.h"
 #include "view/view_script.h"
@@ -127,6 +129,42 @@ TEST(ViewCamera, ZoomMovesTowardThePivotAndPanMovesBoth) {
     EXPECT_GT(glm::dot(c.eye - before, c.u), 0);
 }
 
+TEST(ViewCamera, ProjectionSwitchKeepsThePivotsSizeAndUndoes) {
+    Camera c = whitted().camera;
+    ASSERT_EQ(c.projection, Projection::Perspective);
+    const Real fov = c.vertical_fov_degrees, distance = 5;
+    set_projection(c, distance, Projection::Orthographic);
+    EXPECT_EQ(c.projection, Projection::Orthographic);
+    EXPECT_NEAR(c.view_height, 2 * distance * std::tan(fov * Real(3.14159265358979 / 360)), 1e-4);
+    set_projection(c, distance, Projection::Perspective);
+    EXPECT_NEAR(c.vertical_fov_degrees, fov, 1e-3);
+}
+
+// The viewer's W key: the scene file with the current camera, everything else as it was, in
+// rt fmt's form; loading it gives the camera back.
+TEST(ViewCamera, WithCameraWritesACameraThatLoadsBack) {
+    const fs::path file = source_dir() / "stages/05-recursion/scenes/whitted.json";
+    const Scene original = load_scene(file);
+    Camera camera = original.camera;
+    orbit(camera, 6, camera.v, 25, 10);
+    const std::string text = with_camera(read_scene_text(file), file.string(), camera, 6);
+    EXPECT_EQ(canonical_scene_text(text, file.string(), file.parent_path()), text);
+    const Scene back = parse_scene(text, file.string(), file.parent_path());
+    for (const auto& [got, want] :
+         {std::pair{back.camera.eye, camera.eye}, std::pair{back.camera.u, camera.u},
+          std::pair{back.camera.v, camera.v}, std::pair{back.camera.w, camera.w}})
+        EXPECT_NEAR(glm::length(got - want), 0, 1e-4);
+    EXPECT_EQ(back.spheres.size(), original.spheres.size());
+    EXPECT_EQ(back.materials.size(), original.materials.size());
+    EXPECT_EQ(back.lights.size(), original.lights.size());
+    set_projection(camera, 6, Projection::Orthographic);
+    const Scene ortho =
+        parse_scene(with_camera(text, file.string(), camera, 6), file.string(), file.parent_path());
+    EXPECT_EQ(ortho.camera.projection, Projection::Orthographic);
+    EXPECT_NEAR(ortho.camera.view_height, camera.view_height, 1e-4);
+    EXPECT_THROW(with_camera("{ not json", "x.json", camera, 6), SceneError);
+}
+
 TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
     const Scene scene = whitted();
     ProgressiveRenderer renderer(2);
@@ -240,7 +278,7 @@ TEST(ViewScript, ErrorsNameTheLineAndHowToWriteIt) {
               std::string::npos);
     EXPECT_NE(script_error("set shadows maybe\n").find("on or off"), std::string::npos);
     EXPECT_NE(script_error("screenshot a/b\n").find("without folders"), std::string::npos);
-    EXPECT_NE(script_error("key X\n").find("write key S|R|Q"), std::string::npos);
+    EXPECT_NE(script_error("key X\n").find("write key S|R|W|P|Q"), std::string::npos);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ struct Syntax {
 const std::map<std::string, Syntax> kCommands = {
     {"sleep", {1, "sleep SECONDS"}},
     {"wait-refined", {0, "wait-refined"}},
-    {"key", {1, "key S|R|Q"}},
+    {"key", {1, "key S|R|W|P|Q"}},
     {"click", {2, "click X Y (image pixel)"}},
     {"set", {2, "set NAME VALUE"}},
     {"toggle", {1, "toggle shadows|bvh"}},
@@ -28,6 +28,8 @@ const std::map<std::string, Syntax> kCommands = {
     {"pan", {2, "pan RIGHT UP (fractions of the view)"}},
     {"zoom", {1, "zoom FACTOR"}},
     {"reset-camera", {0, "reset-camera"}},
+    {"projection", {1, "projection perspective|orthographic"}},
+    {"write-camera", {1, "write-camera FILE (the scene with the current camera, in --out)"}},
     {"show", {1, "show render|reference|difference"}},
     {"raster", {1, "raster on|off"}},
     {"screenshot", {1, "screenshot NAME"}},
@@ -56,13 +58,18 @@ std::string check(const ScriptCommand& c) {
         return "drag with the left or right button";
     if (name == "zoom" && std::strtod(c.args[0].c_str(), nullptr) <= 0)
         return "the zoom factor must be above 0";
-    if (name == "key" && c.args[0] != "S" && c.args[0] != "R" && c.args[0] != "Q")
+    if (name == "key" && c.args[0] != "S" && c.args[0] != "R" && c.args[0] != "Q" &&
+        c.args[0] != "W" && c.args[0] != "P")
         return "unknown key \"" + c.args[0] + "\"";
     if (name == "toggle" && c.args[0] != "shadows" && c.args[0] != "bvh")
         return "only shadows and bvh toggle; use set for the others";
     if (name == "show" && c.args[0] != "render" && c.args[0] != "reference" &&
         c.args[0] != "difference")
         return "cannot show \"" + c.args[0] + "\"";
+    if (name == "projection" && c.args[0] != "perspective" && c.args[0] != "orthographic")
+        return "projection is perspective or orthographic, not \"" + c.args[0] + "\"";
+    if (name == "write-camera" && (c.args[0].find('/') != std::string::npos || c.args[0].empty()))
+        return "write-camera takes a file name (written in --out), not a path";
     if (name == "raster" && c.args[0] != "on" && c.args[0] != "off")
         return "raster takes on or off";
     if (name == "set") {

@@ -4,7 +4,11 @@
 #include <cmath>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "render/accelerate.h"
+#include "scene/scene_format.h"
+#include "scene/scene_loader.h"
 
 namespace rt::view {
 namespace {
@@ -167,6 +171,57 @@ void zoom(Camera& camera, Real& distance, Real factor) {
     const Vec3 pivot = camera.eye - camera.w * distance;
     distance = std::max(distance * factor, Real(1e-3));
     camera.eye = pivot + camera.w * distance;
+}
+
+void set_projection(Camera& camera, Real distance, Projection projection) {
+    if (camera.projection == projection) return;
+    if (projection == Projection::Orthographic)
+        camera.view_height = 2 * distance * std::tan(camera.vertical_fov_degrees * kDegrees / 2);
+    else
+        camera.vertical_fov_degrees = std::clamp(
+            2 * std::atan(camera.view_height / (2 * distance)) / kDegrees, Real(1), Real(170));
+    camera.projection = projection;
+}
+
+namespace {
+
+// Nine significant digits, which give the float back exactly: written as the double it widens
+// to, a float would carry 17 digits of noise.
+double tidy(Real value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(value));
+    return std::strtod(text, nullptr);
+}
+
+nlohmann::json tidy(const Vec3& v) {
+    return nlohmann::json::array({tidy(v.x), tidy(v.y), tidy(v.z)});
+}
+
+}  // namespace
+
+std::string with_camera(const std::string& scene_text, const std::string& name,
+                        const Camera& camera, Real distance) {
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(scene_text);
+    } catch (const nlohmann::json::exception&) {
+        throw SceneError(name + ": error: not a JSON scene file; run rt fmt " + name +
+                         " to see where");
+    }
+    if (!root.is_object())
+        throw SceneError(name + ": error: the top level is not an object; it is not a scene");
+    const bool ortho = camera.projection == Projection::Orthographic;
+    nlohmann::json c = {{"eye", tidy(camera.eye)},
+                        {"look_at", tidy(camera.eye - camera.w * distance)},
+                        {"up", tidy(camera.v)}};
+    if (ortho) {
+        c["projection"] = "orthographic";
+        c["view_height"] = tidy(camera.view_height);
+    } else {
+        c["fov"] = tidy(camera.vertical_fov_degrees);
+    }
+    root["camera"] = c;
+    return canonical_scene_text(root.dump(), name, std::filesystem::path(name).parent_path());
 }
 
 }  // namespace rt::view

@@ -61,5 +61,14 @@ void pan(Camera& camera, Real distance, Real right, Real up);
 // Zoom: moves the eye toward the pivot (factor < 1) or away; orthographic cameras scale the
 // viewed height instead.
 void zoom(Camera& camera, Real& distance, Real factor);
+// Perspective <-> orthographic about the pivot `distance` in front of the eye: what is at the
+// pivot keeps its size on screen (view_height = 2 distance tan(fov / 2), and back).
+void set_projection(Camera& camera, Real distance, Projection projection);
+
+// `scene_text` (a scene file) with its "camera" replaced by `camera` (look_at the pivot
+// `distance` in front of the eye, up the camera's v), in rt fmt's canonical form; everything
+// else is kept. Throws SceneError when the text is not a scene (naming `name`).
+std::string with_camera(const std::string& scene_text, const std::string& name,
+                        const Camera& camera, Real distance);
 
 }  // namespace rt::view

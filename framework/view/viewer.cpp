@@ -7,6 +7,7 @@
 #include "core/source_dir.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
+#include "scene/scene_loader.h"
 
 namespace rt::view {
 namespace {
@@ -93,9 +94,32 @@ void Viewer::click(int x, int y) {
     display_dirty_ = true;
 }
 
+void Viewer::set_projection(Projection projection) {
+    view::set_projection(settings.camera, pivot_distance_, projection);
+    settings_changed();
+}
+
+void Viewer::write_camera(const fs::path& file) {
+    try {
+        const std::string text = with_camera(read_scene_text(scene_file_), scene_file_,
+                                             settings.camera, pivot_distance_);
+        std::ofstream out(file, std::ios::binary);
+        out << text;
+        if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
+        status_ = "camera written to " + file.string();
+    } catch (const std::exception& e) {
+        status_ = std::string("camera not written: ") + e.what();
+    }
+}
+
 void Viewer::key(char k) {
     if (k == 'Q') done_ = true;
     if (k == 'R') reset_camera();
+    if (k == 'W') write_camera(scene_file_);
+    if (k == 'P')
+        set_projection(settings.camera.projection == Projection::Perspective
+                           ? Projection::Orthographic
+                           : Projection::Perspective);
     if (k == 'S') {
         // The next free number: a second session in the same folder keeps the first's.
         fs::path file;
@@ -245,6 +269,10 @@ bool Viewer::run_command(const ScriptCommand& c) {
     if (n == "pan") pan_by(number(0), number(1));
     if (n == "zoom") zoom_by(number(0));
     if (n == "reset-camera") reset_camera();
+    if (n == "projection")
+        set_projection(c.args[0] == "orthographic" ? Projection::Orthographic
+                                                   : Projection::Perspective);
+    if (n == "write-camera") write_camera(out_ / c.args[0]);
     if (n == "show") {
         const std::string& what = c.args[0];
         if (what != "render" && !reference_) fail(c, "this scene has no reference image");

@@ -45,6 +45,10 @@ class Viewer {
     void orbit_by(Real yaw, Real pitch);
     void pan_by(Real right, Real up);
     void zoom_by(Real factor);
+    void set_projection(Projection projection);  // keeps the pivot's size on screen
+    // Writes the scene file with the current camera (rt fmt's form, everything else kept) to
+    // `file`: the scene file itself for the W key. Says what happened in status().
+    void write_camera(const std::filesystem::path& file);
 
     // What the window shows and asks for.
     const Image8& display() const { return display_; }

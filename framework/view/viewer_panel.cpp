@@ -161,7 +161,13 @@ void settings(Viewer& viewer) {
     changed |= ImGui::Checkbox("GPU (stage 09's shader)", &s.gpu);
     if (changed) viewer.settings_changed();
     ImGui::Checkbox("raster preview (OpenGL Blinn-Phong)", &viewer.raster);
+    int projection = int(s.camera.projection == Projection::Orthographic);
+    const char* projections[] = {"perspective", "orthographic"};
+    if (ImGui::Combo("projection (P)", &projection, projections, 2))
+        viewer.set_projection(projection ? Projection::Orthographic : Projection::Perspective);
     if (ImGui::Button("reset camera (R)")) viewer.reset_camera();
+    ImGui::SameLine();
+    if (ImGui::Button("write camera (W)")) viewer.key('W');
     ImGui::SameLine();
     if (ImGui::Button("screenshot (S)")) viewer.key('S');
     if (viewer.has_reference()) {

@@ -138,6 +138,8 @@ void keys(Viewer& viewer) {
     if (ImGui::GetIO().WantTextInput) return;
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) viewer.key('S');
     if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) viewer.key('R');
+    if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) viewer.key('W');
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) viewer.key('P');
     if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
         viewer.key('Q');
 }

@@ -11,7 +11,7 @@
 #    ("README.md#").
 # 3. For every stage N, re-releases into the same directory with --solved-through N --force
 #    (only the student files change, so the build is incremental) and requires the tests of
-#    stage N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
+#    stages 1..N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
 #
 # Environment: RT_RELEASE_CONFIGURE_ARGS: extra arguments for the starter tree's cmake
 # configure line.
@@ -192,11 +192,10 @@ ok "the stage loop: tests, render, rt-grade . (stage 01 only, report.html) ($((S
 # A student who could not finish stage N gets its solution (and those of earlier stages) with
 # --solved-through N. Then the tests of stages 1..N must pass and those of later stages must
 # still fail on their stubs: no stage's tests may depend on a later stage's code.
-# Each rung N runs two labels, so the ladder grows linearly with the stages: stage N must pass
-# with every later stage a stub (the strongest case of "1..N pass": the rungs below already
-# passed stages 1..N-1 with even more stubs, and the course tree's own run passes them all with
-# every solution), and stage N+1 must fail with every earlier stage solved (the strongest case
-# of "later stages fail": the stubbed pass above failed it with nothing solved).
+# Each rung N runs the labels of stages 1..N+1, not of every stage: stage N+1 must fail with
+# every earlier stage solved, the strongest case of "later stages fail" (the stubbed pass above
+# failed every stage with nothing solved), so stages beyond N+1 need not run again. That keeps
+# the stage 09 (GPU) tests, the slowest label, to the last rungs.
 # Same directory, --force: unchanged files keep their timestamps, so only the student files
 # recompile against the existing build.
 for solved in "${STAGES[@]}"; do
@@ -205,7 +204,7 @@ for solved in "${STAGES[@]}"; do
         "${RELEASE_ARGS[@]}" > /dev/null || fail "rt-grade release --solved-through $((10#$solved)) exited with $?"
     build_stage_tests
     for n in "${STAGES[@]}"; do
-        ((10#$n == 10#$solved || 10#$n == 10#$solved + 1)) || continue
+        ((10#$n <= 10#$solved + 1)) || continue
         log="$TMP/stage$n.solved$solved.log"
         ctest --test-dir "$BUILD" -L "stage$n" --output-on-failure --no-tests=error -j "$JOBS" > "$log" 2>&1
         rc=$?
@@ -221,6 +220,6 @@ for solved in "${STAGES[@]}"; do
             fi
         fi
     done
-    ok "--solved-through $((10#$solved)): stage $solved passes, the next fails on its stubs ($((SECONDS - pass_start)) s)"
+    ok "--solved-through $((10#$solved)): stages <= $solved pass, the next fails on its stubs ($((SECONDS - pass_start)) s)"
 done
 echo "total $((SECONDS - start)) s"

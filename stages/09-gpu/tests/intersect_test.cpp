@@ -99,7 +99,7 @@ TEST_F(GpuIntersect, AnswersAsStage02Does) {
     const std::filesystem::path root = ::rt::testing::source_dir();
     const AssembledShader shader =
         assemble_shader(root / "stages/09-gpu/tests/intersect_cases.comp",
-                        {root / "shaders", root / "stages/09-gpu"}, "");
+                        {root / "shaders", gpu_student_dir()}, "");
     const GLuint program = build_compute_program(gl, shader, error);
     ASSERT_NE(program, 0u) << error;
     const std::vector<GpuRayCase> cases = intersect_cases();
