@@ -6,20 +6,22 @@
 namespace rt {
 namespace {
 
-std::string shader_log(const GlApi& gl, GLuint shader) {
+// A shader's or a program's info log: `get_iv` and `get_log` are the matching pair of GL calls.
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint id, GetIv get_iv, GetLog get_log) {
     GLint length = 0;
-    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    get_iv(id, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> log(std::size_t(length) + 1, '\0');
-    gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+    get_log(id, GLsizei(log.size()), nullptr, log.data());
     return log.data();
 }
 
+std::string shader_log(const GlApi& gl, GLuint shader) {
+    return info_log(shader, gl.GetShaderiv, gl.GetShaderInfoLog);
+}
+
 std::string program_log(const GlApi& gl, GLuint program) {
-    GLint length = 0;
-    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(std::size_t(length) + 1, '\0');
-    gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
-    return log.data();
+    return info_log(program, gl.GetProgramiv, gl.GetProgramInfoLog);
 }
 
 // A compiled shader object, or 0 with the driver's log in `error`.
@@ -110,22 +112,18 @@ GLuint build_compute_program(const GlApi& gl, const AssembledShader& shader, std
         error = shader.error;
         return 0;
     }
-    const GLuint object = gl.CreateShader(GL_COMPUTE_SHADER);
-    const char* text = shader.text.c_str();
-    gl.ShaderSource(object, 1, &text, nullptr);
-    gl.CompileShader(object);
-    GLint ok = 0;
-    gl.GetShaderiv(object, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        error = map_compile_log(shader_log(gl, object), shader.files);
+    const GLuint object = compile_stage(gl, GL_COMPUTE_SHADER, shader.text, error);
+    if (!object) {
+        // The driver's lines name the concatenated source: map them to the student's files.
+        error = map_compile_log(error, shader.files);
         if (error.empty()) error = shader.files[0] + ": error: the shader does not compile";
-        gl.DeleteShader(object);
         return 0;
     }
     const GLuint program = gl.CreateProgram();
     gl.AttachShader(program, object);
     gl.LinkProgram(program);
     gl.DeleteShader(object);
+    GLint ok = 0;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
         error = shader.files[0] + ": error: the program does not link: " +
