@@ -14,6 +14,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "build_settings.h"
 #include "object_check.h"
 #include "release.h"
 #include "sandbox.h"
@@ -67,7 +68,7 @@ std::vector<fs::path> source_files(const fs::path& source, const std::set<fs::pa
     std::sort(files.begin(), files.end());
     // Student files count by their stubs: editing one (self-grading in a starter tree) never
     // forces a rebuild of the workspace.
-    hash = fnv1a("rt-grade workspace v3");
+    hash = fnv1a("rt-grade workspace v4");
     for (const auto& f : files) {
         hash = fnv1a(f.string(), hash);
         std::string text = read_text(source / f);
@@ -143,13 +144,17 @@ Workspace workspace_paths(const GradeOptions& o) {
     w.cache = fs::absolute(w.cache).lexically_normal();
     w.root = w.cache / "workspace";
     w.src = w.root / "src";
-    w.build = w.root / "build";
+    // The build inside its tree, as every build of this project is laid out (SOURCE/build):
+    // then the compiler cache hashes the workspace's files like those of the build rt-grade
+    // came from and reuses its objects (cmake/compiler_cache.cmake). Children never see it
+    // (hidden_dirs).
+    w.build = w.src / "build";
     w.priv = w.cache / "private";
     return w;
 }
 
 std::vector<fs::path> hidden_dirs(const Workspace& w) {
-    std::vector<fs::path> dirs;
+    std::vector<fs::path> dirs = {w.build};
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(w.src / "stages", ec))
         if (fs::is_directory(e.path() / "hidden", ec)) dirs.push_back(e.path() / "hidden");
@@ -219,6 +224,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     std::error_code ec;
     fs::remove(w.priv / "key", ec);
     fs::remove_all(w.priv / "objects", ec);
+    fs::remove_all(w.root / "build", ec);  // where the build was before workspace v4
     fs::create_directories(w.priv);
     fs::permissions(w.priv, fs::perms::owner_all);  // 0700
     fs::permissions(w.cache, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
@@ -280,16 +286,28 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     {
         std::vector<fs::path> stale;
         for (auto it = fs::recursive_directory_iterator(w.src, ec);
-             !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+             !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+            if (it->path() == w.build) {
+                it.disable_recursion_pending();
+                continue;
+            }
             if (!it->is_directory() && !wanted.count(it->path().lexically_relative(w.src)))
                 stale.push_back(it->path());
+        }
         for (const auto& p : stale) fs::remove(p, ec);
     }
     std::string out;
+    // Compiled as the build rt-grade came from compiles, through its compiler cache: only the
+    // trusted build of the instructor's files uses the cache; a student's file is compiled in
+    // the jail by its saved command, which has no launcher (stages/CMakeLists.txt).
+    const BuildSettings& settings = this_build();
     std::string cmd = "cmake -S " + shell_quote(w.src.string()) + " -B " +
                       shell_quote(w.build.string()) +
-                      " -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=OFF"
-                      " -DCMAKE_EXPORT_COMPILE_COMMANDS=ON";
+                      " -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON" +
+                      (settings.werror ? " -DRT_WERROR=ON" : " -DRT_WERROR=OFF");
+    cmd += settings.ccache_dir.empty()
+               ? " -DRT_CCACHE=OFF"
+               : " -DRT_CCACHE=ON -DRT_CCACHE_DIR=" + shell_quote(settings.ccache_dir);
     if (run_trusted(cmd, &out) != 0) {
         log << "rt-grade: error: configuring the workspace failed:\n" << out;
         return false;
@@ -316,6 +334,8 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
                 for (const auto& c : commands)
                     if (c.at("file").get<std::string>() == (w.src / k).string()) {
                         auto argv = command_argv(c.at("command").get<std::string>(), "compile");
+                        // A warning in honest student code never fails its grading.
+                        std::erase(argv, std::string("-Werror"));
                         for (std::size_t i = 0; i + 1 < argv.size(); ++i)
                             if (argv[i] == "-o") argv[i + 1] = "@OUT@";
                         plan["compile"][k] = argv;

@@ -5,6 +5,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache                              # one compiler cache for the nested builds of CI and the grader
   clang-format                        # Format.ClangFormat: the code style CI enforces
   libglm-dev                # vector math
   libpcg-cpp-dev            # stage 10: the PCG random generators (pcg_random.hpp), header only

@@ -8,7 +8,8 @@
 set -uo pipefail
 bin=$1 src=$2 build=$3/$4 name=$4 flags=$5 launcher=${6:-}
 mkdir -p "$3" || { echo "FAIL: cannot create $3"; exit 1; }
-args=(-S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=OFF
+# No compiler cache: other flags, so nothing to share with the outer build.
+args=(-S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=OFF -DRT_CCACHE=OFF
       "-DCMAKE_CXX_FLAGS_RELEASE=$flags -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=$flags -DNDEBUG")
 [ -n "$launcher" ] && args+=(-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher")
 start=$(date +%s)

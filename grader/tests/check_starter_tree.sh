@@ -14,7 +14,9 @@
 #    stages 1..N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
 #
 # Environment: RT_RELEASE_CONFIGURE_ARGS: extra arguments for the starter tree's cmake
-# configure line.
+# configure line; RT_CCACHE_DIR: the outer build's compiler cache, which the starter tree (laid
+# out as SOURCE/build like the outer tree) and its grading workspace then share
+# (cmake/compiler_cache.cmake): only the student files, stubbed here, compile afresh.
 set -u -o pipefail
 
 if [[ $# -ne 2 ]]; then
@@ -98,7 +100,9 @@ ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every 
 # --- 2. Build the starter tree; its stage tests must fail on the stubs --------------------
 build_stage_tests() {
     # shellcheck disable=SC2086 # extra arguments are meant to be word-split
-    cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=ON ${RT_RELEASE_CONFIGURE_ARGS:-} \
+    local cache=()
+    [[ -n "${RT_CCACHE_DIR:-}" ]] && cache=("-DRT_CCACHE_DIR=$RT_CCACHE_DIR")
+    cmake -S "$STARTER" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRT_WERROR=ON "${cache[@]}" ${RT_RELEASE_CONFIGURE_ARGS:-} \
         > "$TMP/configure.log" 2>&1 \
         || { tail -n 40 "$TMP/configure.log"; fail "configuring the starter tree failed"; }
     # Every stage test executable (stageNN_tests, stageNN_<what>_tests such as the CGAL checks),
