@@ -2,7 +2,7 @@
 // medium_transmittance and sample_fog): free-flight distances against their density by a
 // chi-square test (statistics.h), the transmittance against Beer-Lambert's exp(-sigma_t d), the
 // chance that a ray passes a slab of fog against that transmittance (a t-test), and a whole
-// pixel seen through a slab of fog.
+// pixel seen through a slab of fog, without light and with a point light in it.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -125,6 +125,38 @@ TEST_F(Fog, PixelThroughAFogSlabDimsTheBackground) {
     // The pixel's rays are within 0.25 degrees of the axis: their path differs by < 1e-5.
     stats::expect_mean(values, std::exp(-0.4 * 2),
                        std::string("the pixel behind a slab of fog 2 thick; ") + kReadFog);
+}
+
+TEST_F(Fog, LightScatteredByASlabMatchesTheIntegral) {
+    // A point light (intensity 2, falling off as 1 / r^2) inside the slab -3 <= z <= -1, the
+    // camera looking along -z through it at a black background. One scattering at depth t
+    // (1 <= t <= 3) sends I / (4 r^2) times the albedo and the light's transmittance exp(-sigma r)
+    // towards the camera (r: from (0, 0, -t) to the light, all inside the fog); free flights
+    // reach depth t with density sigma exp(-sigma (t - 1)). The pixel is the integral of the
+    // product over t, here by Simpson's rule.
+    const Scene scene = parse_scene(R"({
+  "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "fov": 0.5},
+  "image": {"width": 1, "height": 1},
+  "render": {"mode": "shaded", "samples_per_pixel": 1, "seed": 10},
+  "fog": {"density": 0.4, "albedo": [0.75, 0.75, 0.75], "min": [-100, -100, -3], "max": [100, 100, -1]},
+  "lights": [{"type": "point", "position": [0, 1.5, -2], "intensity": [2, 2, 2], "attenuation": [0, 0, 1]}]
+})",
+                                    "fog_light.json", ".");
+    const double sigma = 0.4, albedo = 0.75, intensity = 2;
+    const auto integrand = [&](double t) {
+        const double r = std::sqrt(1.5 * 1.5 + (t - 2) * (t - 2));
+        return sigma * std::exp(-sigma * (t - 1)) * albedo * intensity / (4 * r * r) *
+               std::exp(-sigma * r);
+    };
+    constexpr int kSteps = 2000;  // even
+    double integral = integrand(1) + integrand(3);
+    for (int k = 1; k < kSteps; ++k) integral += (k % 2 ? 4 : 2) * integrand(1 + 2.0 * k / kSteps);
+    integral *= 2.0 / kSteps / 3;
+    std::vector<double> values;
+    for (int s = 0; s < 40000; ++s) values.push_back(sample_pixel(scene, 0, 0, s).g);
+    stats::expect_mean(
+        values, integral,
+        std::string("the light a slab of fog scatters from a point light; ") + kReadFog);
 }
 
 }  // namespace
