@@ -108,10 +108,11 @@ void check_gpu_supported(const Scene& scene, RenderMode mode) {
                        ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
                        "port; use nearest or bilinear, or render it without --gpu");
     if (mode == RenderMode::Shaded && scene.features.sampled())
-        throw GpuError(where +
-                       ": distribution ray tracing (stage 10: several samples per pixel, area "
-                       "lights, lens, shutter, glossy or indirect light) is not in the GPU port "
-                       "yet; render it without --gpu");
+        throw GpuError(
+            where +
+            ": distribution ray tracing (stage 10: several samples per pixel, area "
+            "lights, lens, shutter, glossy or indirect light, fog) is not in the GPU port "
+            "yet; render it without --gpu");
     if (scene.lights.size() > std::size_t(kMaxGpuLights))
         throw GpuError(where + ": " + std::to_string(scene.lights.size()) +
                        " lights; the GPU port takes at most " + std::to_string(kMaxGpuLights));

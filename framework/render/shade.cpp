@@ -80,6 +80,37 @@ void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& m
     }
 }
 
+// Stage 10's fog (optional): each light's visibility from `at` times the fraction of its light
+// that crosses the fog on the way (stage 10's medium_transmittance along the shadow ray).
+void attenuate_by_fog(const Scene& scene, const SurfacePoint& at, std::vector<Color>& visibility) {
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        if (visibility[i] == Color(0)) continue;
+        const ShadowRay shadow = shadow_ray(at, illuminate(scene.lights[i], at.point));
+        visibility[i] *= float(medium_transmittance(scene.fog, shadow.ray, shadow.t_range));
+    }
+}
+
+// Stage 10's fog (optional): the light scattered towards the viewer at `point`, inside the fog.
+// One scattering: the direct light of every point and directional light there (past the
+// surfaces in the way when the scene has shadows, and through the fog), scattered equally into
+// every direction. A light of stage 03 intensity I gives the irradiance pi I (conventions:
+// sampling), and the phase function 1 / (4 pi) turns it into the radiance I / 4; the fog's
+// albedo is the part scattered. Draws no random numbers.
+Color fog_scattering(const Scene& scene, const Vec3& point) {
+    SurfacePoint at;  // no surface: zero error and normal, so shadow rays start at the point
+    at.point = point;
+    Color sum(0);
+    for (const Light& light : scene.lights) {
+        const LightSample sample = illuminate(light, point);
+        Color through = scene.features.shadows ? light_transmittance(scene, at, sample) : Color(1);
+        if (through == Color(0)) continue;
+        const ShadowRay shadow = shadow_ray(at, sample);
+        through *= float(medium_transmittance(scene.fog, shadow.ray, shadow.t_range));
+        sum += sample.intensity * through * 0.25f;
+    }
+    return scene.fog.albedo * sum;
+}
+
 // A hit made ready for lighting: its surface point, material (as its maps colour it here) and
 // the normal it is lit with.
 struct PreparedHit {
@@ -135,10 +166,15 @@ Color local_light(const Scene& scene, const PreparedHit& p, TraceObserver* obser
         material = &without_ambient;
     }
     Color local;
-    if (scene.features.shadows) {
+    if (scene.features.shadows || scene.features.fog) {
         // One scratch array a thread: no allocation per hit once it has grown.
         thread_local std::vector<Color> visibility;
-        shadow_lights(scene, p.at, *material, p.lighting_normal, p.to_viewer, visibility, observer);
+        if (scene.features.shadows)
+            shadow_lights(scene, p.at, *material, p.lighting_normal, p.to_viewer, visibility,
+                          observer);
+        else
+            visibility.assign(scene.lights.size(), Color(1));
+        if (scene.features.fog) attenuate_by_fog(scene, p.at, visibility);
         local = direct_light(scene, *material, p.at.point, p.lighting_normal, p.to_viewer,
                              LightVisibility{visibility});
     } else {
@@ -202,7 +238,20 @@ void make_glossy(const SurfacePoint& at, Real fuzz, SecondaryRay& reflected, Sam
 void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
                  const RayDifferential* rays = nullptr, SampleStream* stream = nullptr) {
     Hit hit;
-    if (!nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit)) {
+    const bool found = nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit);
+    // Stage 10's fog (optional): one number per traced ray, before the hit's. A ray scattered
+    // before the surface ends there (the debugger shows it as a ray without a hit).
+    if (stream && scene.features.fog) {
+        const FogEvent event =
+            sample_fog(scene.fog, f.ray, found ? hit.t : kInfinity, stream->next());
+        if (event.scattered) {
+            f.colour = fog_scattering(scene, f.ray.origin + event.t * f.ray.direction);
+            f.recurse = false;
+            if (observer) observer->miss(f.colour);
+            return;
+        }
+    }
+    if (!found) {
         f.colour = background(scene, f.ray.direction);
         f.recurse = false;
         if (observer) observer->miss(f.colour);

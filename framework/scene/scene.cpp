@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -110,6 +111,7 @@ void Scene::update_features() {
     for (const Material& m : materials) f.glossy |= m.fuzz > 0 && nonzero(m.reflective);
     f.ambient_occlusion = sampling.indirect == IndirectLight::Occlusion && f.ambient;
     f.indirect_diffuse = sampling.indirect == IndirectLight::Diffuse;
+    f.fog = fog.density > 0;
     features = f;
     static std::atomic<std::uint64_t> revisions{0};
     revision = ++revisions;
@@ -146,9 +148,26 @@ std::string Features::describe() const {
         add(antialiasing, "antialiasing"), add(area_lights, "area-lights");
         add(depth_of_field, "depth-of-field"), add(motion_blur, "motion-blur");
         add(glossy, "glossy"), add(ambient_occlusion, "ambient-occlusion");
-        add(indirect_diffuse, "indirect-diffuse");
+        add(indirect_diffuse, "indirect-diffuse"), add(fog, "fog");
     }
     return s;
+}
+
+Interval medium_interval(const Medium& medium, const Ray& ray, Interval range) {
+    if (!medium.bounded) return range;
+    for (int axis = 0; axis < 3; ++axis) {
+        const Real o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0) {
+            if (o < medium.min[axis] || o > medium.max[axis]) return Interval{range.max, range.max};
+            continue;
+        }
+        Real t0 = (medium.min[axis] - o) / d, t1 = (medium.max[axis] - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        range.min = std::max(range.min, t0);
+        range.max = std::min(range.max, t1);
+    }
+    if (!(range.min < range.max)) range.min = range.max;
+    return range;
 }
 
 Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_uv) {

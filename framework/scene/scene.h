@@ -113,6 +113,23 @@ struct SamplingSettings {
     Real occlusion_distance = kInfinity;  // ambient occlusion: farther blockers do not count
 };
 
+// Stage 10 (optional): fog, a homogeneous participating medium (docs/scene-format.md#fog). Light
+// travelling a distance s through it is scattered or absorbed with probability
+// 1 - exp(-density s); of the light it takes out, the fraction `albedo` (per channel) is
+// scattered, equally into every direction. It fills the whole scene, or only the box [min, max]
+// when `bounded`. Density 0 is no fog.
+struct Medium {
+    Real density = 0;  // sigma_t, the extinction per unit distance
+    Color albedo{1};   // sigma_s / sigma_t, each channel in [0, 1]
+    bool bounded = false;
+    Vec3 min{0}, max{0};
+};
+
+// The part of `range` in which `ray` is inside the medium: `range` itself for a medium without a
+// box, else its intersection with the box's slabs (closed box). Empty (min >= max) when the ray
+// misses it. Framework code, given to stage 10's fog functions.
+Interval medium_interval(const Medium& medium, const Ray& ray, Interval range);
+
 // What a scene actually contains, so the renderer (and later the shader) computes only that.
 // The per-primitive, material and light records are plain data: copied to the GPU as they are
 // (after packing, framework/gpu/gpu_scene.h), so no strings or pointers inside.
@@ -137,10 +154,11 @@ struct Features {
     bool antialiasing = false;  // samples_per_pixel > 1
     bool area_lights = false, depth_of_field = false, motion_blur = false, glossy = false;
     bool ambient_occlusion = false, indirect_diffuse = false;
+    bool fog = false;  // a medium of density > 0 (optional part of stage 10)
 
     bool sampled() const {
         return antialiasing || area_lights || depth_of_field || motion_blur || glossy ||
-               ambient_occlusion || indirect_diffuse;
+               ambient_occlusion || indirect_diffuse || fog;
     }
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
@@ -191,6 +209,7 @@ struct Scene {
     std::vector<AreaLight> area_lights;
     std::vector<MovingSphere> moving_spheres;
     SamplingSettings sampling;
+    Medium fog;  // stage 10, optional: density 0 (the default) is no fog
     // Stage 07's texture table (scene/texture.h): textures referenced by material slots, the
     // images they read and all image texels in one array. texture_names parallels `textures`.
     std::vector<Texture> textures;

@@ -25,7 +25,7 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",        "image",    "render",    "background", "environment",
+const Order kTopLevel{"camera",        "image",    "render",    "background", "environment", "fog",
                       "ambient_light", "textures", "materials", "surfaces",   "lights"};
 const Order kCamera{"projection",  "eye",      "look_at",        "up",     "fov",
                     "view_height", "aperture", "focus_distance", "shutter"};
@@ -45,6 +45,7 @@ const Order kSurface{"type",   "center",     "radius",      "velocity",  "point"
                      "file",   "procedural", "heightfield", "triangles", "seed",
                      "scale",  "translate",  "material",    "materials"};
 const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
+const Order kFog{"density", "albedo", "min", "max"};
 const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
 const Order kLight{"type",   "position", "direction", "intensity", "attenuation", "corner",
                    "edge_u", "edge_v",   "center",    "radius",    "radiance"};
@@ -125,6 +126,7 @@ const Order& order_of_section(const std::string& key) {
     if (key == "image") return kImage;
     if (key == "render") return kRender;
     if (key == "environment") return kEnvironment;
+    if (key == "fog") return kFog;
     return kNone;
 }
 

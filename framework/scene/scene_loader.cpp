@@ -19,7 +19,7 @@ Scene SceneSections::load() {
         fail_value("", "the top level must be a JSON object, got " + describe(root),
                    "wrap the scene in { ... }");
     check_keys(root, "", "the scene",
-               {"camera", "image", "render", "background", "environment", "ambient_light",
+               {"camera", "image", "render", "background", "environment", "fog", "ambient_light",
                 "textures", "materials", "surfaces", "lights"});
     scene_.source = name_;
     read_image(root);
@@ -34,6 +34,7 @@ Scene SceneSections::load() {
     finish_textures();
     read_surfaces(root);
     read_lights(root);
+    read_fog(root);
     scene_.update_features();
     return std::move(scene_);
 }

@@ -43,6 +43,11 @@ class SceneSections : public SceneReader {
     void read_lights(const json& root);
     void read_light(const json& object, const std::string& pointer);
     void read_area_light(const json& object, const std::string& pointer, AreaLightKind kind);
+    // Stage 10, optional: "fog" (after the lights: fog and area lights do not mix).
+    void read_fog(const json& root);
+    // Fails at the first axis where `max` is below `min` (pointers: the two corners' arrays).
+    void check_corners(const Vec3& min, const Vec3& max, const std::string& at_min,
+                       const std::string& at_max) const;
 
     // scene_environment.cpp
     void read_environment(const json& root);

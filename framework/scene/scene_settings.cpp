@@ -272,4 +272,46 @@ void SceneSections::read_area_light(const json& object, const std::string& point
     scene_.area_lights.push_back(light);
 }
 
+// Stage 10, optional: "fog", a homogeneous medium everywhere or in a box
+// (docs/scene-format.md#fog).
+void SceneSections::read_fog(const json& root) {
+    const json* fog = member(root, "fog");
+    if (!fog) return;
+    require_object(*fog, "/fog", "{\"density\": 0.3, \"albedo\": [0.9, 0.9, 0.9]}");
+    check_keys(*fog, "/fog", "\"fog\"", {"density", "albedo", "min", "max"});
+    Medium medium;
+    medium.density = real_in(
+        required(*fog, "/fog", "density", "the fog", "0.3"), "/fog/density",
+        [](double d) { return d > 0; }, "> 0",
+        "the fraction of light scattered or absorbed per unit distance; leave out \"fog\" for "
+        "none");
+    if (const json* v = member(*fog, "albedo")) {
+        medium.albedo = color(*v, "/fog/albedo");
+        for (int k = 0; k < 3; ++k)
+            if (medium.albedo[k] > 1) {
+                const std::string at = JsonPositions::child("/fog/albedo", std::size_t(k));
+                fail_value(at, "\"albedo\" must be between 0 and 1, got " + source_text(at),
+                           "it is the part of the light the fog takes out that it scatters; "
+                           "above 1 the fog would make light");
+            }
+    }
+    const json* min = member(*fog, "min");
+    const json* max = member(*fog, "max");
+    if (min || max) {
+        if (!min || !max)
+            fail_value(min ? "/fog/min" : "/fog/max", "a fog box needs both \"min\" and \"max\"",
+                       "give both corners, or neither for fog everywhere");
+        medium.bounded = true;
+        medium.min = vec3(*min, "/fog/min");
+        medium.max = vec3(*max, "/fog/max");
+        check_corners(medium.min, medium.max, "/fog/min", "/fog/max");
+    }
+    if (!scene_.area_lights.empty())
+        fail_value("/fog",
+                   "fog and area lights together are not supported (an area light's shadow rays "
+                   "do not pass through the fog)",
+                   "light a foggy scene with point or directional lights");
+    scene_.fog = medium;
+}
+
 }  // namespace rt::scene_internal

@@ -109,15 +109,20 @@ void SceneSections::read_box(const json& s, const std::string& pointer) {
     Box box;
     box.min = vec3(required(s, pointer, "min", "a box", "[x, y, z]"), at("min"));
     box.max = vec3(required(s, pointer, "max", "a box", "[x, y, z]"), at("max"));
-    for (int k = 0; k < 3; ++k)
-        if (box.min[k] > box.max[k])
-            fail_value(JsonPositions::child(at("max"), std::size_t(k)),
-                       std::string("\"max\" must not be below \"min\", but ") + "xyz"[k] + " is " +
-                           source_text(JsonPositions::child(at("max"), std::size_t(k))) + " < " +
-                           source_text(JsonPositions::child(at("min"), std::size_t(k))),
-                       "swap the values or fix the corner");
+    check_corners(box.min, box.max, at("min"), at("max"));
     box.material = material_of(s, pointer);
     scene_.boxes.push_back(box);
+}
+
+void SceneSections::check_corners(const Vec3& min, const Vec3& max, const std::string& at_min,
+                                  const std::string& at_max) const {
+    for (int k = 0; k < 3; ++k)
+        if (min[k] > max[k])
+            fail_value(JsonPositions::child(at_max, std::size_t(k)),
+                       std::string("\"max\" must not be below \"min\", but ") + "xyz"[k] + " is " +
+                           source_text(JsonPositions::child(at_max, std::size_t(k))) + " < " +
+                           source_text(JsonPositions::child(at_min, std::size_t(k))),
+                       "swap the values or fix the corner");
 }
 
 // A "checkerboard": shorthand for a floor of tiles[0] x tiles[1] boxes between "min" and

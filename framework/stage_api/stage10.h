@@ -51,6 +51,10 @@ Real shutter_time(Real open, Real close, Real u);
 // Where a moving sphere's centre is at `time`: center at time 0 plus time * velocity.
 Vec3 sphere_center_at(const Vec3& center, const Vec3& velocity, Real time);
 
+// Optional (fog): a free-flight distance in a medium of density sigma_t > 0, the distance a
+// ray travels before it is scattered or absorbed: density sigma_t exp(-sigma_t s) on [0, inf).
+Real sample_free_flight(Real sigma_t, Real u);
+
 // ---------------------------------------------------------------- lights.cpp
 
 // A point sampled on an area light, seen from `from`.
@@ -112,6 +116,23 @@ class IncomingRadiance {
   protected:
     ~IncomingRadiance() = default;
 };
+
+// Optional (fog, scene.fog: render/shade.cpp calls these only when Features::fog).
+// The fraction of light that crosses the part of `ray` with t in `range` unscattered:
+// exp(-density * s), s the distance (in world units: t times |direction|) that part travels
+// inside the medium (medium_interval in scene/scene.h gives the part). 1 when it is empty.
+Real medium_transmittance(const Medium& medium, const Ray& ray, Interval range);
+
+// One free-flight sample along `ray` through the medium, up to t_max (the nearest surface, or
+// infinity): the ray enters the medium at the start of its part inside it (medium_interval with
+// (0, t_max)) and travels sample_free_flight(density, u) from there. When it stops before the
+// part ends, the light was scattered at `t` (scattered true); else it passes (scattered false,
+// probability medium_transmittance over (0, t_max)).
+struct FogEvent {
+    bool scattered = false;
+    Real t = 0;  // the ray parameter of the scattering point, when scattered
+};
+FogEvent sample_fog(const Medium& medium, const Ray& ray, Real t_max, Real u);
 
 // One-sample estimate of the diffuse light reflected at `at` from light arriving off other
 // surfaces and the background: the Lambertian BRDF k_d / pi times the incoming radiance times

@@ -388,6 +388,10 @@ const BadScene kBadScenesTable[] = {
      R"(an environment is one of "latlong", "cube" and "sky")"},
     {"78-sky-unknown-key", 2, 27, R"(unknown key "sun_colour" in "sky")"},
     {"79-environment-negative-ambient", 2, 41, R"("ambient" must be >= 0, got -0.5)"},
+    {"80-fog-without-density", 3, 10, R"(the fog needs "density")"},
+    {"81-fog-albedo-above-one", 3, 43, R"("albedo" must be between 0 and 1, got 1.2)"},
+    {"82-fog-box-without-max", 3, 34, R"(a fog box needs both "min" and "max")"},
+    {"83-fog-with-area-light", 3, 10, "fog and area lights together are not supported"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};

@@ -187,4 +187,34 @@ Color indirect_diffuse(const SurfacePoint& at, const Vec3& normal, const Materia
     // END SOLUTION
 }
 
+// Optional (fog): Beer-Lambert over the distance travelled inside the medium.
+Real medium_transmittance(const Medium& medium, const Ray& ray, Interval range) {
+    // BEGIN SOLUTION
+    const Interval inside = medium_interval(medium, ray, range);
+    if (!(inside.min < inside.max)) return 1;
+    const Real distance = (inside.max - inside.min) * glm::length(ray.direction);
+    return std::exp(-medium.density * distance);
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#optional-fog");
+    // (void)medium, (void)ray, (void)range;
+    // return 1;
+    // END SOLUTION
+}
+
+// Optional (fog): a free flight from where the ray enters the medium.
+FogEvent sample_fog(const Medium& medium, const Ray& ray, Real t_max, Real u) {
+    // BEGIN SOLUTION
+    FogEvent event;
+    const Interval inside = medium_interval(medium, ray, Interval{0, t_max});
+    if (!(inside.min < inside.max)) return event;
+    const Real t = inside.min + sample_free_flight(medium.density, u) / glm::length(ray.direction);
+    if (t < inside.max) event.scattered = true, event.t = t;
+    return event;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#optional-fog");
+    // (void)medium, (void)ray, (void)t_max, (void)u;
+    // return {};
+    // END SOLUTION
+}
+
 }  // namespace rt

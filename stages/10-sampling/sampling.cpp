@@ -136,4 +136,16 @@ Vec3 sphere_center_at(const Vec3& center, const Vec3& velocity, Real time) {
     // END SOLUTION
 }
 
+// Optional (fog): invert the cumulative distribution 1 - exp(-sigma_t s).
+Real sample_free_flight(Real sigma_t, Real u) {
+    // BEGIN SOLUTION
+    // log1p(-u) keeps the digits of small u; u < 1, so the log is finite.
+    return -std::log1p(-u) / sigma_t;
+    // STUB
+    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#optional-fog");
+    // (void)sigma_t, (void)u;
+    // return 0;
+    // END SOLUTION
+}
+
 }  // namespace rt

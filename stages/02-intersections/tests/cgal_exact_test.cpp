@@ -23,6 +23,7 @@
 
 #include "geometry/watertight.h"
 #include "stage_api/stage02.h"
+#include "testing/exact_cases.h"
 #include "testing/exact_reference.h"
 #include "testing/stage_test.h"
 
@@ -65,9 +66,6 @@ const char* hit_or_miss(bool hit) {
     return hit ? "a hit" : "a miss";
 }
 
-double max_abs(const Vec3& v) {
-    return std::max({std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
-}
 double length(const Vec3& v) {
     return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
 }
@@ -81,26 +79,13 @@ const Method kMethods[2] = {{"Cramer", &intersect_triangle},
                             {"watertight", &intersect_triangle_watertight}};
 
 // ---------------------------------------------------------------------------------------------
-// The triangle checker shared by the random, grazing, sliver and scale tests.
-//
-// Error model (first-order rounding analysis of both methods; the constants are measured):
-//   L      = max |coordinate| of o, a, b, c, plus the hit distance |t d|: the size of the numbers
-//            whose rounding (each an absolute error of about eps L) moves the decision;
-//   cos    = |n.d| / (|n| |d|), the cosine between ray and normal: a rounding error of eps L
-//            across the ray becomes eps L / cos along the triangle's plane;
-//   aspect = (longest edge)^2 / |n| = longest edge / smallest height: the conditioning of the
-//            triangle's normal, which scales the error of t.
-// Hit/miss may differ from the exact answer only when the exact plane point is within
-//   band = kBand * eps * L / cos                                   (distance to an edge line)
-// of an edge, and the reported t obeys
-//   |t - t_exact| |d| <= kT * eps * L * aspect / cos.
+// The triangle checker shared by the random, grazing, sliver and scale tests. The error model
+// (the band of hit/miss, the bound on t) is written in testing/exact_cases.h, where the cases
+// come from.
 struct Tolerances {
-    double band;  // kBand
-    double t;     // kT
+    double band;  // kTriangleBand
+    double t;     // kTriangleT
 };
-// Measured worst band ratio 0.16 in float, 0.15 in double (slivers); worst t ratio 0.67 in
-// float (random, Cramer), 0.74 in double (slivers, Cramer). Bounds with a margin of 4x or more:
-constexpr double kBand = 1, kT = 3;
 
 struct MethodStats {
     int rays = 0, hits = 0, disagreements = 0;
@@ -116,19 +101,15 @@ struct TriangleChecker {
     int exact_edge_or_vertex = 0;
 
     // Checks both methods on one ray; returns false (after reporting) on a violated bound.
-    void check(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c) {
-        const TriangleTruth truth = exact_triangle(ray, a, b, c);
+    void check(const TriangleCase& one) {
+        const Ray& ray = one.ray;
+        const Vec3 &a = one.a, &b = one.b, &c = one.c;
+        const TriangleTruth& truth = one.truth;
         ASSERT_TRUE(truth.cgal_consistent) << name << ": CGAL predicate and construction disagree";
         if (truth.region == Region::Edge || truth.region == Region::Vertex) ++exact_edge_or_vertex;
-        const Vec3 n = glm::cross(b - a, c - a);
-        const double cos =
-            std::abs(glm::dot(n, ray.direction)) / (length(n) * length(ray.direction));
-        const double dlen = length(ray.direction);
-        const double t_exact = truth.parallel ? 0 : CGAL::to_double(truth.t);
-        const double L = std::max({max_abs(ray.origin), max_abs(a), max_abs(b), max_abs(c)}) +
-                         std::abs(t_exact) * dlen;
-        const double emax = std::max({length(b - a), length(c - b), length(a - c)});
-        const double aspect = emax * emax / length(n);
+        const TriangleScales scales = triangle_scales(one);
+        const double cos = scales.cos, dlen = scales.dlen, t_exact = scales.t_exact;
+        const double L = scales.L, aspect = scales.aspect;
         for (int m = 0; m < 2; ++m) {
             Hit hit;
             const bool got = kMethods[m].fn(ray, a, b, c, Interval{}, hit);
@@ -181,16 +162,6 @@ struct TriangleChecker {
     }
 };
 
-// A random ray aimed at a random point near (and often inside) the triangle.
-Ray ray_towards(Rng& rng, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& origin) {
-    const Real u = Real(rng.uniform(-0.2, 1.2)), v = Real(rng.uniform(-0.2, 1.2));
-    Real bu = u, bv = v;
-    if (u + v > Real(1.3)) bu = Real(1.3) - v;  // keep most targets near the triangle
-    const Vec3 target = a + bu * (b - a) + bv * (c - a);
-    const Real scale = Real(std::ldexp(1.0, rng.integer(-3, 3)) * rng.uniform(0.75, 1.5));
-    return Ray{origin, (target - origin) * scale};  // non-unit directions on purpose
-}
-
 RT_TEST_SUITE(TriangleExact);
 
 TEST_F(TriangleExact, RandomRaysAgreeWithCgal) {
@@ -200,12 +171,9 @@ TEST_F(TriangleExact, RandomRaysAgreeWithCgal) {
     // last place of the exact t: both methods compute t from a handful of rounded products
     // (Cramer: a 3x3 determinant ratio; watertight: sheared coordinates, then T / det).
     constexpr double kUlps = 32;  // measured 10.6 (Cramer), 4.9 (watertight)
-    TriangleChecker check{"random", {kBand, kT}, {}, 0};
-    Rng rng(0x5eed0001);
-    for (int i = 0; i < 3000; ++i) {
-        const Vec3 a = rng.vec(-1, 1), b = rng.vec(-1, 1), c = rng.vec(-1, 1);
-        if (glm::length(glm::cross(b - a, c - a)) < Real(0.05)) continue;  // slivers: own test
-        check.check(ray_towards(rng, a, b, c, rng.vec(-4, 4)), a, b, c);
+    TriangleChecker check{"random", {kTriangleBand, kTriangleT}, {}, 0};
+    for (const TriangleCase& one : random_triangle_cases()) {
+        check.check(one);
         if (HasFatalFailure()) return;
     }
     check.print();
@@ -226,20 +194,9 @@ TEST_F(TriangleExact, GrazingRays) {
     // Rays meeting the plane at angles from 1e-1 down to 1e-5 radians (cos of the angle to the
     // normal down to 1e-5). The band and t error grow like 1 / cos, which the error model
     // already contains, so the same constants hold as for random rays.
-    TriangleChecker check{"grazing", {kBand, kT}, {}, 0};
-    Rng rng(0x5eed0002);
-    for (int i = 0; i < 1500; ++i) {
-        const Vec3 a = rng.vec(-1, 1), b = rng.vec(-1, 1), c = rng.vec(-1, 1);
-        const Vec3 n = glm::cross(b - a, c - a);
-        if (glm::length(n) < Real(0.2)) continue;
-        const Vec3 unit_n = glm::normalize(n);
-        Vec3 along = glm::normalize(glm::cross(unit_n, rng.unit()));
-        const double angle = std::pow(10.0, rng.uniform(-5, -1));
-        const Real u = Real(rng.uniform(-0.1, 1.1)), v = Real(rng.uniform(-0.1, 1.1) * (1 - u));
-        const Vec3 target = a + u * (b - a) + v * (c - a);
-        const Vec3 dir = along * Real(std::cos(angle)) - unit_n * Real(std::sin(angle));
-        const Real dist = Real(rng.uniform(0.5, 3));
-        check.check(Ray{target - dist * dir, dir}, a, b, c);
+    TriangleChecker check{"grazing", {kTriangleBand, kTriangleT}, {}, 0};
+    for (const TriangleCase& one : grazing_triangle_cases()) {
+        check.check(one);
         if (HasFatalFailure()) return;
     }
     check.print();
@@ -255,25 +212,9 @@ TEST_F(TriangleExact, SliverTriangles) {
     // the apex 1e-3 .. 1e-5 off the opposite edge). The aspect factor of the t bound covers the
     // badly conditioned normal; the band in distance units does not need it (a sliver is thin,
     // so its edges are close to every interior point, and the exact distance is what counts).
-    TriangleChecker check{"sliver", {kBand, kT}, {}, 0};
-    Rng rng(0x5eed0003);
-    for (int i = 0; i < 2000; ++i) {
-        const Vec3 a = rng.vec(-1, 1), b = rng.vec(-1, 1);
-        const Vec3 side = glm::normalize(glm::cross(b - a, rng.unit()));
-        const Real thin = Real(std::pow(10.0, rng.uniform(-5, -3)));
-        Vec3 c;
-        if (i % 2 == 0)
-            c = b + thin * side * glm::length(b - a);  // needle: |bc| tiny
-        else
-            c = (a + b) * Real(0.5) + thin * side * glm::length(b - a);  // cap
-        if (glm::length(glm::cross(b - a, c - a)) == 0) continue;
-        // Aim at the sliver itself: a point on the segment ab or just beside it.
-        const Real s = Real(rng.uniform(-0.05, 1.05));
-        const Vec3 target =
-            a + s * (b - a) +
-            Real(rng.uniform(-1, 2)) * (c - (a + b) * Real(0.5)) * Real(i % 2 == 0 ? 0 : 1);
-        const Vec3 origin = rng.vec(-4, 4);
-        check.check(Ray{origin, target - origin}, a, b, c);
+    TriangleChecker check{"sliver", {kTriangleBand, kTriangleT}, {}, 0};
+    for (const TriangleCase& one : sliver_triangle_cases()) {
+        check.check(one);
         if (HasFatalFailure()) return;
     }
     check.print();
@@ -284,17 +225,9 @@ TEST_F(TriangleExact, FarAwayAndExtremeScales) {
     // origin, the ray starting nearby), (2) scaled by 1e6 and (3) by 1e-4. L contains the
     // coordinate magnitude, so the band grows to eps * 1e4 for the translated case: that is the
     // absolute precision of the coordinates there, and no method can do better.
-    TriangleChecker check{"scales", {kBand, kT}, {}, 0};
-    Rng rng(0x5eed0004);
-    for (int i = 0; i < 3000; ++i) {
-        const int kind = i % 3;
-        const Real scale = kind == 1 ? Real(1e6) : kind == 2 ? Real(1e-4) : Real(1);
-        const Vec3 offset = kind == 0 ? rng.vec(-1e4, 1e4) : Vec3(0);
-        const Vec3 a = rng.vec(-1, 1) * scale + offset, b = rng.vec(-1, 1) * scale + offset,
-                   c = rng.vec(-1, 1) * scale + offset;
-        const Vec3 n = glm::cross(b - a, c - a);
-        if (!(glm::length(n) >= Real(0.05) * scale * scale)) continue;
-        check.check(ray_towards(rng, a, b, c, rng.vec(-4, 4) * scale + offset), a, b, c);
+    TriangleChecker check{"scales", {kTriangleBand, kTriangleT}, {}, 0};
+    for (const TriangleCase& one : scaled_triangle_cases()) {
+        check.check(one);
         if (HasFatalFailure()) return;
     }
     check.print();
@@ -308,24 +241,16 @@ TEST_F(TriangleExact, FarAwayAndExtremeScales) {
 TEST_F(TriangleExact, ParallelAndInPlaneRaysMiss) {
     // Directions exactly parallel to the plane (confirmed by CGAL), from beside the plane and
     // from inside it through the triangle: the contract says miss for both methods.
-    const Vec3 a(0, 0, 0), b(1, 1, 0), c(0, 1, 1);  // normal (1, -1, 1): small exact integers
-    const Vec3 dirs[] = {{1, 1, 0}, {0, 1, 1}, {1, 0, -1}, {2, 1, -1}, {0.5, 0.25, -0.25}};
-    const Vec3 origins[] = {Vec3(0.25, 0.5, 0.25) - Vec3(1, 1, 0) * Real(2),    // in the plane
-                            Vec3(0, 0.5, 0.25) + Vec3(1, -1, 1) * Real(0.125),  // beside it
-                            Vec3(-3, -2, 1)};
-    for (const Vec3& d : dirs)
-        for (const Vec3& o : origins) {
-            const Ray ray{o, d};
-            const TriangleTruth truth = exact_triangle(ray, a, b, c);
-            ASSERT_TRUE(truth.parallel);
-            for (const Method& m : kMethods) {
-                Hit hit;
-                EXPECT_FALSE(m.fn(ray, a, b, c, Interval{}, hit))
-                    << m.name << ": " << text(ray) << " is exactly parallel to the triangle's "
-                    << "plane (|M| = 0), so it misses, also when it lies in the plane; "
-                    << kReadTriangle;
-            }
+    for (const TriangleCase& one : parallel_triangle_cases()) {
+        ASSERT_TRUE(one.truth.parallel);
+        for (const Method& m : kMethods) {
+            Hit hit;
+            EXPECT_FALSE(m.fn(one.ray, one.a, one.b, one.c, Interval{}, hit))
+                << m.name << ": " << text(one.ray) << " is exactly parallel to the triangle's "
+                << "plane (|M| = 0), so it misses, also when it lies in the plane; "
+                << kReadTriangle;
         }
+    }
 }
 
 TEST_F(TriangleExact, OriginOnTheTriangle) {
@@ -336,48 +261,36 @@ TEST_F(TriangleExact, OriginOnTheTriangle) {
     //    reported, but only with |t| |d| <= 16 eps L / cos (self-intersection "acne"; cos as
     //    in the triangle error model: the rounding across the plane, seen along the ray). With
     //    t_range.min = 1e-3 (a typical shadow-ray epsilon for unit scenes) it is always a miss.
-    Rng rng(0x5eed0005);
-    {
-        const Vec3 a(-1, -1, 0.5), b(1, -1, 0.5), c(0, 1, 0.5);
-        for (const Vec3 o : {Vec3(0, 0, 0.5), Vec3(0.25, -0.5, 0.5), Vec3(-1, -1, 0.5)}) {
-            for (const Vec3 d : {Vec3(0, 0, 1), Vec3(0.5, 0.25, -1), Vec3(-1, 2, 3)}) {
-                ASSERT_TRUE(exact_triangle(Ray{o, d}, a, b, c).origin_in_plane);
-                for (const Method& m : kMethods) {
-                    Hit hit;
-                    EXPECT_FALSE(m.fn(Ray{o, d}, a, b, c, Interval{}, hit))
-                        << m.name << ": " << text(Ray{o, d}) << " starts exactly on an "
-                        << "axis-aligned triangle with exact coordinates: t is exactly 0, outside "
-                        << "the open range (0, inf), so a miss (reported t " << digits(hit.t)
-                        << "); " << kReadRanges;
-                }
-            }
+    for (const TriangleCase& one : exact_origin_on_triangle_cases()) {
+        ASSERT_TRUE(one.truth.origin_in_plane);
+        for (const Method& m : kMethods) {
+            Hit hit;
+            EXPECT_FALSE(m.fn(one.ray, one.a, one.b, one.c, Interval{}, hit))
+                << m.name << ": " << text(one.ray) << " starts exactly on an "
+                << "axis-aligned triangle with exact coordinates: t is exactly 0, outside "
+                << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); "
+                << kReadRanges;
         }
     }
     int exact_origins = 0, reported = 0;
-    for (int i = 0; i < 4000 && exact_origins < 200; ++i) {
-        const Vec3 a = rng.vec(-1, 1), b = rng.vec(-1, 1), c = rng.vec(-1, 1);
-        if (glm::length(glm::cross(b - a, c - a)) < Real(0.1)) continue;
-        // A vertex, or an edge midpoint when it happens to be exact, lies exactly on the plane.
-        const Vec3 o = i % 2 ? a : (a + b) * Real(0.5);
-        const Ray ray{o, rng.unit()};
-        const TriangleTruth truth = exact_triangle(ray, a, b, c);
-        if (!truth.origin_in_plane || truth.parallel) continue;
+    for (const TriangleCase& one : origin_on_triangle_cases()) {
+        const Ray& ray = one.ray;
+        const Vec3 &a = one.a, &b = one.b, &c = one.c;
         ++exact_origins;
-        EXPECT_FALSE(truth.hit);
-        const double L = std::max({max_abs(a), max_abs(b), max_abs(c)});
+        EXPECT_FALSE(one.truth.hit);
+        const double L = vertex_size(one);
         for (const Method& m : kMethods) {
             Hit hit;
             if (m.fn(ray, a, b, c, Interval{}, hit)) {
                 ++reported;
-                const Vec3 n = glm::cross(b - a, c - a);
-                const double cos =
-                    std::abs(glm::dot(n, ray.direction)) / (length(n) * length(ray.direction));
-                EXPECT_LE(std::abs(hit.t) * length(ray.direction), 16 * kEps * L / cos)
+                const double cos = triangle_scales(one).cos;
+                const double acne = kOnTriangleAcne * kEps * L / cos;
+                EXPECT_LE(std::abs(hit.t) * length(ray.direction), acne)
                     << m.name << ": " << text(ray) << " starts exactly on the triangle (exact "
                     << "t = 0), yet a hit at distance "
                     << few(std::abs(hit.t) * length(ray.direction))
                     << " is reported, more than rounding can explain (16 eps L / cos = "
-                    << few(16 * kEps * L / cos) << "); " << kReadTriangle;
+                    << few(acne) << "); " << kReadTriangle;
             }
             Hit hit2;
             EXPECT_FALSE(m.fn(ray, a, b, c, Interval{Real(1e-3), kInfinity}, hit2))
@@ -537,17 +450,8 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
 // ---------------------------------------------------------------------------------------------
 // Spheres.
 
-// Error model of the stable quadratic (first order): with oc = o - c, h = sqrt(r^2 - dist^2)
-// the half chord (dist: centre to line), the reported root obeys
-//   |t - t_exact| |d| <= kT * eps * (|oc| + r) * (1 + r / h).
-// (|oc| + r) is the size of the rounded quantities; 1 / h is the sensitivity of a root to the
-// discriminant, unbounded at tangency (a property of the problem, not of the formula). For the
-// near root, c = |oc|^2 - r^2 cancels when the origin is close to the surface: its error
-// eps (|oc|^2 + r^2) divided by q ~ a t_far is also of this form.
-// Measured worst: t ratio 0.93 (small far sphere); band ratio: see the rim rays of the random
-// test (printed). Bounds with a margin of 4x or more:
-constexpr double kSphereBand = 4, kSphereT = 4;
-
+// The error model of the stable quadratic (kSphereBand, kSphereT) is written in
+// testing/exact_cases.h, where the cases come from.
 struct SphereChecker {
     std::string name;
     double band;  // hit/miss may differ only when |tangency| <= band * eps * (|oc| + r)
@@ -555,12 +459,15 @@ struct SphereChecker {
     int rays = 0, hits = 0, disagreements = 0;
     double worst_band = 0, worst_t = 0, worst_ulps = 0;
 
-    void check(const Ray& ray, const Sphere& sphere, double ulp_bound) {
-        const SphereTruth truth = exact_sphere(ray, sphere);
+    void check(const SphereCase& one, double ulp_bound) {
+        const Ray& ray = one.ray;
+        const Sphere& sphere = one.sphere;
+        const SphereTruth& truth = one.truth;
         Hit hit;
         const bool got = intersect_sphere(ray, sphere, Interval{}, hit);
         ++rays;
-        const double oc = length(ray.origin - sphere.center), r = sphere.radius;
+        const SphereScales scales = sphere_scales(one);
+        const double oc = scales.oc, r = scales.r;
         if (got != truth.hit) {
             ++disagreements;
             const double ratio = std::abs(truth.tangency) / (kEps * (oc + r));
@@ -581,7 +488,7 @@ struct SphereChecker {
         if (!got) return;
         ++hits;
         const double dlen = length(ray.direction);
-        const double h = std::sqrt(std::max(0.0, -truth.tangency * 2 * r));
+        const double h = scales.h;
         const double err = std::abs(hit.t - truth.t.to_double()) * dlen;
         const double ratio = err / (kEps * (oc + r) * (1 + r / h));
         worst_t = std::max(worst_t, ratio);
@@ -620,26 +527,11 @@ TEST_F(SphereExact, RandomRaysAgreeWithExactRoot) {
     constexpr double kUlps = 16;  // measured 4.3
     SphereChecker check{"sphere random", kSphereBand, kSphereT};
     SphereChecker wide{"sphere random, all rays", kSphereBand, kSphereT};
-    Rng rng(0x5eed0007);
-    for (int i = 0; i < 4000; ++i) {
-        const Sphere s{rng.vec(-5, 5), Real(std::pow(10.0, rng.uniform(-1, 1)))};
-        const Vec3 o = rng.vec(-15, 15);
-        Vec3 target = s.center + rng.vec(-1.2, 1.2) * s.radius;
-        if (i % 4 == 0) {  // at the rim: within 1e-7 .. 1e-3 r of tangency, on either side
-            const Vec3 w = glm::normalize(s.center - o);
-            const Vec3 side = glm::normalize(glm::cross(w, rng.unit()));
-            const double off = std::pow(10.0, rng.uniform(-7, -3)) * (i % 8 == 0 ? 1 : -1);
-            target = s.center + side * Real(double(s.radius) * (1 + off));
-        }
-        const Ray ray{o, (target - o) * Real(rng.uniform(0.1, 10))};
-        const SphereTruth truth = exact_sphere(ray, s);
-        const double oc = length(o - s.center);
-        const bool good =
-            truth.tangency < -0.1 * s.radius && std::abs(oc - s.radius) > 0.5 * s.radius;
-        if (good)
-            check.check(ray, s, kUlps);
+    for (const SphereCase& one : random_sphere_cases()) {
+        if (one.well_conditioned)
+            check.check(one, kUlps);
         else
-            wide.check(ray, s, std::numeric_limits<double>::infinity());
+            wide.check(one, std::numeric_limits<double>::infinity());
     }
     check.print();
     wide.print();
@@ -654,16 +546,7 @@ TEST_F(SphereExact, SmallSphereFarAway) {
     // the rim (h >= ~0.45 r) are within kUlps units in the last place.
     constexpr double kUlps = 16;  // measured 3.4
     SphereChecker check{"small far sphere", kSphereBand, kSphereT};
-    Rng rng(0x5eed0008);
-    for (int i = 0; i < 2000; ++i) {
-        const Vec3 centre = rng.unit() * Real(1e4);
-        const Sphere s{centre, 1};
-        const Vec3 o = rng.vec(-1, 1);
-        const Vec3 target = centre + rng.vec(-0.6, 0.6);
-        const Ray ray{o, glm::normalize(target - o) * Real(rng.uniform(0.5, 2))};
-        if (!(exact_sphere(ray, s).tangency < -0.1)) continue;
-        check.check(ray, s, kUlps);
-    }
+    for (const SphereCase& one : small_far_sphere_cases()) check.check(one, kUlps);
     check.print();
     EXPECT_GT(check.hits, 1000) << "only " << check.hits << " of " << check.rays
                                 << " rays at the small far sphere were hits that agree with "
@@ -679,18 +562,13 @@ TEST_F(SphereExact, LargeSphereFromJustAboveTheSurface) {
     // ulp bound below states it: ulps <= kUlpsPerRatio * r / height.
     constexpr double kUlpsPerRatio = 4;
     SphereChecker check{"large sphere, near surface", kSphereBand, kSphereT};
-    Rng rng(0x5eed0009);
     double worst_ratio_ulps = 0;
-    for (int i = 0; i < 2000; ++i) {
-        const Sphere s{rng.vec(-10, 10), Real(1e3)};
-        const Vec3 up = rng.unit();
-        const double height = std::pow(10.0, rng.uniform(-2, 0));
-        const Vec3 o = s.center + up * Real(s.radius + height);
-        Vec3 dir = glm::normalize(-up * Real(rng.uniform(0.05, 1)) + rng.unit() * Real(0.5));
-        if (glm::dot(dir, up) >= 0) continue;
-        const Ray ray{o, dir};
-        const SphereTruth truth = exact_sphere(ray, s);
-        check.check(ray, s, std::numeric_limits<double>::infinity());
+    for (const SphereCase& one : large_sphere_above_cases()) {
+        const Sphere& s = one.sphere;
+        const Ray& ray = one.ray;
+        const Vec3& o = ray.origin;
+        const SphereTruth& truth = one.truth;
+        check.check(one, std::numeric_limits<double>::infinity());
         Hit hit;
         if (truth.hit && intersect_sphere(ray, s, Interval{}, hit)) {
             const double h = length(o - s.center) - s.radius;  // actual height after rounding
@@ -726,18 +604,12 @@ TEST_F(SphereExact, LargeSphereFromJustInsideTheSurfaceExactC) {
     // (Seen from just ABOVE a large sphere, the rounding of l dominates instead; that case is
     // LargeSphereFromJustAboveTheSurface, with its r / height bound.)
     constexpr double kUlps = 8;  // measured 1.8 (textbook form: ~2000)
-    Rng rng(0x5eed000d);
     double worst = 0;
     int hits = 0;
-    for (int i = 0; i < 1000; ++i) {
-        const Vec3 centre(Real(rng.integer(-50, 50)), Real(rng.integer(-50, 50)),
-                          Real(rng.integer(-50, 50)));
-        const Sphere s{centre, 1000};
-        Vec3 up(0);
-        up[rng.integer(0, 2)] = Real(i % 2 ? 1 : -1);
-        const Vec3 o = centre + up * Real(1000 - rng.integer(1, 8));
-        const Ray ray{o, up * Real(rng.uniform(0.5, 2)) + rng.vec(-0.05, 0.05)};
-        const SphereTruth truth = exact_sphere(ray, s);
+    for (const SphereCase& one : large_sphere_inside_cases()) {
+        const Sphere& s = one.sphere;
+        const Ray& ray = one.ray;
+        const SphereTruth& truth = one.truth;
         ASSERT_TRUE(truth.hit);
         Hit hit;
         ASSERT_TRUE(intersect_sphere(ray, s, Interval{}, hit))
@@ -763,13 +635,11 @@ TEST_F(SphereExact, OriginOnTheSphere) {
     // 0 and t1. With the open range (0, inf) the root 0 is never reported: a ray heading inside
     // hits the far side at t1 (exactly, c == 0 makes the formula t1 = q / a), one heading
     // outside misses.
-    const Sphere s{Vec3(1, 2, 3), 5};
-    const Vec3 o = s.center + Vec3(3, 4, 0);
-    const Ray inward{o, Vec3(-3, -4, 0) + Vec3(0, 1, 2)};
-    const Ray outward{o, Vec3(3, 4, 0) + Vec3(0, 1, 2)};
-    const Ray tangent{o, Vec3(-4, 3, 0)};
-    ASSERT_TRUE(exact_sphere(inward, s).origin_on_sphere);
-    const SphereTruth in = exact_sphere(inward, s);
+    const std::vector<SphereCase> cases = origin_on_sphere_cases();
+    const Sphere s = cases[0].sphere;
+    const Ray inward = cases[0].ray, outward = cases[1].ray, tangent = cases[2].ray;
+    ASSERT_TRUE(cases[0].truth.origin_on_sphere);
+    const SphereTruth& in = cases[0].truth;
     ASSERT_TRUE(in.hit);
     Hit hit;
     ASSERT_TRUE(intersect_sphere(inward, s, Interval{}, hit))
@@ -778,12 +648,12 @@ TEST_F(SphereExact, OriginOnTheSphere) {
         << "origin exactly on the sphere (c' = 0), heading inside: t = " << digits(hit.t)
         << ", exact root " << digits(in.t.to_double()) << ", " << few(in.t.ulp_error(hit.t))
         << " ulps away, at most 4 allowed (with c' = 0 the far root is q / a); " << kReadSphere;
-    EXPECT_FALSE(exact_sphere(outward, s).hit);
+    EXPECT_FALSE(cases[1].truth.hit);
     EXPECT_FALSE(intersect_sphere(outward, s, Interval{}, hit))
         << "origin exactly on the sphere, heading outside: the only roots are t = 0 and one "
         << "behind the origin, neither in the open range (0, inf), so a miss (reported t "
         << digits(hit.t) << "); " << kReadRanges;
-    EXPECT_FALSE(exact_sphere(tangent, s).hit);  // double root at 0
+    EXPECT_FALSE(cases[2].truth.hit);  // double root at 0
     EXPECT_FALSE(intersect_sphere(tangent, s, Interval{}, hit))
         << "origin exactly on the sphere, tangent direction: a double root at t = 0, outside "
         << "the open range (0, inf), so a miss (reported t " << digits(hit.t) << "); "
@@ -803,21 +673,14 @@ TEST_F(BoxExact, SlabsAgreeWithCgal) {
     // entry and exit parameters within a relative kGap * eps of each other. The face reported
     // is the exact one unless the next slab's bound is within a relative kGap * eps as well
     // (the ray enters next to an edge of the box, where either face is a right answer).
-    constexpr double kUlps = 2, kGap = 4;
-    Rng rng(0x5eed000a);
+    // (The cases and kBoxUlps, kBoxGap: testing/exact_cases.h.)
+    constexpr double kUlps = kBoxUlps, kGap = kBoxGap;
     int hits = 0, disagreements = 0, faces_checked = 0;
     double worst_ulps = 0, worst_gap = 0;
-    for (int i = 0; i < 4000; ++i) {
-        const Vec3 p = rng.vec(-3, 3), q = rng.vec(-3, 3);
-        const Box box{glm::min(p, q), glm::max(p, q)};
-        const Vec3 o = rng.vec(-6, 6);
-        Vec3 target = rng.vec(-3.5, 3.5);
-        if (i % 4 == 0) target = box.min;  // a corner (to within the rounding of d)
-        if (i % 4 == 1) target[rng.integer(0, 2)] = box.max[rng.integer(0, 2)];
-        Vec3 d = target - o;
-        if (i % 7 == 0) d[rng.integer(0, 2)] = 0;  // parallel to a slab
-        const Ray ray{o, d * Real(rng.uniform(0.2, 5))};
-        const BoxTruth truth = exact_box(ray, box);
+    for (const BoxCase& one : box_cases()) {
+        const Box& box = one.box;
+        const Ray& ray = one.ray;
+        const BoxTruth& truth = one.truth;
         ASSERT_TRUE(truth.cgal_consistent) << "exact slabs disagree with CGAL do_intersect";
         Hit hit;
         const bool got = intersect_box(ray, box, Interval{}, hit);
@@ -877,23 +740,20 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
     // t = n.(p - o) / n.d. Rounding p - o costs eps |p - o| per component, and the two dot
     // products cancel when n is nearly orthogonal to (p - o) or to d, so
     //   |t - t_exact| |d| <= kT * eps * (|p - o| + |t d|) / cos,   cos = |n.d| / (|n| |d|).
-    constexpr double kT = 3;  // measured 0.73
-    Rng rng(0x5eed000b);
+    // (The cases and kPlaneT, measured 0.73: testing/exact_cases.h.)
+    constexpr double kT = kPlaneT;
     int hits = 0;
     double worst = 0;
-    for (int i = 0; i < 4000; ++i) {
-        const Plane plane{rng.vec(-10, 10), rng.unit()};
-        const Ray ray{rng.vec(-10, 10), rng.unit() * Real(rng.uniform(0.1, 10))};
-        const PlaneTruth truth = exact_plane(ray, plane);
+    for (const PlaneCase& one : plane_cases()) {
+        const Plane& plane = one.plane;
+        const Ray& ray = one.ray;
+        const PlaneTruth& truth = one.truth;
         Hit hit;
         const bool got = intersect_plane(ray, plane, Interval{}, hit);
         ASSERT_FALSE(truth.parallel);
         const double dlen = length(ray.direction);
-        const double cos =
-            std::abs(glm::dot(plane.normal, ray.direction)) / (length(plane.normal) * dlen);
         const double t_exact = CGAL::to_double(truth.t);
-        const double scale =
-            kEps * (length(plane.point - ray.origin) + std::abs(t_exact) * dlen) / cos;
+        const double scale = plane_unit(one, kEps);
         if (got != truth.hit) {  // only when the exact t is 0 to within rounding
             EXPECT_LE(std::abs(t_exact) * dlen, kT * scale)
                 << "plane: you report " << hit_or_miss(got) << ", exact arithmetic "
@@ -924,26 +784,25 @@ TEST_F(PlaneExact, RandomRaysMatchExactT) {
 }
 
 TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
-    // n = normalize(1, 1, 0) in Real, so n.x == n.y: d = (1, -1, z) is exactly parallel.
-    const Plane plane{Vec3(2, -1, 0.5), glm::normalize(Vec3(1, 1, 0))};
-    for (const Vec3 o :
-         {Vec3(5, 6, 7), Vec3(2, -1, 0.5), Vec3(3, -2, 0.5)}) {  // the last two lie in it
-        const Ray ray{o, Vec3(1, -1, 3)};
-        ASSERT_TRUE(exact_plane(ray, plane).parallel);
+    // The first three: n = normalize(1, 1, 0) in Real, so n.x == n.y and d = (1, -1, z) is
+    // exactly parallel (the last two of them lie in the plane). The last two: the origin exactly
+    // on the plane, the direction across it: exact t == 0, outside (0, inf): a miss.
+    const std::vector<PlaneCase> cases = parallel_plane_cases();
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Ray& ray = cases[i].ray;
+        ASSERT_TRUE(cases[i].truth.parallel);
         Hit hit;
-        EXPECT_FALSE(intersect_plane(ray, plane, Interval{}, hit))
+        EXPECT_FALSE(intersect_plane(ray, cases[i].plane, Interval{}, hit))
             << text(ray) << " is exactly parallel to the plane (n.d = 0): a miss, also when it "
             << "lies in the plane; " << kReadPlane;
     }
-    // Origin exactly on the plane, direction across it: exact t == 0, outside (0, inf): miss.
-    const Plane flat{Vec3(0, 1.5, 0), Vec3(0, 1, 0)};
-    for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0.3f, -1, 0.2f)}) {
-        const Ray ray{Vec3(5, 1.5, -3), d};
-        const PlaneTruth truth = exact_plane(ray, flat);
+    for (std::size_t i = 3; i < cases.size(); ++i) {
+        const Ray& ray = cases[i].ray;
+        const PlaneTruth& truth = cases[i].truth;
         ASSERT_TRUE(truth.origin_in_plane);
         EXPECT_FALSE(truth.hit);
         Hit hit;
-        EXPECT_FALSE(intersect_plane(ray, flat, Interval{}, hit))
+        EXPECT_FALSE(intersect_plane(ray, cases[i].plane, Interval{}, hit))
             << text(ray) << " starts exactly on the plane: t = 0 is outside the open range "
             << "(0, inf), so a miss (reported t " << digits(hit.t) << "); " << kReadRanges;
     }

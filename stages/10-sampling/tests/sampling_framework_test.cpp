@@ -8,6 +8,7 @@
 #include "core/source_dir.h"
 #include "image/compare.h"
 #include "render/sampled.h"
+#include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 
 namespace rt {
@@ -70,6 +71,17 @@ TEST(SamplingScenes, BadInputIsOneLineNamingPlaceAndFix) {
         {R"("lights": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}])", "must be > 0"},
         {R"("render": {"accelerator": "bvh"}, "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "velocity": [1, 0, 0]}])",
          "a moving sphere cannot be in a BVH"},
+        {R"("fog": {"albedo": [0.5, 0.5, 0.5]})", "s.json:1:9: error: the fog needs \"density\""},
+        {R"("fog": {"density": 0})", "s.json:1:21: error: \"density\" must be > 0, got 0"},
+        {R"("fog": {"density": 1, "albedo": [0.5, 1.5, 0.5]})",
+         "s.json:1:40: error: \"albedo\" must be between 0 and 1, got 1.5"},
+        {R"("fog": {"density": 1, "min": [0, 0, 0]})", "a fog box needs both \"min\" and \"max\""},
+        {R"("fog": {"density": 1, "min": [0, 0, 0], "max": [1, -1, 1]})",
+         "\"max\" must not be below \"min\", but y is -1 < 0"},
+        {R"("fog": {"density": 1, "height": 2})",
+         "s.json:1:24: error: unknown key \"height\" in \"fog\""},
+        {R"("fog": {"density": 1}, "lights": [{"type": "sphere", "center": [0, 3, 0], "radius": 0.5}])",
+         "fog and area lights together are not supported"},
     };
     for (auto [body, expected] : cases) {
         const std::string message = error_of(body);
@@ -77,6 +89,54 @@ TEST(SamplingScenes, BadInputIsOneLineNamingPlaceAndFix) {
         EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
         EXPECT_NE(message.find("; "), std::string::npos) << "no fix named: " << message;
     }
+}
+
+// The optional fog: its keys, Features (so scenes without fog never call its code), the box.
+TEST(SamplingScenes, FogReachesTheSceneAndFeatures) {
+    const Scene plain = scene_of(R"("render": {"mode": "shaded"})");
+    EXPECT_FALSE(plain.features.fog || plain.features.sampled()) << "no fog, no sampled path";
+    const Scene s = scene_of(
+        R"("fog": {"density": 0.25, "albedo": [0.5, 0.6, 0.7], "min": [-1, 0, -2], "max": [1, 2, 0]})");
+    EXPECT_FLOAT_EQ(s.fog.density, 0.25f);
+    EXPECT_FLOAT_EQ(s.fog.albedo.g, 0.6f);
+    EXPECT_TRUE(s.fog.bounded);
+    EXPECT_EQ(s.fog.max, Vec3(1, 2, 0));
+    EXPECT_TRUE(s.features.fog && s.features.sampled());
+    EXPECT_NE(s.features.describe().find("sampled: fog"), std::string::npos)
+        << s.features.describe();
+    const Scene everywhere = scene_of(R"("fog": {"density": 1})");
+    EXPECT_FALSE(everywhere.fog.bounded);
+    EXPECT_EQ(everywhere.fog.albedo, Color(1));
+    // The canonical form puts "fog" after "environment" and its keys in table order.
+    const std::string text = canonical_scene_text(
+        R"({"lights": [], "fog": {"max": [1, 1, 1], "min": [0, 0, 0], "albedo": [1, 1, 1], "density": 1}, "background": [0, 0, 0]})",
+        "s.json", ".");
+    EXPECT_NE(text.find(R"("background": [0, 0, 0],
+  "fog": {"density": 1, "albedo": [1, 1, 1], "min": [0, 0, 0], "max": [1, 1, 1]},
+  "lights")"),
+              std::string::npos)
+        << text;
+}
+
+// The framework's medium_interval: the part of a range inside the fog's box.
+TEST(SamplingScenes, MediumIntervalClipsToTheBox) {
+    Medium box;
+    box.density = 1, box.bounded = true, box.min = Vec3(-1, -1, -1), box.max = Vec3(1, 1, 1);
+    const Ray ray{Vec3(-3, 0, 0), Vec3(2, 0, 0)};
+    Interval in = medium_interval(box, ray, Interval{});
+    EXPECT_FLOAT_EQ(in.min, 1);
+    EXPECT_FLOAT_EQ(in.max, 2);
+    in = medium_interval(box, ray, Interval{0, 1.5f});
+    EXPECT_FLOAT_EQ(in.max, 1.5f);
+    in = medium_interval(box, Ray{Vec3(-3, 2, 0), Vec3(1, 0, 0)}, Interval{});
+    EXPECT_FALSE(in.min < in.max) << "a ray beside the box (parallel to a slab): empty";
+    in = medium_interval(box, ray, Interval{0, 0.5f});
+    EXPECT_FALSE(in.min < in.max) << "a range that ends before the box: empty";
+    Medium everywhere;
+    everywhere.density = 1;
+    in = medium_interval(everywhere, ray, Interval{0.5f, 7});
+    EXPECT_FLOAT_EQ(in.min, 0.5f);
+    EXPECT_FLOAT_EQ(in.max, 7);
 }
 
 TEST(SamplingScenes, NoEarlierStageSceneTakesTheSampledPath) {

@@ -1,0 +1,98 @@
+// The host side of stage 09's GPU unit tests (gpu_cases.h).
+#include "gpu_cases.h"
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "gl/compute_program.h"
+#include "gl/gl_context.h"
+#include "gpu/gpu_scene.h"
+#include "render/gpu_render.h"
+#include "testing/stage_test.h"
+
+namespace rt::gpu_cases {
+
+namespace {
+
+GpuRayCase ray_case(const Ray& ray, Kind kind, Interval range, glm::vec4 a, glm::vec4 b = {},
+                    glm::vec4 c = {}) {
+    return {g4(ray.origin, gpu::int_bits(kind)),
+            g4(ray.direction),
+            glm::vec4(float(range.min), float(range.max), 0, 0),
+            a,
+            b,
+            c};
+}
+
+GLuint case_buffer(const GlApi& gl, int binding, GLsizeiptr bytes, const void* data) {
+    GLuint buffer = 0;
+    gl.GenBuffers(1, &buffer);
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    gl.BufferData(GL_SHADER_STORAGE_BUFFER, bytes, data, GL_DYNAMIC_DRAW);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer);
+    return buffer;
+}
+
+}  // namespace
+
+glm::vec4 g4(const Vec3& v, float w) {
+    return glm::vec4(float(v.x), float(v.y), float(v.z), w);
+}
+
+GpuRayCase sphere_case(const Ray& ray, const Sphere& sphere, Interval range) {
+    return ray_case(ray, kSphere, range, g4(sphere.center, float(sphere.radius)));
+}
+GpuRayCase plane_case(const Ray& ray, const Plane& plane, Interval range) {
+    return ray_case(ray, kPlane, range, g4(plane.point), g4(plane.normal));
+}
+GpuRayCase triangle_case(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
+                         Interval range) {
+    return ray_case(ray, kTriangle, range, g4(a), g4(b), g4(c));
+}
+GpuRayCase box_case(const Ray& ray, const Box& box, Interval range) {
+    return ray_case(ray, kBox, range, g4(box.min), g4(box.max));
+}
+
+bool run_on_gpu(const std::vector<GpuRayCase>& cases, std::vector<GpuAnswer>& answers,
+                std::string& error) {
+    const std::unique_ptr<GlContext> context = GlContext::create(GlKind::Egl, error);
+    if (!context) return false;
+    const GlApi& gl = context->gl();
+    const std::filesystem::path root = ::rt::testing::source_dir();
+    const AssembledShader shader =
+        assemble_shader(root / "stages/09-gpu/tests/intersect_cases.comp",
+                        {root / "shaders", gpu_student_dir()}, "");
+    const GLuint program = build_compute_program(gl, shader, error);
+    if (program == 0) return false;
+    // Binding 15 (compute_io.glsl's Output): 4 words of stub flags, then the answers.
+    std::vector<glm::vec4> output(1 + 4 * cases.size(), glm::vec4(0));
+    const GLuint buffers[2] = {
+        case_buffer(gl, gpu::kTexels, GLsizeiptr(cases.size() * sizeof(GpuRayCase)), cases.data()),
+        case_buffer(gl, 15, GLsizeiptr(output.size() * sizeof(glm::vec4)), output.data())};
+    gl.UseProgram(program);
+    gl.Uniform1i(gl.GetUniformLocation(program, "case_count"), int(cases.size()));
+    gl.DispatchCompute(GLuint((cases.size() + 63) / 64), 1, 1);
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
+                        output.data());
+    const GLenum status = gl.GetError();
+    gl.DeleteBuffers(2, buffers);
+    gl.DeleteProgram(program);
+    if (status != GL_NO_ERROR) {
+        error = "OpenGL error " + std::to_string(status) + " running intersect_cases.comp";
+        return false;
+    }
+    std::uint32_t flags[4];
+    std::memcpy(flags, &output[0], sizeof flags);
+    report_gpu_stubs(shader, flags);
+    answers.assign(cases.size(), {});
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const glm::vec4* g = &output[1 + 4 * i];  // found, t, stub; normal, front; point; uv
+        answers[i] = {g[0].x == 1, g[0].y, glm::vec3(g[1]), g[1].w == 1};
+    }
+    return true;
+}
+
+}  // namespace rt::gpu_cases
