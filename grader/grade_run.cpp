@@ -21,6 +21,10 @@ namespace fs = std::filesystem;
 namespace rt::grader {
 namespace {
 
+// Wall-clock limit of a child per second of its CPU limit, plus slack (set_time_limits).
+constexpr double kWallPerCpuSecond = 4;
+constexpr double kWallSlackSeconds = 10;
+
 // A file the child wrote, copied out through a descriptor that refuses symlinks, fifos and
 // devices: the child owned the folder and could have planted anything there.
 bool copy_out(const fs::path& child_dir, const std::string& name, const fs::path& to,
@@ -117,8 +121,14 @@ class Runner {
                                    "MESA_SHADER_CACHE_DISABLE=true"});
     }
 
-    double limit(double stage_seconds) const {
-        return g_.o.time_limit > 0 ? g_.o.time_limit : stage_seconds;
+    // The stage's seconds (or --time-limit) bound the child's work: its CPU time. The wall clock
+    // only catches a child that waits instead of working, so its limit is a multiple: a busy
+    // machine (a batch of gradings, CI, a shared host) stretches an honest test's wall time
+    // several-fold but not its CPU time, and must never cost it its points.
+    void set_time_limits(Limits& limits, double stage_seconds) const {
+        const double seconds = g_.o.time_limit > 0 ? g_.o.time_limit : stage_seconds;
+        limits.cpu_seconds = int(std::ceil(seconds));
+        limits.wall_seconds = kWallPerCpuSecond * seconds + kWallSlackSeconds;
     }
 
     void run_unit_test(const fs::path& bin, const GradeTask& task, const fs::path& dir,
@@ -127,8 +137,7 @@ class Runner {
         const fs::path trusted = trusted_dir(dir / "trusted");
         RunSpec r = base_spec(bin / task.binary, child, trusted);
         r.argv = {(bin / task.binary).string(), "--gtest_filter=" + task.test, "--gtest_color=no"};
-        r.limits.wall_seconds = limit(task.stage->test_seconds);
-        r.limits.cpu_seconds = int(std::ceil(r.limits.wall_seconds));
+        set_time_limits(r.limits, task.stage->test_seconds);
         VerdictChannel channel;
         r.env = {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
                  "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
@@ -179,8 +188,7 @@ class Runner {
             std::snprintf(text, sizeof text, "%.3f", yaw);
             r.argv.insert(r.argv.end(), {"--yaw", text});
         }
-        r.limits.wall_seconds = limit(task.stage->render_seconds);
-        r.limits.cpu_seconds = int(std::ceil(r.limits.wall_seconds));
+        set_time_limits(r.limits, task.stage->render_seconds);
         const RunResult res = run_sandboxed(r);
         g_.survivors += res.survivors;
         result.output = clean_output(res.output);

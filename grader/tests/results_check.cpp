@@ -152,9 +152,17 @@ int main(int argc, char** argv) {
             if (std::abs(max_total - v) > 1e-9)
                 fail("max score " + std::to_string(max_total) + " != " + std::to_string(v));
         } else if (flag == "--full-marks") {
-            if (max_total <= 0 || std::abs(score - max_total) > 1e-9)
+            if (max_total <= 0 || std::abs(score - max_total) > 1e-9) {
                 fail("score " + std::to_string(score) + " is not full marks " +
                      std::to_string(max_total));
+                // Which tests lost points, and why: the JSON itself may be too long to print.
+                for (const auto& t : r.value("tests", json::array()))
+                    if (std::abs(t.value("score", 0.0) - t.value("max_score", 0.0)) > 1e-9)
+                        fail("  " + t.value("name", std::string("?")) + ": " +
+                             std::to_string(t.value("score", 0.0)) + " of " +
+                             std::to_string(t.value("max_score", 0.0)) + ": " +
+                             t.value("output", std::string()).substr(0, 600));
+            }
         } else if (flag == "--full-marks-tag") {
             // Every test tagged TAG has full points (and there is at least one).
             const std::string tag = next();
