@@ -245,6 +245,31 @@ TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
     EXPECT_EQ(second->image.pixels, render_gpu(scene, scene.mode).pixels);
 }
 
+// Stage 10 on the GPU path: the same passes (1, 4, 16 samples), each accumulated over dispatches;
+// the refined frame is `rt render --gpu`'s image.
+TEST(ViewProgressive, TheGpuPathRefinesAMonteCarloScene) {
+    Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
+    scene.image = ImageSize{48, 32};  // no coarse passes
+    ProgressiveRenderer renderer(1);
+    const std::uint64_t generation = renderer.restart(scene, true);
+    std::vector<int> samples;
+    std::optional<Frame> last;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!last && std::chrono::steady_clock::now() < deadline) {
+        if (auto frame = renderer.take(); frame && frame->generation == generation) {
+            ASSERT_TRUE(frame->error.empty()) << frame->error;
+            EXPECT_TRUE(frame->gpu);
+            samples.push_back(frame->samples);
+            if (frame->refined()) last = std::move(frame);
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    ASSERT_TRUE(last) << "no refined GPU frame within 120 s";
+    EXPECT_EQ(samples.back(), 16);
+    for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
+    EXPECT_EQ(last->image.pixels, render_gpu(scene, scene.mode).pixels);
+}
+
 TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {
     Scene scene = whitted();
     scene.mode = RenderMode::BvhVisits;  // without a BVH: render() refuses
