@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "core/not_implemented.h"
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/gpu_render.h"
@@ -95,14 +96,17 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuSampled, ::testing::ValuesIn(gpu_sampling_sc
 RT_TEST_SUITE(GpuSampledRuns);
 
 // The same image in every run, and for any number of samples per dispatch (each sample's
-// numbers depend on its pixel and index only).
+// numbers depend on its pixel and index only). Stubs would give the same magenta every time:
+// no stub may be reached, so that a starter tree fails this test too.
 TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
     Scene scene = gpu_sampling_scene("soft_shadows");
     scene.image.width = 32, scene.image.height = 24;
     GpuRenderOptions one, seven;
     one.samples_per_dispatch = 1;
     seven.samples_per_dispatch = 7;
+    const std::uint64_t stubs_before = stub_calls_total();
     const Image a = render_gpu(scene, RenderMode::Shaded);
+    ASSERT_EQ(stub_calls_total(), stubs_before) << "the shader reached a stub";
     const Image b = render_gpu(scene, RenderMode::Shaded, one);
     const Image c = render_gpu(scene, RenderMode::Shaded, seven);
     EXPECT_EQ(a.pixels, b.pixels);
