@@ -39,6 +39,17 @@ bool gpu_sampled(const Scene& scene, RenderMode mode) {
     return mode == RenderMode::Shaded && scene.features.sampled();
 }
 
+// The sizes of the uniform block's arrays (MAX_AREA_LIGHTS, MAX_MOVING_SPHERES): the scene's
+// counts, or the largest with --uber on a stage 10 scene.
+struct SampledSlots {
+    int area_lights, moving_spheres;
+};
+SampledSlots sampled_slots(const Scene& scene, RenderMode mode, bool uber) {
+    if (uber && gpu_sampled(scene, mode)) return {kMaxGpuAreaLights, kMaxGpuMovingSpheres};
+    return {std::max(1, int(scene.area_lights.size())),
+            std::max(1, int(scene.moving_spheres.size()))};
+}
+
 Color display_value(Color v) {
     return Color(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b));
 }
@@ -130,8 +141,7 @@ void check_gpu_supported(const Scene& scene, RenderMode mode) {
                        " area lights; the GPU port takes at most " +
                        std::to_string(kMaxGpuAreaLights));
     if (gpu_sampled(scene, mode) && scene.features.motion_blur &&
-        (scene.spheres.size() > std::size_t(kMaxGpuSpheresWithMotion) ||
-         scene.moving_spheres.size() > std::size_t(kMaxGpuMovingSpheres)))
+        scene.spheres.size() > std::size_t(kMaxGpuSpheresWithMotion))
         throw GpuError(where + ": " + std::to_string(scene.spheres.size()) +
                        " spheres with motion blur; the GPU port moves a copy of at most " +
                        std::to_string(kMaxGpuSpheresWithMotion) +
@@ -222,13 +232,9 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
              std::to_string(std::max<std::size_t>(1, scene.spheres.size())) + "\n";
     const std::size_t lights = uber ? kMaxGpuLights : std::max<std::size_t>(1, scene.lights.size());
     d += "#define MAX_LIGHTS " + std::to_string(lights) + "\n";
-    const std::size_t area =
-        uber && sampled ? kMaxGpuAreaLights : std::max<std::size_t>(1, scene.area_lights.size());
-    const std::size_t moving = uber && sampled
-                                   ? kMaxGpuMovingSpheres
-                                   : std::max<std::size_t>(1, scene.moving_spheres.size());
-    d += "#define MAX_AREA_LIGHTS " + std::to_string(area) + "\n";
-    d += "#define MAX_MOVING_SPHERES " + std::to_string(moving) + "\n";
+    const SampledSlots slots = sampled_slots(scene, mode, uber);
+    d += "#define MAX_AREA_LIGHTS " + std::to_string(slots.area_lights) + "\n";
+    d += "#define MAX_MOVING_SPHERES " + std::to_string(slots.moving_spheres) + "\n";
     d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : gpu_trace_depth(scene, mode)) +
          "\n";
     return d;
@@ -327,12 +333,9 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     };
     // Stage 10's uniform block (binding 0), sized as the program's defines say.
     const bool sampled = gpu_sampled(scene, mode);
-    const bool uber_sampled = options_.uber && sampled;  // gpu_defines' sizes
-    const int area_slots =
-        uber_sampled ? kMaxGpuAreaLights : std::max(1, int(scene.area_lights.size()));
-    const int moving_slots =
-        uber_sampled ? kMaxGpuMovingSpheres : std::max(1, int(scene.moving_spheres.size()));
-    const std::vector<unsigned char> block = gpu::sampled_block(packed, area_slots, moving_slots);
+    const SampledSlots slots = sampled_slots(scene, mode, options_.uber);
+    const std::vector<unsigned char> block =
+        gpu::sampled_block(packed, slots.area_lights, slots.moving_spheres);
     GLuint uniform_block = 0;
     gl.GenBuffers(1, &uniform_block);
     gl.BindBuffer(GL_UNIFORM_BUFFER, uniform_block);
