@@ -95,8 +95,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuSampled, ::testing::ValuesIn(gpu_sampling_sc
 
 RT_TEST_SUITE(GpuSampledRuns);
 
-// The same image in every run, and for any number of samples per dispatch (each sample's
-// numbers depend on its pixel and index only). Stubs would give the same magenta every time:
+// The same image in every run, for any number of samples per dispatch (each sample's numbers
+// depend on its pixel and index only) and on either headless context. Stubs would give the same magenta every time:
 // no stub may be reached, so that a starter tree fails this test too.
 TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
     Scene scene = gpu_sampling_scene("soft_shadows");
@@ -104,6 +104,7 @@ TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
     GpuRenderOptions one, seven;
     one.samples_per_dispatch = 1;
     seven.samples_per_dispatch = 7;
+    seven.context = GlKind::OsMesa;
     const std::uint64_t stubs_before = stub_calls_total();
     const Image a = render_gpu(scene, RenderMode::Shaded);
     ASSERT_EQ(stub_calls_total(), stubs_before) << "the shader reached a stub";
