@@ -15,11 +15,22 @@ uniform int max_depth;    // the scene's, at most MAX_DEPTH
 // HAS_ defines); the --uber one compiles everything and tests these bits instead.
 uniform int scene_features;
 uniform int texture_lookup;  // 0 each texture's own filter, 1 all nearest, 2 all bilinear
+// Stage 10's progressive accumulation: this dispatch adds camera samples sample_first ..
+// sample_first + sample_count - 1 of every pixel to the sums in `pixels` (the first dispatch
+// starts them at 0); the host divides by the total.
+uniform int sample_first;
+uniform int sample_count;
+#ifdef HAS_MOTION_BLUR
+// The spheres as they are at the current camera sample's time (the storage buffer holds them at
+// time 0 as spheres_at_rest): what render/sampled.cpp's per-thread scene copy is on the CPU.
+Sphere spheres[MAX_SPHERES];
+#endif
 
 // Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
 layout(std430, binding = 15) buffer Output {
     uint stub_flags[4];
-    vec4 pixels[];  // rgb colour; a: depth (-1 miss), -2 when the pixel reached a stub
+    vec4 pixels[];  // rgb colour (stage 10: the sum of the samples so far); a: depth (-1 miss),
+                    // -2 when the pixel reached a stub
 };
 
 bool rt_stub_reached = false;

@@ -39,6 +39,9 @@ int primitive_index(int id) { return id & ((1 << kKindShift) - 1); }
 // the constants of an export); the --uber shader tests these bits at run time.
 const int kFeatureBvh = 1, kFeatureShadows = 2, kFeatureVertexNormals = 4, kFeatureVertexUvs = 8,
           kFeatureRefraction = 16;
+// Stage 10 (Features::sampled() and its parts; motion blur is compiled in only when a sphere moves).
+const int kFeatureSampled = 32, kFeatureAreaLights = 64, kFeatureDepthOfField = 128,
+          kFeatureGlossy = 256, kFeatureOcclusion = 512, kFeatureIndirect = 1024;
 bool scene_has(int feature) { return (scene_features & feature) != 0; }
 
 // Stage 06's BvhStats::nodes_visited, without pointers: bvh_intersect_nearest adds each node whose

@@ -12,7 +12,7 @@ struct Material {
     vec4 diffuse;
     vec4 specular_shininess;
     vec4 emissive;
-    vec4 reflective;
+    vec4 reflective;          // xyz k_r, w fuzz (stage 10's glossy reflection; 0 a mirror)
     vec4 transmissive_ior;
     ivec4 maps;               // texture of the diffuse, specular, emissive, normal slot (-1: none)
     vec4 map_transform[4];    // per slot: xy scale, zw offset
@@ -24,6 +24,20 @@ struct TextureImage { ivec4 width_height_first; };
 struct Environment { ivec4 kind_image; ivec4 faces_px_nx_py_ny; ivec4 faces_pz_nz; vec4 intensity_rotate_y; };
 struct Light { vec4 position_kind; vec4 direction; vec4 intensity; vec4 attenuation; };
 struct BvhNode { vec3 min; uint first; vec3 max; uint count; };
+// Stage 10. An area light: corner_kind.w (int bits) 0 rectangle (corner + s edge_u + t edge_v,
+// lit on the side of cross(edge_u, edge_v)), 1 sphere (center_radius); radiance L_e.
+struct AreaLight { vec4 corner_kind; vec4 edge_u; vec4 edge_v; vec4 center_radius; vec4 radiance; };
+// A sphere that moves while the shutter is open: spheres[sphere] at time 0 (velocity_sphere.w,
+// int bits), moving by velocity_sphere.xyz per unit of time.
+struct MovingSphere { vec4 velocity_sphere; };
+// The sampling settings (scene.h's SamplingSettings) and the counts of the two arrays above.
+struct Sampling {
+    ivec4 spp_filter_indirect;  // samples per pixel, filter (0 box, 1 tent), indirect (0 ambient,
+                                // 1 occlusion, 2 diffuse), w unused
+    uvec4 seed_counts;          // seed low and high 32 bits, area lights, moving spheres
+    vec4 lens_shutter;          // aperture, focus distance, shutter open, shutter close
+    vec4 occlusion;             // x occlusion distance (may be +inf), yzw unused
+};
 // The camera (set as the uniform `camera`, or baked in as a constant by rt export-shadertoy).
 struct Camera {
     int projection;  // 0 perspective, 1 orthographic
@@ -32,7 +46,11 @@ struct Camera {
     float view_height;
 };
 
+#ifdef HAS_MOTION_BLUR
+layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres_at_rest[]; };
+#else
 layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres[]; };
+#endif
 layout(std430, binding = 1) readonly buffer Planes { Plane planes[]; };
 layout(std430, binding = 2) readonly buffer Boxes { Box boxes[]; };
 layout(std430, binding = 3) readonly buffer Triangles { Triangle triangles[]; };
@@ -47,3 +65,13 @@ layout(std430, binding = 11) readonly buffer Textures { Texture textures[]; };
 layout(std430, binding = 12) readonly buffer TextureImages { TextureImage texture_images[]; };
 layout(std430, binding = 13) readonly buffer Texels { vec4 texels[]; };
 layout(std430, binding = 14) readonly buffer Environments { Environment environment[]; };
+// Stage 10's data is a uniform block (std140, the same offsets as std430 here: vec4s only): the
+// compute stage has 16 storage blocks and the uber shader uses them all. Sized by the host's
+// defines; the defaults serve the layout test and shaders without sampling.
+#ifndef MAX_AREA_LIGHTS
+#define MAX_AREA_LIGHTS 2
+#endif
+#ifndef MAX_MOVING_SPHERES
+#define MAX_MOVING_SPHERES 2
+#endif
+layout(std140, binding = 0) uniform SampledScene { Sampling sampling; AreaLight area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };

@@ -1,8 +1,9 @@
 // The tracer both entry points share: trace.comp (the compute shader of rt render --gpu) and
 // shadertoy.glsl (rt export-shadertoy). Before it come the scene's structs and what holds the
 // scene: trace.comp's storage buffers and uniforms, or an export's constants. The HAS_ defines
-// (listed in trace.comp) say what the scene needs; the student files (stages/09-gpu/) come from
-// the include folders the host passes.
+// (listed in trace.comp) say what the scene needs; the student files (stages/09-gpu/, and
+// stages/10-sampling/sampling.glsl for a stage 10 scene) come from the include folders the host
+// passes.
 #if defined(HAS_TEXTURES) || defined(HAS_NORMAL_MAPS)
 #define HAS_MAPS  // some material has a map: texture coordinates and the texturing step
 #endif
@@ -80,8 +81,132 @@ struct Frame {
 
 bool nonzero(vec3 c) { return c.r > 0.0 || c.g > 0.0 || c.b > 0.0; }
 
-// A frame's own work, as start_frame in render/shade.cpp: nearest hit, direct light with the
-// shadows, and the secondary rays when the material reflects or transmits.
+// A hit made ready for lighting (render/shade.cpp's PreparedHit): its surface point, the material
+// as its maps colour it there, the normal it is lit with.
+struct PreparedHit {
+    SurfacePoint at;
+    Material material;
+    vec3 lighting_normal;
+    vec3 to_viewer;
+};
+
+PreparedHit prepare_hit(Ray ray, Hit hit) {
+    PreparedHit p;
+    p.material = material_at(hit.material);
+    p.at = surface_point(ray, hit);
+    p.to_viewer = -normalize(ray.direction);
+    p.lighting_normal = p.at.normal;
+#ifdef HAS_VERTEX_NORMALS
+    if (scene_has(kFeatureVertexNormals) && primitive_kind(hit.primitive) == kTriangle) {
+        const vec3 smooth_normal = shading_normal(primitive_index(hit.primitive), hit.uv);
+        if (smooth_normal != vec3(0)) p.lighting_normal = hit.front_face ? smooth_normal
+                                                                         : -smooth_normal;
+    }
+#endif
+#ifdef HAS_MAPS
+    // Stage 07: the material as its maps colour it here, and the normal-mapped normal.
+    apply_textures(hit, p.at, p.to_viewer, p.material, p.lighting_normal);
+#endif
+    return p;
+}
+
+#ifdef HAS_SAMPLING
+// Stage 10's random numbers: a counter-based PCG hash (Jarzynski and Olano, "Hash Functions for
+// GPU Rendering", JCGT 2020) of the scene's seed, the pixel and the camera sample starts a
+// 32-bit PCG stream. The same pixel and sample give the same numbers in every run and every
+// dispatch order; they are not the CPU's (render/sampled.h), only as uniform.
+uint rng_state = 0u;
+uint pcg_hash(uint v) {
+    const uint state = v * 747796405u + 2891336453u;
+    const uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+void rng_start(uint pixel, uint sample_index) {
+    rng_state = pcg_hash(pixel + pcg_hash(sample_index + pcg_hash(sampling.seed_counts.x +
+                                                                  pcg_hash(sampling.seed_counts.y))));
+}
+float rng_next() {  // uniform in [0, 1): 24 random bits, exact in a float
+    rng_state = rng_state * 747796405u + 2891336453u;
+    uint word = ((rng_state >> ((rng_state >> 28u) + 4u)) ^ rng_state) * 277803737u;
+    word = (word >> 22u) ^ word;
+    return float(word >> 8u) * (1.0 / 16777216.0);
+}
+vec2 rng_next2() {
+    const float a = rng_next();
+    return vec2(a, rng_next());
+}
+
+// What a ray leaving a surface brings back (sampling.glsl's indirect_diffuse asks): defined
+// below. GLSL has no recursion, so the bounce's own light never bounces again (as on the CPU).
+vec3 incoming_radiance(Ray ray);
+#endif
+#ifdef HAS_SAMPLING
+#include "sampling.glsl"
+#endif
+#ifdef HAS_SAMPLING
+// Stage 10's sampled terms at a hit, in render/shade.cpp's order: one sample per area light,
+// then ambient occlusion (the indirect bounce is start_frame's).
+vec3 sampled_direct(PreparedHit p) {
+    vec3 sum = vec3(0);
+#ifdef HAS_AREA_LIGHTS
+    for (int i = 0; i < int(sampling.seed_counts.z) && i < MAX_AREA_LIGHTS; ++i)
+        sum += area_light_estimate(p.material, p.at, p.lighting_normal, p.to_viewer,
+                                   area_lights[i], rng_next2());
+#endif
+#ifdef HAS_OCCLUSION
+    if (scene_has(kFeatureOcclusion))
+        sum += p.material.ambient.rgb * ambient_light *
+               ambient_occlusion(p.at, p.lighting_normal, sampling.occlusion.x, rng_next2());
+#endif
+    return sum;
+}
+#endif
+
+// The light a hit sends back before reflected and refracted rays (render/shade.cpp's
+// local_light without the bounce): direct light with the shadows, and stage 10's area lights
+// and ambient occlusion, which replaces the ambient term as the bounce does.
+vec3 local_light(PreparedHit p) {
+    Material material = p.material;
+#ifdef HAS_SAMPLING
+    if (scene_has(kFeatureOcclusion) || scene_has(kFeatureIndirect)) material.ambient = vec4(0);
+#endif
+    vec3 visibility[MAX_LIGHTS];
+    for (int i = 0; i < MAX_LIGHTS; ++i) visibility[i] = vec3(1);
+#ifdef HAS_SHADOWS
+    // Only lights whose Blinn-Phong term is not zero get a shadow ray.
+    for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i) {
+        const LightSample s = illuminate(i, p.at.point);
+        visibility[i] = vec3(0);
+        if (blinn_phong(material, p.lighting_normal, p.to_viewer, s.direction, s.intensity) ==
+            vec3(0))
+            continue;
+#ifdef HAS_BVH
+        if (scene_has(kFeatureBvh) && !scene_has(kFeatureRefraction)) {
+            const ShadowRay shadow = shadow_ray(p.at, s);
+            visibility[i] = vec3(bvh_intersect_any(shadow.ray, shadow.t_range) ? 0.0 : 1.0);
+            continue;
+        }
+#endif
+        visibility[i] = light_transmittance(p.at, s);
+    }
+#endif
+    vec3 colour = direct_light(material, p.at.point, p.lighting_normal, p.to_viewer, visibility);
+#ifdef HAS_SAMPLING
+    colour += sampled_direct(p);
+#endif
+    return colour;
+}
+
+#ifdef HAS_SAMPLING
+vec3 incoming_radiance(Ray ray) {
+    Hit hit = no_hit();
+    if (!nearest_hit(ray, Interval(0.0, kInfinity), hit)) return background(ray.direction);
+    return local_light(prepare_hit(ray, hit));
+}
+#endif
+
+// A frame's own work, as start_frame in render/shade.cpp: nearest hit, its local light, and the
+// secondary rays when the material reflects or transmits.
 void start_frame(inout Frame f) {
     Hit hit = no_hit();
     f.recurse = false;
@@ -89,50 +214,35 @@ void start_frame(inout Frame f) {
         f.colour = background(f.ray.direction);
         return;
     }
-    Material material = material_at(hit.material);
-    const SurfacePoint at = surface_point(f.ray, hit);
-    const vec3 to_viewer = -normalize(f.ray.direction);
-    vec3 lighting_normal = at.normal;
-#ifdef HAS_VERTEX_NORMALS
-    if (scene_has(kFeatureVertexNormals) && primitive_kind(hit.primitive) == kTriangle) {
-        const vec3 smooth_normal = shading_normal(primitive_index(hit.primitive), hit.uv);
-        if (smooth_normal != vec3(0)) lighting_normal = hit.front_face ? smooth_normal
-                                                                       : -smooth_normal;
-    }
+    const PreparedHit p = prepare_hit(f.ray, hit);
+    f.colour = local_light(p);
+#ifdef HAS_INDIRECT
+    if (scene_has(kFeatureIndirect))
+        f.colour += indirect_diffuse(p.at, p.lighting_normal, p.material, rng_next2());
 #endif
-#ifdef HAS_MAPS
-    // Stage 07: the material as its maps colour it here, and the normal-mapped normal.
-    apply_textures(hit, at, to_viewer, material, lighting_normal);
-#endif
-    vec3 visibility[MAX_LIGHTS];
-    for (int i = 0; i < MAX_LIGHTS; ++i) visibility[i] = vec3(1);
-#ifdef HAS_SHADOWS
-    // Only lights whose Blinn-Phong term is not zero get a shadow ray.
-    for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i) {
-        const LightSample s = illuminate(i, at.point);
-        visibility[i] = vec3(0);
-        if (blinn_phong(material, lighting_normal, to_viewer, s.direction, s.intensity) == vec3(0))
-            continue;
-#ifdef HAS_BVH
-        if (scene_has(kFeatureBvh) && !scene_has(kFeatureRefraction)) {
-            const ShadowRay shadow = shadow_ray(at, s);
-            visibility[i] = vec3(bvh_intersect_any(shadow.ray, shadow.t_range) ? 0.0 : 1.0);
-            continue;
-        }
-#endif
-        visibility[i] = light_transmittance(at, s);
-    }
-#endif
-    f.colour = direct_light(material, at.point, lighting_normal, to_viewer, visibility);
     bool bounces = false;
 #ifdef HAS_REFLECTION
-    bounces = bounces || nonzero(material.reflective.rgb);
+    bounces = bounces || nonzero(p.material.reflective.rgb);
 #endif
 #ifdef HAS_REFRACTION
-    bounces = bounces || nonzero(material.transmissive_ior.rgb);
+    bounces = bounces || nonzero(p.material.transmissive_ior.rgb);
 #endif
     f.recurse = f.depth < max_depth && bounces;
-    if (f.recurse) f.branches = secondary_rays(f.ray, at, material, fresnel);
+    if (!f.recurse) return;
+    f.branches = secondary_rays(f.ray, p.at, p.material, fresnel);
+#ifdef HAS_GLOSSY
+    // Stage 10: the mirror ray turned by the material's fuzz; into the surface it is absorbed.
+    SecondaryRay reflected = f.branches.reflected;
+    if (scene_has(kFeatureGlossy) && p.material.reflective.w > 0.0 && reflected.valid) {
+        const vec3 d =
+            glossy_direction(normalize(reflected.ray.direction), p.material.reflective.w,
+                             rng_next2());
+        if (!(dot(d, p.at.normal) > 0.0) || any(isinf(d)) || any(isnan(d)))
+            f.branches.reflected.valid = false;
+        else
+            f.branches.reflected.ray = Ray(offset_ray_origin(p.at.point, p.at.error, p.at.normal, d), d);
+    }
+#endif
 }
 
 // render/shade.cpp's trace: a loop over a fixed stack instead of recursion. Level k of the stack
@@ -217,3 +327,38 @@ vec4 trace_pixel(vec2 pixel) {
     if (rt_stub_reached) result = vec4(1, 0, 1, -2);
     return result;
 }
+
+#ifdef HAS_SAMPLING
+#ifdef HAS_MOTION_BLUR
+// The spheres at `time` (render/sampled.cpp's scene_at_time): moving ones where stage 10's
+// sphere_center_at puts them.
+void move_spheres(float time) {
+    for (int i = 0; i < primitive_counts.x && i < MAX_SPHERES; ++i) spheres[i] = spheres_at_rest[i];
+    for (int m = 0; m < int(sampling.seed_counts.w) && m < MAX_MOVING_SPHERES; ++m) {
+        const int i = floatBitsToInt(moving_spheres[m].velocity_sphere.w);
+        if (i >= 0 && i < MAX_SPHERES)
+            spheres[i].center_radius.xyz = sphere_center_at(
+                spheres_at_rest[i].center_radius.xyz, moving_spheres[m].velocity_sphere.xyz, time);
+    }
+}
+#endif
+
+// Camera sample `sample_index` of `pixel` (render/sampled.cpp's sample_pixel): the jittered and
+// filtered image point, the thin-lens ray, the shutter time, traced.
+vec3 sample_pixel(ivec2 pixel, int sample_index) {
+    rng_start(uint(pixel.y * image_size.x + pixel.x), uint(sample_index));
+    const vec2 jitter =
+        stratified_sample(sample_index, sampling.spp_filter_indirect.x, rng_next2());
+    const vec2 offset = sampling.spp_filter_indirect.y == 1 ? tent_filter_offset(jitter)
+                                                            : box_filter_offset(jitter);
+    Ray ray = camera_ray(vec2(pixel) + 0.5 + offset);
+#ifdef HAS_DEPTH_OF_FIELD
+    if (scene_has(kFeatureDepthOfField))
+        ray = thin_lens_ray(ray, sampling.lens_shutter.x, sampling.lens_shutter.y, rng_next2());
+#endif
+#ifdef HAS_MOTION_BLUR
+    move_spheres(shutter_time(sampling.lens_shutter.z, sampling.lens_shutter.w, rng_next()));
+#endif
+    return trace(ray);
+}
+#endif

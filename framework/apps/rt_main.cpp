@@ -375,7 +375,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 53));
     render_cmd->add_flag("--gpu", render_args.gpu,
                          "render with the compute shader of stage 09 (shaders/trace.comp and "
-                         "stages/09-gpu/*.glsl)");
+                         "stages/09-gpu/*.glsl; a stage 10 scene also "
+                         "stages/10-sampling/sampling.glsl)");
     render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
     render_cmd->add_flag("--uber", render_args.uber,

@@ -30,6 +30,17 @@ std::string trim_left(const std::string& s) {
 // encoded in the line number: file k's line n is line k * kFileLines + n.
 constexpr int kFileLines = 100000;
 
+// Whether `defines` (lines of "#define NAME [value]") defines `name`.
+bool defined(const std::string& defines, const std::string& name) {
+    std::istringstream lines(defines);
+    std::string line;
+    static const std::regex define_re(R"(^\s*#\s*define\s+(\w+).*$)");
+    std::smatch m;
+    while (std::getline(lines, line))
+        if (std::regex_match(line, m, define_re) && m[1] == name) return true;
+    return false;
+}
+
 std::string line_directive(int line, int file) {
     return "#line " + std::to_string(file * kFileLines + line) + " " + std::to_string(file) + "\n";
 }
@@ -50,7 +61,7 @@ class Assembler {
         included_.insert(fs::weakly_canonical(path));
         if (!entry) out_.text += line_directive(1, id);
         std::istringstream lines(text);
-        std::string line, function;
+        std::string line, function, guard;
         int number = 0;
         static const std::regex include_re(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
         static const std::regex stub_re(R"re(RT_NOT_IMPLEMENTED\(\s*"([^"]*)"\s*\))re");
@@ -64,6 +75,13 @@ class Assembler {
                 continue;
             }
             if (std::regex_match(line, m, include_re)) {
+                // An include right under `#ifdef NAME` is left out unless the host defines NAME:
+                // its file (and its stubs) belong to that feature only.
+                if (!guard.empty() && !defined(defines, guard)) {
+                    out_.text += "// " + trim_left(line) + ": not included (no " + guard + ")\n";
+                    guard.clear();
+                    continue;
+                }
                 const fs::path found = find(path.parent_path(), m[1].str());
                 if (found.empty()) {
                     out_.error = out_.files[std::size_t(id)] + ":" + std::to_string(number) +
@@ -76,6 +94,8 @@ class Assembler {
                 out_.text += line_directive(number + 1, id);
                 continue;
             }
+            static const std::regex ifdef_re(R"(^\s*#\s*ifdef\s+(\w+)\s*$)");
+            guard = std::regex_match(line, m, ifdef_re) ? m[1].str() : "";
             if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
             if (!trim_left(line).starts_with("//") && std::regex_search(line, m, stub_re)) {
                 const int k = int(out_.stubs.size());

@@ -31,8 +31,12 @@ struct AssembledShader {
     std::string error;               // one line when an include cannot be read
 };
 
-// `entry` starts with #version; `defines` (lines of "#define X") go right after it.
-// Includes are looked up beside the including file, then in `include_dirs` in order.
+// `entry` starts with #version; `defines` (lines of "#define X") go right after it (when it has
+// no #version line, they only decide the guarded includes).
+// Includes are looked up beside the including file, then in `include_dirs` in order. An include
+// on the line right after `#ifdef NAME` is expanded only when `defines` defines NAME (so a file
+// of one feature, such as stage 10's sampling.glsl, and its stubs are in only the shaders of
+// scenes with that feature); other conditionals are left to the GLSL preprocessor.
 AssembledShader assemble_shader(const std::filesystem::path& entry,
                                 const std::vector<std::filesystem::path>& include_dirs,
                                 const std::string& defines);

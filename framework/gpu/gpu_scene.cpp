@@ -1,5 +1,8 @@
 #include "gpu/gpu_scene.h"
 
+#include <algorithm>
+#include <cstring>
+
 namespace rt::gpu {
 namespace {
 
@@ -27,7 +30,7 @@ GpuScene pack_scene(const Scene& scene) {
                        v4(m.diffuse),
                        v4(m.specular, m.shininess),
                        v4(m.emissive),
-                       v4(m.reflective),
+                       v4(m.reflective, m.fuzz),
                        v4(m.transmissive, m.ior),
                        glm::ivec4(-1),
                        {}};
@@ -56,7 +59,38 @@ GpuScene pack_scene(const Scene& scene) {
                             v4(l.direction), v4(l.intensity), v4(l.attenuation)});
     g.bvh_nodes = scene.bvh.nodes;
     g.bvh_primitives = scene.bvh.primitives;
+    const SamplingSettings& s = scene.sampling;
+    g.sampling.spp_filter_indirect =
+        glm::ivec4(s.samples_per_pixel, int(s.filter), int(s.indirect), 0);
+    g.sampling.seed_counts = glm::uvec4(std::uint32_t(s.seed), std::uint32_t(s.seed >> 32),
+                                        std::uint32_t(scene.area_lights.size()),
+                                        std::uint32_t(scene.moving_spheres.size()));
+    g.sampling.lens_shutter = glm::vec4(float(s.aperture), float(s.focus_distance),
+                                        float(s.shutter_open), float(s.shutter_close));
+    g.sampling.occlusion = glm::vec4(float(s.occlusion_distance), 0, 0, 0);
+    for (const AreaLight& a : scene.area_lights)
+        g.area_lights.push_back({v4(a.corner, int_bits(a.kind == AreaLightKind::Rectangle ? 0 : 1)),
+                                 v4(a.edge_u), v4(a.edge_v), v4(a.center, float(a.radius)),
+                                 glm::vec4(a.radiance, 0)});
+    for (const MovingSphere& m : scene.moving_spheres)
+        g.moving_spheres.push_back({v4(m.velocity, int_bits(int(m.sphere)))});
     return g;
+}
+
+std::vector<unsigned char> sampled_block(const GpuScene& scene, int area_slots, int moving_slots) {
+    std::vector<unsigned char> bytes(sizeof(GpuSampling) +
+                                     std::size_t(area_slots) * sizeof(GpuAreaLight) +
+                                     std::size_t(moving_slots) * sizeof(GpuMovingSphere));
+    unsigned char* at = bytes.data();
+    std::memcpy(at, &scene.sampling, sizeof(GpuSampling));
+    at += sizeof(GpuSampling);
+    std::memcpy(at, scene.area_lights.data(),
+                std::min(scene.area_lights.size(), std::size_t(area_slots)) * sizeof(GpuAreaLight));
+    at += std::size_t(area_slots) * sizeof(GpuAreaLight);
+    std::memcpy(
+        at, scene.moving_spheres.data(),
+        std::min(scene.moving_spheres.size(), std::size_t(moving_slots)) * sizeof(GpuMovingSphere));
+    return bytes;
 }
 
 }  // namespace rt::gpu

@@ -57,7 +57,7 @@ struct alignas(16) GpuMaterial {
     glm::vec4 diffuse;
     glm::vec4 specular_shininess;  // xyz k_s, w n_s
     glm::vec4 emissive;
-    glm::vec4 reflective;
+    glm::vec4 reflective;        // xyz k_r, w fuzz (stage 10's glossy reflection)
     glm::vec4 transmissive_ior;  // xyz k_t, w index of refraction
     glm::ivec4 maps;             // texture of the diffuse, specular, emissive, normal slot (-1)
     glm::vec4 map_transform[4];  // per slot: xy scale, zw offset
@@ -85,6 +85,25 @@ struct alignas(16) GpuLight {
 };
 // BvhNode (accel/bvh.h) goes as it is: {vec3 min; uint first; vec3 max; uint count}.
 
+// Stage 10, in the uniform block SampledScene (binding 0, std140: only vec4 members, so the same
+// offsets as std430). An area light; corner_kind.w int bits: 0 rectangle, 1 sphere.
+struct alignas(16) GpuAreaLight {
+    glm::vec4 corner_kind;    // xyz corner (rectangles), w kind
+    glm::vec4 edge_u;         // xyz
+    glm::vec4 edge_v;         // xyz
+    glm::vec4 center_radius;  // spheres: xyz centre, w radius
+    glm::vec4 radiance;       // rgb L_e
+};
+struct alignas(16) GpuMovingSphere {
+    glm::vec4 velocity_sphere;  // xyz velocity, w the index in spheres (int bits)
+};
+struct alignas(16) GpuSampling {
+    glm::ivec4 spp_filter_indirect;  // samples per pixel, PixelFilter, IndirectLight, unused
+    glm::uvec4 seed_counts;          // seed low and high words, area lights, moving spheres
+    glm::vec4 lens_shutter;          // aperture, focus distance, shutter open, shutter close
+    glm::vec4 occlusion;             // x occlusion distance
+};
+
 #define RT_GPU_CHECK(T, size)                                                     \
     static_assert(sizeof(T) == (size), #T " must stay " #size " bytes (std430)"); \
     static_assert(std::is_trivially_copyable_v<T>, #T " must be trivially copyable")
@@ -98,6 +117,9 @@ RT_GPU_CHECK(GpuTextureImage, 16);
 RT_GPU_CHECK(GpuEnvironment, 64);
 RT_GPU_CHECK(GpuLight, 64);
 RT_GPU_CHECK(BvhNode, 32);
+RT_GPU_CHECK(GpuAreaLight, 80);
+RT_GPU_CHECK(GpuMovingSphere, 16);
+RT_GPU_CHECK(GpuSampling, 64);
 static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::vec2) == 8, "GLSL vec4 / vec2 sizes");
 static_assert(offsetof(BvhNode, first) == 12 && offsetof(BvhNode, max) == 16 &&
                   offsetof(BvhNode, count) == 28,
@@ -125,7 +147,16 @@ struct GpuScene {
     std::vector<GpuTextureImage> texture_images;
     std::vector<glm::vec4> texels;            // w 1
     std::vector<GpuEnvironment> environment;  // one entry
+    // Stage 10 (empty arrays when the scene has none); `sampling` always filled.
+    GpuSampling sampling{};
+    std::vector<GpuAreaLight> area_lights;
+    std::vector<GpuMovingSphere> moving_spheres;
 };
+
+// The uniform block SampledScene as bytes: sampling, then `area_slots` area lights and
+// `moving_slots` moving spheres (the shader's MAX_AREA_LIGHTS, MAX_MOVING_SPHERES; unused slots
+// zero).
+std::vector<unsigned char> sampled_block(const GpuScene& scene, int area_slots, int moving_slots);
 
 // Every array of `scene`, converted to float and packed as above.
 GpuScene pack_scene(const Scene& scene);

@@ -27,6 +27,28 @@ namespace {
 const Color kStubColor{1, 0, 1};
 constexpr int kMaxGpuLights = 64;  // visibility is a vec3[MAX_LIGHTS] per invocation
 constexpr int kMaxGpuDepth = 64;   // the Frame stack: as the CPU's kMaxTraceDepth
+// Stage 10: the uniform block's arrays (80 bytes an area light), and the per-invocation copy of
+// the spheres a scene with motion blur moves per camera sample (32 bytes a sphere).
+constexpr int kMaxGpuAreaLights = 64;
+constexpr int kMaxGpuMovingSpheres = 64;
+constexpr int kMaxGpuSpheresWithMotion = 64;
+constexpr int kDefaultSamplesPerDispatch = 4;
+
+// A stage 10 scene drawn by the sampled path (several camera samples per pixel).
+bool gpu_sampled(const Scene& scene, RenderMode mode) {
+    return mode == RenderMode::Shaded && scene.features.sampled();
+}
+
+// The sizes of the uniform block's arrays (MAX_AREA_LIGHTS, MAX_MOVING_SPHERES): the scene's
+// counts, or the largest with --uber on a stage 10 scene.
+struct SampledSlots {
+    int area_lights, moving_spheres;
+};
+SampledSlots sampled_slots(const Scene& scene, RenderMode mode, bool uber) {
+    if (uber && gpu_sampled(scene, mode)) return {kMaxGpuAreaLights, kMaxGpuMovingSpheres};
+    return {std::max(1, int(scene.area_lights.size())),
+            std::max(1, int(scene.moving_spheres.size()))};
+}
 
 Color display_value(Color v) {
     return Color(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b));
@@ -74,6 +96,8 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
     gl.Uniform1i(at("scene_features"), gpu_feature_bits(scene, mode));
     // A uniform the shader does not use (no textures) has location -1, which GL ignores.
     gl.Uniform1i(at("texture_lookup"), gpu_texture_lookup(scene));
+    gl.Uniform1i(at("sample_first"), 0);
+    gl.Uniform1i(at("sample_count"), 1);
 }
 
 }  // namespace
@@ -86,7 +110,12 @@ int gpu_feature_bits(const Scene& scene, RenderMode mode) {
     const bool shaded = mode == RenderMode::Shaded;
     return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
            (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
-           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0);
+           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0) |
+           (gpu_sampled(scene, mode) ? 32 : 0) | (shaded && scene.features.area_lights ? 64 : 0) |
+           (shaded && scene.features.depth_of_field ? 128 : 0) |
+           (shaded && scene.features.glossy ? 256 : 0) |
+           (shaded && scene.features.ambient_occlusion ? 512 : 0) |
+           (shaded && scene.features.indirect_diffuse ? 1024 : 0);
 }
 
 int gpu_texture_lookup(const Scene& scene) {
@@ -107,12 +136,20 @@ void check_gpu_supported(const Scene& scene, RenderMode mode) {
         throw GpuError(where +
                        ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
                        "port; use nearest or bilinear, or render it without --gpu");
-    if (mode == RenderMode::Shaded && scene.features.sampled())
-        throw GpuError(
-            where +
-            ": distribution ray tracing (stage 10: several samples per pixel, area "
-            "lights, lens, shutter, glossy or indirect light, fog) is not in the GPU port "
-            "yet; render it without --gpu");
+    if (mode == RenderMode::Shaded && scene.features.fog)
+        throw GpuError(where +
+                       ": fog (stage 10's optional homogeneous medium) has no GPU port; render "
+                       "it without --gpu");
+    if (gpu_sampled(scene, mode) && scene.area_lights.size() > std::size_t(kMaxGpuAreaLights))
+        throw GpuError(where + ": " + std::to_string(scene.area_lights.size()) +
+                       " area lights; the GPU port takes at most " +
+                       std::to_string(kMaxGpuAreaLights));
+    if (gpu_sampled(scene, mode) && scene.features.motion_blur &&
+        scene.spheres.size() > std::size_t(kMaxGpuSpheresWithMotion))
+        throw GpuError(where + ": " + std::to_string(scene.spheres.size()) +
+                       " spheres with motion blur; the GPU port moves a copy of at most " +
+                       std::to_string(kMaxGpuSpheresWithMotion) +
+                       " per camera sample; render it without --gpu");
     if (scene.lights.size() > std::size_t(kMaxGpuLights))
         throw GpuError(where + ": " + std::to_string(scene.lights.size()) +
                        " lights; the GPU port takes at most " + std::to_string(kMaxGpuLights));
@@ -179,8 +216,29 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     define(shaded && f.checker_textures, "HAS_CHECKER_TEXTURES");
     define(shaded && f.noise_textures, "HAS_NOISE_TEXTURES");
     define(shaded && f.environment, "HAS_ENVIRONMENT");
+    // Stage 10, only for a stage 10 scene, even with --uber: compiled in, its sampled path
+    // (every bounce inlined) costs llvmpipe minutes of compiling the uber shader, and every
+    // scene of stages 01-09 never takes it. So --uber has two programs, with and without
+    // sampling. Motion blur replaces the spheres' buffer by a per-invocation copy sized by the
+    // scene (MAX_SPHERES): compiled in only for a scene with moving spheres.
+    const bool sampled = gpu_sampled(scene, mode);
+    auto define_sampled = [&](bool on, const char* name) {
+        if (sampled && (on || uber)) d += std::string("#define ") + name + "\n";
+    };
+    define_sampled(true, "HAS_SAMPLING");
+    define_sampled(f.area_lights, "HAS_AREA_LIGHTS");
+    define_sampled(f.depth_of_field, "HAS_DEPTH_OF_FIELD");
+    define_sampled(f.glossy, "HAS_GLOSSY");
+    define_sampled(f.ambient_occlusion, "HAS_OCCLUSION");
+    define_sampled(f.indirect_diffuse, "HAS_INDIRECT");
+    if (sampled && f.motion_blur)
+        d += "#define HAS_MOTION_BLUR\n#define MAX_SPHERES " +
+             std::to_string(std::max<std::size_t>(1, scene.spheres.size())) + "\n";
     const std::size_t lights = uber ? kMaxGpuLights : std::max<std::size_t>(1, scene.lights.size());
     d += "#define MAX_LIGHTS " + std::to_string(lights) + "\n";
+    const SampledSlots slots = sampled_slots(scene, mode, uber);
+    d += "#define MAX_AREA_LIGHTS " + std::to_string(slots.area_lights) + "\n";
+    d += "#define MAX_MOVING_SPHERES " + std::to_string(slots.moving_spheres) + "\n";
     d += "#define MAX_DEPTH " + std::to_string(uber ? kMaxGpuDepth : gpu_trace_depth(scene, mode)) +
          "\n";
     return d;
@@ -192,10 +250,20 @@ fs::path gpu_student_dir() {
     return graded && *graded ? fs::path(graded) : source_dir() / "stages/09-gpu";
 }
 
+fs::path gpu_sampling_dir() {
+    const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
+    if (graded && *graded && fs::is_regular_file(fs::path(graded) / "sampling.glsl"))
+        return fs::path(graded);
+    return source_dir() / "stages/10-sampling";
+}
+
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
-                                      const fs::path& student_dir, bool uber) {
+                                      const fs::path& student_dir, bool uber,
+                                      const fs::path& sampling_dir) {
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
-    return assemble_shader(source_dir() / "shaders/trace.comp", {students},
+    const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
+    // sampling.glsl is looked up after stage 09's folder: only a stage 10 scene includes it.
+    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling},
                            gpu_defines(scene, mode, uber));
 }
 
@@ -225,7 +293,8 @@ const GpuRenderer::Program& GpuRenderer::program_for(const Scene& scene, RenderM
     if (const auto it = programs_.find(defines); it != programs_.end()) return *it->second;
     const auto start = std::chrono::steady_clock::now();
     auto program = std::make_unique<Program>();
-    program->shader = assemble_trace_shader(scene, mode, options_.student_dir, options_.uber);
+    program->shader = assemble_trace_shader(scene, mode, options_.student_dir, options_.uber,
+                                            options_.sampling_dir);
     std::string error;
     program->id = build_compute_program(context_->gl(), program->shader, error);
     if (!program->id) throw GpuError(error);
@@ -266,7 +335,18 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
         upload(gl, gpu::kTexels, packed.texels),
         upload(gl, gpu::kEnvironment, packed.environment),
     };
-    // The output: 4 words of stub flags, then one vec4 a pixel.
+    // Stage 10's uniform block (binding 0), sized as the program's defines say.
+    const bool sampled = gpu_sampled(scene, mode);
+    const SampledSlots slots = sampled_slots(scene, mode, options_.uber);
+    const std::vector<unsigned char> block =
+        gpu::sampled_block(packed, slots.area_lights, slots.moving_spheres);
+    GLuint uniform_block = 0;
+    gl.GenBuffers(1, &uniform_block);
+    gl.BindBuffer(GL_UNIFORM_BUFFER, uniform_block);
+    gl.BufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, uniform_block);
+    buffers.push_back(uniform_block);
+    // The output: 4 words of stub flags, then one vec4 a pixel (stage 10: sums of samples).
     const int width = scene.image.width, height = scene.image.height;
     const std::size_t pixel_count = std::size_t(width) * std::size_t(height);
     std::vector<glm::vec4> output(pixel_count + 1, glm::vec4(0));
@@ -283,7 +363,26 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
         gl.Finish();
         timings.compile_ms += lap();
     }
-    gl.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    // Stage 10: batches of camera samples, each dispatch adding to the sums the last one left.
+    const int samples = sampled ? std::max(1, scene.sampling.samples_per_pixel) : 1;
+    const int batch =
+        sampled ? std::max(1, options_.samples_per_dispatch > 0 ? options_.samples_per_dispatch
+                                                                : kDefaultSamplesPerDispatch)
+                : 1;
+    const GLint first_at = gl.GetUniformLocation(program.id, "sample_first");
+    const GLint count_at = gl.GetUniformLocation(program.id, "sample_count");
+    bool cancelled = false;
+    for (int first = 0; first < samples; first += batch) {
+        if (first > 0 && options_.cancel && options_.cancel->load()) {
+            cancelled = true;
+            break;
+        }
+        gl.Uniform1i(first_at, first);
+        gl.Uniform1i(count_at, std::min(batch, samples - first));
+        gl.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+        gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        if (sampled) gl.Finish();  // one batch at a time: a long queue would not cancel
+    }
     gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
                         output.data());
@@ -299,7 +398,13 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     std::memcpy(flags, &output[0], sizeof flags);
     report_gpu_stubs(program.shader, flags);
 
+    if (cancelled) throw GpuError("gpu: render cancelled");
     // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
+    // Stage 10: rgb the sum of the samples, divided here (the CPU's mean, in float).
+    if (sampled)
+        for (std::size_t i = 1; i <= pixel_count; ++i)
+            if (output[i].a != -2.0f)
+                output[i] = glm::vec4(glm::vec3(output[i]) / float(samples), 0);
     Image image(width, height);
     std::vector<Real> values(pixel_count);
     for (std::size_t i = 0; i < pixel_count; ++i) {

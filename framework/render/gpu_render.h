@@ -5,6 +5,7 @@
 // On the "calls student code" side: the GLSL it compiles is the student's.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -33,6 +34,13 @@ struct GpuRenderOptions {
     std::ostream* log = nullptr;        // "gpu: egl (surfaceless): llvmpipe ..." when set
     bool uber = false;  // compile every feature in (one shader for every scene), not the scene's
     GpuTimings* timings = nullptr;  // filled when set
+    // Stage 10's sampling.glsl is read from here; empty: gpu_sampling_dir().
+    std::filesystem::path sampling_dir;
+    // Stage 10: camera samples per pixel added by one dispatch (0: the default, 4). The image is
+    // the same for any value: each sample's numbers depend on its pixel and index only.
+    int samples_per_dispatch = 0;
+    // Set by another thread: a stage 10 render stops after the dispatch in flight (the viewer).
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // Thrown for what stops a GPU render: no context, a shader that does not compile (the message
@@ -57,6 +65,10 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
 // Where the student's GLSL is read from: $RT_GPU_STUDENT_DIR when set (the grader's sandboxed
 // tests and renders: the submission being graded), else stages/09-gpu of the course tree.
 std::filesystem::path gpu_student_dir();
+
+// Where stage 10's GLSL (sampling.glsl, included only for scenes with Features::sampled()) is
+// read from: $RT_GPU_STUDENT_DIR when it holds sampling.glsl, else stages/10-sampling.
+std::filesystem::path gpu_sampling_dir();
 
 // A GPU renderer that keeps its context and compiled programs between renders (the viewer, the
 // benchmark): programs are cached by their #defines, i.e. by the scene's feature mask, so a
@@ -86,6 +98,8 @@ class GpuRenderer {
 
 // Renders like render() (render/render.h): debug modes store display values, a pixel that reached
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
+// A stage 10 scene in mode shaded accumulates its samples_per_pixel camera samples over several
+// dispatches into float sums and returns their mean.
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options = {});
 
 // Reports each stub whose bit is set in the shader's stub_flags (compute_io.glsl), once per
@@ -95,6 +109,7 @@ void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
                                       const std::filesystem::path& student_dir = {},
-                                      bool uber = false);
+                                      bool uber = false,
+                                      const std::filesystem::path& sampling_dir = {});
 
 }  // namespace rt

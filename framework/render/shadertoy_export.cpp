@@ -234,6 +234,11 @@ void check_exportable(const Scene& scene, RenderMode mode) {
                        "bakes at most " +
                        std::to_string(kMaxShadertoyTexels) +
                        " as constants: use a checker or marble texture, or a smaller image");
+    if (mode == RenderMode::Shaded && scene.features.sampled())
+        throw GpuError(
+            where +
+            ": stage 10 (several camera samples per pixel, accumulated over "
+            "dispatches) is not in the Shadertoy export; render it with rt render --gpu");
     check_gpu_supported(scene, mode);
 }
 
@@ -243,7 +248,8 @@ ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::
     check_exportable(scene, mode);
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const AssembledShader shader =
-        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students}, "");
+        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students},
+                        gpu_defines(scene, mode));  // they decide the guarded includes
     if (!shader.error.empty()) throw GpuError(shader.error);
     ShadertoyExport out;
     out.text = "// " + (scene.source.empty() ? std::string("A scene") : scene.source) +

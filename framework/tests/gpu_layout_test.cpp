@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <cstddef>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -82,6 +83,36 @@ const std::vector<Member>& members() {
 }
 #undef RT_MEMBER
 
+// Stage 10's uniform block SampledScene (std140) as scene_layout.glsl declares it without the
+// host's defines: MAX_AREA_LIGHTS and MAX_MOVING_SPHERES 2. Offsets are from the block's start,
+// where gpu::sampled_block puts each part; `stride` is checked with element [1].
+const std::vector<Member>& block_members() {
+    constexpr std::size_t area = sizeof(GpuSampling);
+    constexpr std::size_t moving = area + 2 * sizeof(GpuAreaLight);
+    static const std::vector<Member> list = {
+        {"sampling.spp_filter_indirect", offsetof(GpuSampling, spp_filter_indirect), 0,
+         "acc += vec4(sampling.spp_filter_indirect);"},
+        {"sampling.seed_counts", offsetof(GpuSampling, seed_counts), 0,
+         "acc += vec4(sampling.seed_counts);"},
+        {"sampling.lens_shutter", offsetof(GpuSampling, lens_shutter), 0,
+         "acc += sampling.lens_shutter;"},
+        {"sampling.occlusion", offsetof(GpuSampling, occlusion), 0, "acc += sampling.occlusion;"},
+        {"area_lights[0].corner_kind", area + offsetof(GpuAreaLight, corner_kind),
+         sizeof(GpuAreaLight), "acc += area_lights[1].corner_kind;"},
+        {"area_lights[0].edge_u", area + offsetof(GpuAreaLight, edge_u), sizeof(GpuAreaLight),
+         "acc += area_lights[1].edge_u;"},
+        {"area_lights[0].edge_v", area + offsetof(GpuAreaLight, edge_v), sizeof(GpuAreaLight),
+         "acc += area_lights[1].edge_v;"},
+        {"area_lights[0].center_radius", area + offsetof(GpuAreaLight, center_radius),
+         sizeof(GpuAreaLight), "acc += area_lights[1].center_radius;"},
+        {"area_lights[0].radiance", area + offsetof(GpuAreaLight, radiance), sizeof(GpuAreaLight),
+         "acc += area_lights[1].radiance;"},
+        {"moving_spheres[0].velocity_sphere", moving + offsetof(GpuMovingSphere, velocity_sphere),
+         sizeof(GpuMovingSphere), "acc += moving_spheres[1].velocity_sphere;"},
+    };
+    return list;
+}
+
 std::string read_file(const std::string& path) {
     std::ifstream in(path);
     std::ostringstream s;
@@ -96,6 +127,7 @@ std::string build_program(GLuint& program) {
                          "layout(std430, binding = 15) writeonly buffer Out { vec4 result; };\n"
                          "void main() {\n    vec4 acc = vec4(0);\n";
     for (const Member& m : members()) source += std::string("    ") + m.use + "\n";
+    for (const Member& m : block_members()) source += std::string("    ") + m.use + "\n";
     source += "    result = acc;\n}\n";
     const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
     const char* text = source.c_str();
@@ -140,6 +172,28 @@ TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
             << " (change framework/gpu/gpu_scene.h and shaders/scene_layout.glsl together)";
         EXPECT_EQ(std::size_t(values[1]), m.stride)
             << m.name << ": GLSL's array stride is " << values[1] << ", sizeof in C++ " << m.stride;
+    }
+    // The uniform block: each member's offset, and an array's stride as element [1] - [0].
+    for (const Member& m : block_members()) {
+        auto offset_of = [&](const std::string& name) {
+            const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+            EXPECT_NE(index, GL_INVALID_INDEX) << name << " is not an active uniform";
+            const GLenum property = GL_OFFSET;
+            GLint value = -1;
+            if (index != GL_INVALID_INDEX)
+                glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr,
+                                       &value);
+            return value;
+        };
+        const GLint offset = offset_of(m.name);
+        EXPECT_EQ(std::size_t(offset), m.offset)
+            << m.name << ": GLSL puts it at byte " << offset << " of SampledScene, "
+            << "gpu::sampled_block at " << m.offset;
+        if (m.stride == 0) continue;
+        std::string second = m.name;
+        second.replace(second.find("[0]"), 3, "[1]");
+        EXPECT_EQ(std::size_t(offset_of(second) - offset), m.stride)
+            << m.name << ": GLSL's array stride differs from sizeof in C++ (" << m.stride << ")";
     }
     glDeleteProgram(program);
 }
@@ -198,6 +252,46 @@ TEST(GpuLayout, PackKeepsEveryValue) {
     EXPECT_EQ(e.environment[0].faces_px_nx_py_ny, glm::ivec4(10, 11, 12, 13));
     EXPECT_EQ(e.environment[0].faces_pz_nz, glm::ivec4(14, 15, 0, 0));
     EXPECT_EQ(e.environment[0].intensity_rotate_y, glm::vec4(2.5f, -30, 0, 0));
+
+    // Stage 10: fuzz, area lights, moving spheres, the settings, and the uniform block's bytes.
+    scene.materials[0].fuzz = 0.25f;
+    AreaLight rect;
+    rect.corner = Vec3(-1, 3, -1), rect.edge_u = Vec3(2, 0, 0), rect.edge_v = Vec3(0, 0, 2);
+    rect.radiance = Color(9, 8, 7);
+    AreaLight ball;
+    ball.kind = AreaLightKind::Sphere, ball.center = Vec3(1, 2, 3), ball.radius = Real(0.5);
+    scene.area_lights = {rect, ball};
+    scene.moving_spheres.push_back(MovingSphere{0, Vec3(1, 0, 0)});
+    scene.sampling.samples_per_pixel = 16, scene.sampling.seed = 0x100000002ull;
+    scene.sampling.filter = PixelFilter::Tent, scene.sampling.indirect = IndirectLight::Diffuse;
+    scene.sampling.aperture = Real(0.3), scene.sampling.focus_distance = 5;
+    scene.sampling.shutter_open = 0, scene.sampling.shutter_close = 1;
+    scene.sampling.occlusion_distance = Real(1.5);
+    const GpuScene s = pack_scene(scene);
+    EXPECT_EQ(s.materials[0].reflective.w, 0.25f);
+    ASSERT_EQ(s.area_lights.size(), 2u);
+    EXPECT_EQ(s.area_lights[0].corner_kind, glm::vec4(-1, 3, -1, int_bits(0)));
+    EXPECT_EQ(s.area_lights[0].edge_v, glm::vec4(0, 0, 2, 0));
+    EXPECT_EQ(s.area_lights[0].radiance, glm::vec4(9, 8, 7, 0));
+    EXPECT_EQ(s.area_lights[1].corner_kind.w, int_bits(1));
+    EXPECT_EQ(s.area_lights[1].center_radius, glm::vec4(1, 2, 3, 0.5f));
+    ASSERT_EQ(s.moving_spheres.size(), 1u);
+    EXPECT_EQ(s.moving_spheres[0].velocity_sphere, glm::vec4(1, 0, 0, int_bits(0)));
+    EXPECT_EQ(s.sampling.spp_filter_indirect,
+              glm::ivec4(16, int(PixelFilter::Tent), int(IndirectLight::Diffuse), 0));
+    EXPECT_EQ(s.sampling.seed_counts, glm::uvec4(2, 1, 2, 1));
+    EXPECT_EQ(s.sampling.lens_shutter, glm::vec4(0.3f, 5, 0, 1));
+    EXPECT_EQ(s.sampling.occlusion.x, 1.5f);
+    const std::vector<unsigned char> block = sampled_block(s, 3, 2);
+    ASSERT_EQ(block.size(),
+              sizeof(GpuSampling) + 3 * sizeof(GpuAreaLight) + 2 * sizeof(GpuMovingSphere));
+    GpuAreaLight second;
+    std::memcpy(&second, block.data() + sizeof(GpuSampling) + sizeof(GpuAreaLight), sizeof second);
+    EXPECT_EQ(second.center_radius, glm::vec4(1, 2, 3, 0.5f));
+    GpuMovingSphere moving;
+    std::memcpy(&moving, block.data() + sizeof(GpuSampling) + 3 * sizeof(GpuAreaLight),
+                sizeof moving);
+    EXPECT_EQ(moving.velocity_sphere.x, 1.0f);
 }
 
 }  // namespace

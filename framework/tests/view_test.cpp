@@ -194,24 +194,32 @@ TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
 
 // A Monte Carlo scene (stage 10) refines its samples: 1, 4, then its own 16, the last pass
 // being `rt render`'s image bit for bit.
+// The passes of a Monte Carlo scene on the CPU or GPU path, up to the refined frame: their
+// sample counts must grow to the scene's own.
+std::optional<Frame> refine_samples(const Scene& scene, bool gpu, int seconds,
+                                    std::vector<int>& samples) {
+    ProgressiveRenderer renderer(gpu ? 1 : 2);
+    const std::uint64_t generation = renderer.restart(scene, gpu);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (auto frame = renderer.take(); frame && frame->generation == generation) {
+            EXPECT_TRUE(frame->error.empty()) << frame->error;
+            EXPECT_EQ(frame->gpu, gpu);
+            samples.push_back(frame->samples);
+            if (frame->refined() || !frame->error.empty()) return frame;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    return std::nullopt;
+}
+
 TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
     Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
     scene.image = ImageSize{48, 32};  // no coarse passes
     ASSERT_EQ(scene.sampling.samples_per_pixel, 16);
-    ProgressiveRenderer renderer(2);
-    const std::uint64_t generation = renderer.restart(scene);
     std::vector<int> samples;
-    std::optional<Frame> last;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (!last && std::chrono::steady_clock::now() < deadline) {
-        if (auto frame = renderer.take(); frame && frame->generation == generation) {
-            ASSERT_TRUE(frame->error.empty()) << frame->error;
-            samples.push_back(frame->samples);
-            if (frame->refined()) last = std::move(frame);
-        }
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
-    ASSERT_TRUE(last) << "no refined frame within 60 s";
+    const std::optional<Frame> last = refine_samples(scene, false, 60, samples);
+    ASSERT_TRUE(last && last->refined()) << "no refined frame within 60 s";
     EXPECT_EQ(samples.back(), 16);
     for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
     EXPECT_EQ(last->image.pixels, render(scene, scene.mode).pixels);
@@ -243,6 +251,19 @@ TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
     const std::optional<Frame> second = refined(scene);
     ASSERT_TRUE(second && second->error.empty());
     EXPECT_EQ(second->image.pixels, render_gpu(scene, scene.mode).pixels);
+}
+
+// Stage 10 on the GPU path: the same passes (1, 4, 16 samples), each accumulated over dispatches;
+// the refined frame is `rt render --gpu`'s image.
+TEST(ViewProgressive, TheGpuPathRefinesAMonteCarloScene) {
+    Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
+    scene.image = ImageSize{48, 32};  // no coarse passes
+    std::vector<int> samples;
+    const std::optional<Frame> last = refine_samples(scene, true, 120, samples);
+    ASSERT_TRUE(last && last->refined()) << "no refined GPU frame within 120 s";
+    EXPECT_EQ(samples.back(), 16);
+    for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
+    EXPECT_EQ(last->image.pixels, render_gpu(scene, scene.mode).pixels);
 }
 
 TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {

@@ -115,7 +115,11 @@ void ProgressiveRenderer::run() {
             const auto start = std::chrono::steady_clock::now();
             try {
                 if (gpu) {
-                    if (!gpu_renderer) gpu_renderer = std::make_unique<GpuRenderer>();
+                    if (!gpu_renderer) {
+                        GpuRenderOptions gpu_options;
+                        gpu_options.cancel = &cancel_;  // stage 10: between sample batches
+                        gpu_renderer = std::make_unique<GpuRenderer>(gpu_options);
+                    }
                     frame.image = gpu_renderer->render(scene, scene.mode);
                 } else {
                     frame.image = render(scene, scene.mode, options);

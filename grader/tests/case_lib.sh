@@ -14,7 +14,8 @@ all_stages=1,2,3,4,5,6,7,8,9,10
 files=("$s1/camera_rays.cpp" "$s2/intersections.cpp" "$s3/blinn_phong.cpp" "$s4/shadows.cpp"
        "$s5/recursion.cpp" "$s6/bvh.cpp" "$s7/textures.cpp" "$s8/environment.cpp"
        "$s9/camera.glsl" "$s9/intersect.glsl" "$s9/bvh.glsl" "$s9/shade.glsl" "$s9/recursion.glsl"
-       "$s9/textures.glsl" "$s9/environment.glsl" "$s10/sampling.cpp" "$s10/lights.cpp")
+       "$s9/textures.glsl" "$s9/environment.glsl" "$s10/sampling.cpp" "$s10/lights.cpp"
+       "$s10/sampling.glsl")
 stage_tag() { printf 'stage%02d' "$1"; }  # results.json's tag of stage N
 # Handout sections of the graded stubs. An optional part (a section named "#optional-...", such
 # as stage 10's fog) is left out of grading.json, so no graded test reaches its stubs.

@@ -42,10 +42,13 @@ double cpu_ms(const Scene& scene, int threads, Image& image) {
         .count();
 }
 
+// Camera rays a second: one a pixel, or a stage 10 scene's samples per pixel.
 std::string mrays(const Scene& scene, double ms) {
+    const double per_pixel =
+        scene.features.sampled() ? std::max(1, scene.sampling.samples_per_pixel) : 1;
     char text[32];
     std::snprintf(text, sizeof text, "%.2f",
-                  double(scene.image.width) * scene.image.height / (ms * 1e3));
+                  double(scene.image.width) * scene.image.height * per_pixel / (ms * 1e3));
     return text;
 }
 
@@ -71,7 +74,14 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
             rows.push_back(
                 {"CPU, " + std::to_string(threads) + " thread" + (threads > 1 ? "s" : ""),
                  fastest(config.repeat, [&] { return cpu_ms(scene, threads, cpu); }), 0, ""});
+        const bool sampled = scene.features.sampled();
         for (bool uber : {false, true}) {
+            if (uber && sampled) {
+                // Every stage 10 term and every earlier feature in one shader: llvmpipe compiles
+                // it for minutes (gpu_render.cpp), which is not what this table compares.
+                rows.push_back({"GPU, uber shader: not measured (compiles for minutes)", 0, 0, ""});
+                continue;
+            }
             GpuRenderOptions options;
             options.context = config.context;
             options.uber = uber;
@@ -86,14 +96,18 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
                 row.compile_ms = std::min(row.compile_ms, timings.compile_ms);
                 return timings.trace_ms;
             });
-            CompareOptions compare;  // the conformance test's metric
-            compare.tolerance = 2;
-            compare.max_failing_percent = 0.5;
+            // The conformance tests' metrics: stage 09's per pixel, stage 10's on 8x8 block means
+            // (the GPU's random numbers are not the CPU's).
+            CompareOptions compare;
+            compare.tolerance = sampled ? 6 : 2;
+            compare.max_failing_percent = sampled ? 1.5 : 0.5;
+            compare.block = sampled ? 8 : 0;
             const CompareResult r = compare_images(to_image8(gpu), to_image8(cpu), compare);
             all_agree = all_agree && r.passed;
             char agreement[96];
-            std::snprintf(agreement, sizeof agreement, "%s (%.2f %% of pixels off by > 2)",
-                          r.passed ? "agrees" : "DISAGREES", r.failing_percent);
+            std::snprintf(agreement, sizeof agreement, "%s (%.2f %% of pixels off by > %d%s)",
+                          r.passed ? "agrees" : "DISAGREES", r.failing_percent, compare.tolerance,
+                          sampled ? ", 8x8 block means" : "");
             row.agreement = agreement;
             rows.push_back(row);
         }
@@ -101,15 +115,18 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
                                  "x" + std::to_string(config.height);
         for (const Row& r : rows) {
             char line[256];
-            std::snprintf(line, sizeof line, "| %s | %s | %s | %.1f | %s | %s |\n", name.c_str(),
-                          r.renderer.c_str(), mrays(scene, r.trace_ms).c_str(), r.trace_ms,
+            char ms[32] = "";
+            if (r.trace_ms > 0) std::snprintf(ms, sizeof ms, "%.1f", r.trace_ms);
+            std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %s | %s |\n", name.c_str(),
+                          r.renderer.c_str(),
+                          r.trace_ms > 0 ? mrays(scene, r.trace_ms).c_str() : "", ms,
                           r.compile_ms > 0 ? std::to_string(int(r.compile_ms + 0.5)).c_str() : "",
                           r.agreement.c_str());
             out << line;
         }
     }
-    out << "\nMrays/s: primary rays (one a pixel) a second of the trace alone; each carries its "
-           "shadow and secondary rays. The fastest of "
+    out << "\nMrays/s: camera rays (one a pixel; a stage 10 scene's samples per pixel) a second "
+           "of the trace alone; each carries its shadow and secondary rays. The fastest of "
         << config.repeat
         << " runs; shader compile: Mesa's shader cache off, llvmpipe's "
            "compilation at the first dispatch included. CPU: "

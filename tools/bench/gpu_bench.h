@@ -1,7 +1,7 @@
-// `rt-bench gpu` (issue 14): primary rays a second of stage 09's compute shader on this
-// machine's OpenGL (llvmpipe without a GPU) against the CPU renderer on 1 and 2 threads, the
-// shader specialised to the scene (its HAS_ defines) against the uber shader (every feature
-// compiled in). Links student code: the CPU stages and the stage 09 GLSL.
+// `rt-bench gpu` (issue 14): camera rays a second of stage 09's compute shader (and of stage
+// 10's sampled path) on this machine's OpenGL (llvmpipe without a GPU) against the CPU renderer
+// on 1 and 2 threads, the shader specialised to the scene (its HAS_ defines) against the uber
+// shader (every feature compiled in). Links student code: the CPU stages and the GLSL.
 #pragma once
 
 #include <ostream>
@@ -13,9 +13,11 @@
 namespace rt::bench {
 
 struct GpuBenchConfig {
-    // Scene files, relative to the course tree unless absolute: the Whitted scene and a BVH mesh.
+    // Scene files, relative to the course tree unless absolute: the Whitted scene, a BVH mesh and
+    // stage 10's soft shadows (16 samples a pixel, two area lights).
     std::vector<std::string> scenes = {"stages/05-recursion/scenes/whitted.json",
-                                       "stages/06-bvh/scenes/large_icosphere.json"};
+                                       "stages/06-bvh/scenes/large_icosphere.json",
+                                       "stages/10-sampling/scenes/soft_shadows.json"};
     int width = 320, height = 240;
     int repeat = 3;  // timed runs of each measurement; the fastest counts
     GlKind context = GlKind::Egl;

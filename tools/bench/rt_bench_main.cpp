@@ -163,7 +163,8 @@ int main(int argc, char** argv) {
     CLI::App* gpu_cmd = app.add_subcommand(
         "gpu",
         "stage 09's compute shader (specialised and uber) against the CPU on 1 and 2 threads");
-    gpu_cmd->add_option("--scene", gpu.scenes, "scene files (default: whitted, large_icosphere)");
+    gpu_cmd->add_option("--scene", gpu.scenes,
+                        "scene files (default: whitted, large_icosphere, soft_shadows)");
     gpu_cmd->add_option("--width", gpu.width, "image width")
         ->capture_default_str()
         ->check(CLI::Range(1, 4096));

@@ -154,21 +154,42 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         "#define HAS_VERTEX_UVS\n#define HAS_TEXTURES\n#define HAS_NORMAL_MAPS\n"
         "#define HAS_IMAGE_TEXTURES\n#define HAS_CHECKER_TEXTURES\n#define HAS_NOISE_TEXTURES\n";
     const std::string variants[] = {
-        all,
-        all + "#define HAS_REFRACTION\n",
-        all + maps + "#define HAS_ENVIRONMENT\n",
+        all, all + "#define HAS_REFRACTION\n", all + maps + "#define HAS_ENVIRONMENT\n",
         "#define HAS_SPHERES\n#define HAS_CHECKER_TEXTURES\n#define HAS_TEXTURES\n"
         "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
         "#define HAS_ENVIRONMENT\n#define MAX_LIGHTS 1\n#define MAX_DEPTH 2\n",
-        "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n"};
+        "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
+        // Stage 10 (sampling.glsl): everything, as --uber with moving spheres compiles it ...
+        all + maps +
+            "#define HAS_REFRACTION\n#define HAS_ENVIRONMENT\n#define HAS_SAMPLING\n"
+            "#define HAS_AREA_LIGHTS\n#define HAS_DEPTH_OF_FIELD\n#define HAS_GLOSSY\n"
+            "#define HAS_OCCLUSION\n#define HAS_INDIRECT\n#define HAS_MOTION_BLUR\n"
+            "#define MAX_SPHERES 8\n#define MAX_AREA_LIGHTS 64\n"
+            "#define MAX_MOVING_SPHERES 64\n",
+        // ... and a few scenes' own: pixel samples only, soft shadows, indirect light, motion.
+        "#define HAS_SPHERES\n#define HAS_SAMPLING\n#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
+        "#define HAS_SPHERES\n#define HAS_PLANES\n#define HAS_BOXES\n#define HAS_SAMPLING\n"
+        "#define HAS_AREA_LIGHTS\n#define MAX_AREA_LIGHTS 2\n#define MAX_LIGHTS 1\n"
+        "#define MAX_DEPTH 0\n",
+        "#define HAS_BOXES\n#define HAS_SAMPLING\n#define HAS_AREA_LIGHTS\n#define HAS_INDIRECT\n"
+        "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n#define MAX_AREA_LIGHTS 1\n",
+        "#define HAS_SPHERES\n#define HAS_TRIANGLES\n#define HAS_SHADOWS\n#define HAS_SAMPLING\n"
+        "#define HAS_MOTION_BLUR\n#define MAX_SPHERES 3\n#define HAS_DEPTH_OF_FIELD\n"
+        "#define HAS_GLOSSY\n#define HAS_REFLECTION\n#define HAS_OCCLUSION\n#define MAX_LIGHTS 1\n"
+        "#define MAX_DEPTH 3\n"};
     StudentCopy stubs("glslang");
     for (const char* f : kStudentFiles)
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
+    write(stubs.dir() / "sampling.glsl",
+          strip_solutions(read(root / "stages/10-sampling/sampling.glsl")));
     int n = 0;
     for (const fs::path& students : {root / "stages/09-gpu", stubs.dir()})
         for (const std::string& defines : variants) {
+            // Stage 10's file: the solution beside stage 09's solutions, the stub beside stubs.
+            const fs::path sampling =
+                students == stubs.dir() ? stubs.dir() : root / "stages/10-sampling";
             const AssembledShader shader =
-                assemble_shader(root / "shaders/trace.comp", {students}, defines);
+                assemble_shader(root / "shaders/trace.comp", {students, sampling}, defines);
             ASSERT_EQ(shader.error, "");
             const fs::path file =
                 fs::temp_directory_path() /
@@ -182,6 +203,33 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         }
 }
 
+// A starter tree's sampling.glsl (stage 10's optional GPU part) with stage 09's solutions: the
+// stubs compile, a stage 10 scene's pixels are magenta, and the first stub it reaches is named
+// with its file, line and handout section.
+TEST(GpuShader, SamplingStubsAreReported) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("rt-stage10-stubs-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    write(dir / "sampling.glsl",
+          strip_solutions(read(::rt::testing::source_dir() / "stages/10-sampling/sampling.glsl")));
+    GpuRenderOptions options;
+    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
+    options.sampling_dir = dir;
+    Scene scene = small_scene("10-sampling/scenes/soft_shadows.json");
+    scene.sampling.samples_per_pixel = 2;
+    ::testing::internal::CaptureStderr();
+    const Image image = render_gpu(scene, RenderMode::Shaded, options);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    fs::remove_all(dir);
+    for (const Color& c : image.pixels) ASSERT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+    const std::regex named("not implemented: stratified_sample \\(" +
+                           display_path(dir / "sampling.glsl") +
+                           ":[0-9]+\\);\\s*read stages/10-sampling/README.md#1-pixel-samples-"
+                           "and-filters");
+    EXPECT_TRUE(std::regex_search(err, named)) << err;
+}
+
 TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
     Scene scene = small_scene("07-textures/scenes/filtering.json");
     scene.texture_lookup = TextureLookup::Oiio;
@@ -192,6 +240,15 @@ TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
         EXPECT_NE(std::string(e.what()).find("filtering.json: --texture-filter oiio"),
                   std::string::npos)
             << e.what();
+        EXPECT_NE(std::string(e.what()).find("has no GPU port"), std::string::npos) << e.what();
+    }
+    // Stage 10's optional fog is CPU only.
+    Scene foggy = small_scene("10-sampling/scenes/fog.json");
+    try {
+        render_gpu(foggy, RenderMode::Shaded);
+        FAIL();
+    } catch (const GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("fog.json: fog"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("has no GPU port"), std::string::npos) << e.what();
     }
 }
