@@ -50,11 +50,14 @@ CompareOptions gpu_sampling_metric() {
     return compare;
 }
 
+// Every stage 10 scene but the optional fog, which has no GPU port (the GPU refuses it with a
+// one-line error: GpuShader.WhatTheGpuCannotDrawSaysSo).
 std::vector<std::string> gpu_sampling_scenes() {
     std::vector<std::string> names;
     for (const fs::directory_entry& f :
          fs::directory_iterator(::rt::testing::source_dir() / "stages/10-sampling/scenes"))
-        if (f.path().extension() == ".json") names.push_back(f.path().stem().string());
+        if (f.path().extension() == ".json" && f.path().stem() != "fog")
+            names.push_back(f.path().stem().string());
     std::sort(names.begin(), names.end());
     return names;
 }
