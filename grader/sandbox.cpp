@@ -23,6 +23,7 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -219,6 +220,33 @@ int count_processes_of(uid_t uid, bool zombies_too) {
     return count;
 }
 
+double cpu_seconds_of(uid_t uid) {
+    // Fields 14-17 of /proc/PID/stat: user and system time of the process and of the children
+    // it has waited for. Zombies keep theirs until reaped, and the run's init reaps only the
+    // program, at the very end: so the sum over the uid's processes is the run's CPU time.
+    static const double tick = double(sysconf(_SC_CLK_TCK));
+    double ticks = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* e = readdir(proc)) {
+        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+        struct stat st {};
+        const std::string path = std::string("/proc/") + e->d_name;
+        if (stat(path.c_str(), &st) != 0 || st.st_uid != uid) continue;
+        std::ifstream stat_file(path + "/stat");
+        std::string text;
+        std::getline(stat_file, text);
+        const auto close = text.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream fields(text.substr(close + 2));  // from field 3, the state
+        std::string field;
+        for (int i = 3; i <= 17 && fields >> field; ++i)
+            if (i >= 14) ticks += std::strtod(field.c_str(), nullptr);
+    }
+    closedir(proc);
+    return ticks / tick;
+}
+
 std::string describe(Isolation isolation) {
     switch (isolation) {
         case Isolation::Namespaces:
@@ -248,6 +276,10 @@ std::string RunResult::describe(const Limits& limits) const {
             return text;
         case End::TimedOut:
             std::snprintf(text, sizeof text, "timed out after %g s", limits.wall_seconds);
+            return text;
+        case End::CpuLimit:
+            std::snprintf(text, sizeof text, "CPU time limit hit (%d s, all its processes)",
+                          limits.cpu_seconds);
             return text;
         case End::FailedToStart:
             return "could not be started";
@@ -369,15 +401,23 @@ RunResult run_sandboxed(const RunSpec& spec) {
     }
     setpgid(outer, outer);  // also from the parent, against the race with the child's setpgid
 
-    bool timed_out = false;
+    // RLIMIT_CPU bounds each process; the run as a whole (every process of its leased uid, a
+    // fork bomb's included) gets the same budget, checked here every tenth of a second.
+    bool timed_out = false, cpu_exceeded = false;
     int outer_status = 0;
+    double next_cpu_check = 0.1;
     for (;;) {
         const pid_t done = waitpid(outer, &outer_status, WNOHANG);
         if (done == outer) break;
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (elapsed > spec.limits.wall_seconds || (spec.cancel && spec.cancel->load())) {
-            timed_out = true;
+        if (lease.uid != 0 && elapsed >= next_cpu_check) {
+            next_cpu_check = elapsed + 0.1;
+            cpu_exceeded = cpu_seconds_of(lease.uid) > spec.limits.cpu_seconds;
+        }
+        if (cpu_exceeded || elapsed > spec.limits.wall_seconds ||
+            (spec.cancel && spec.cancel->load())) {
+            timed_out = !cpu_exceeded;
             kill(-outer, SIGKILL);
             kill(outer, SIGKILL);
             waitpid(outer, &outer_status, 0);
@@ -399,6 +439,8 @@ RunResult run_sandboxed(const RunSpec& spec) {
 
     if (timed_out) {
         result.end = RunResult::End::TimedOut;
+    } else if (cpu_exceeded) {
+        result.end = RunResult::End::CpuLimit;
     } else if (!have_status) {
         result.end = RunResult::End::FailedToStart;
         if (WIFEXITED(outer_status) && WEXITSTATUS(outer_status) == 124)

@@ -41,7 +41,8 @@ struct Limits {
 };
 
 struct RunResult {
-    enum class End { Exited, Signaled, TimedOut, FailedToStart } end = End::FailedToStart;
+    // CpuLimit: the run's processes together used more than Limits::cpu_seconds.
+    enum class End { Exited, Signaled, TimedOut, CpuLimit, FailedToStart } end = End::FailedToStart;
     int exit_code = -1;
     int signal = 0;
     double wall_seconds = 0;
@@ -85,5 +86,9 @@ RunResult run_sandboxed(const RunSpec& spec);
 
 // Processes currently running under `uid` (from /proc); zombies only when asked.
 int count_processes_of(uid_t uid, bool zombies_too = false);
+
+// CPU seconds (user and system) used by the processes of `uid`, zombies and the children they
+// have waited for included: a run's CPU time, however many processes it made.
+double cpu_seconds_of(uid_t uid);
 
 }  // namespace rt::grader

@@ -36,6 +36,18 @@ TEST(SandboxLimits, TheCpuLimitStopsAChildThatWorks) {
     fs::remove_all(spec.capture_dir);
 }
 
+TEST(SandboxLimits, TheCpuLimitCountsEveryProcessOfTheRun) {
+    // Four spinners, each far below the limit on its own: together they pass it.
+    const auto spec =
+        sandbox_limits_spec("for i in 1 2 3 4; do (while :; do :; done) & done; wait", 3, 120);
+    const auto result = rt::grader::run_sandboxed(spec);
+    if (result.uid == 0) GTEST_SKIP() << "no sandbox uid (not root): per-process limits only";
+    EXPECT_EQ(result.end, rt::grader::RunResult::End::CpuLimit) << result.describe(spec.limits);
+    EXPECT_EQ(result.describe(spec.limits), "CPU time limit hit (3 s, all its processes)");
+    EXPECT_LT(result.wall_seconds, 100);
+    fs::remove_all(spec.capture_dir);
+}
+
 TEST(SandboxLimits, TheWallClockStopsAChildThatWaits) {
     // A sleeping child uses no CPU time: only the wall clock ends it.
     const auto spec = sandbox_limits_spec("sleep 600", 5, 1);
