@@ -88,7 +88,8 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     return 0;
 }
 
-int run_package(const fs::path& source, const fs::path& out, std::ostream& log) {
+int run_package(const fs::path& source, const fs::path& out, const std::vector<int>& stages,
+                std::ostream& log) {
     char tmpl[] = "/tmp/rt-grade-package-XXXXXX";
     if (!mkdtemp(tmpl)) return 1;
     const fs::path stage = tmpl;
@@ -134,14 +135,18 @@ build/bin/rt-grade prepare --source "$root/source" --cache "$root/rt-grade-cache
 # the private part of the cache stay unreadable to it even without namespaces.
 chmod 700 "$root/source"
 )SH");
+    // The graded stages, as rt-grade's --stages reads them ("" grades every stage).
+    std::string stage_list;
+    for (const int n : stages) stage_list += (stage_list.empty() ? "" : ",") + std::to_string(n);
     write_text(stage / "run_autograder", R"(#!/usr/bin/env bash
 # Gradescope entry point: grades /autograder/submission; results.json is always written.
 root=${RT_AUTOGRADER_ROOT:-/autograder}
 cd "$root/source" || exit 1
 mkdir -p "$root/results"
 export RT_GRADE_BUILD_JOBS=1
+stages=")" + stage_list + R"("  # rt-grade package --stages; empty: every stage
 exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
-  --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
+  ${stages:+--stages "$stages"} --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
   --results "$root/results/results.json" --html "$root/results/report.html"
 )");
     fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read |

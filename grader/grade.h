@@ -121,7 +121,9 @@ extern std::atomic<bool> g_interrupted;
 int run_batch(const GradeOptions& base, const std::filesystem::path& dir,
               const std::filesystem::path& out, int jobs, std::ostream& log);
 
+// The Gradescope zip. `stages` (empty: every stage with a grading.json) are the stages its
+// run_autograder grades: one assignment per stage or per group of stages.
 int run_package(const std::filesystem::path& source, const std::filesystem::path& out,
-                std::ostream& log);
+                const std::vector<int>& stages, std::ostream& log);
 
 }  // namespace rt::grader

@@ -4,6 +4,7 @@
 
 #include <sys/prctl.h>
 
+#include <charconv>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
@@ -19,13 +20,18 @@ void on_signal(int) {
     rt::grader::g_interrupted = true;
 }
 
-std::vector<int> parse_stages(const std::string& list) {
-    std::vector<int> stages;
+// "1,2,10" -> {1, 2, 10}; false for anything else (the caller says what was expected).
+bool parse_stages(const std::string& list, std::vector<int>& stages) {
     std::stringstream s(list);
     std::string item;
-    while (std::getline(s, item, ','))
-        if (!item.empty()) stages.push_back(std::stoi(item));
-    return stages;
+    while (std::getline(s, item, ',')) {
+        if (item.empty()) continue;
+        int n = 0;
+        const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), n);
+        if (ec != std::errc() || end != item.data() + item.size() || n < 1 || n > 99) return false;
+        stages.push_back(n);
+    }
+    return true;
 }
 
 }  // namespace
@@ -102,7 +108,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 64));
 
     std::string package_out = "autograder.zip";
-    CLI::App* package_cmd = app.add_subcommand("package", "Build the Gradescope autograder zip");
+    CLI::App* package_cmd = app.add_subcommand(
+        "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
     package_cmd->add_option("--out", package_out, "the zip to write");
 
     rt::grader::CompareRequest compare;
@@ -122,7 +129,11 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
     grade.cache = cache;
-    grade.stages = parse_stages(stages);
+    if (!parse_stages(stages, grade.stages)) {
+        std::cerr << "rt-grade: error: --stages \"" << stages
+                  << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
+        return 2;
+    }
 
     try {
         if (*release_cmd) {
@@ -140,7 +151,8 @@ int main(int argc, char** argv) {
             compare.stages = grade.stages;
             return rt::grader::run_compare(compare, std::cout);
         }
-        if (*package_cmd) return rt::grader::run_package(grade.source, package_out, std::cout);
+        if (*package_cmd)
+            return rt::grader::run_package(grade.source, package_out, grade.stages, std::cout);
         if (submission.empty()) {
             std::cerr << app.help();
             return 2;

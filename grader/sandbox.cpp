@@ -197,26 +197,35 @@ std::string read_capped(int fd, long long cap, bool& truncated) {
 
 }  // namespace
 
-int count_processes_of(uid_t uid, bool zombies_too) {
-    int count = 0;
+namespace {
+// Calls `visit` with the fields of /proc/PID/stat after the command name (from field 3, the
+// state) of every process of `uid`.
+template <class Visit>
+void for_each_process_of(uid_t uid, Visit visit) {
     DIR* proc = opendir("/proc");
-    if (!proc) return 0;
+    if (!proc) return;
     while (const dirent* e = readdir(proc)) {
         if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
         struct stat st {};
         const std::string path = std::string("/proc/") + e->d_name;
         if (stat(path.c_str(), &st) != 0 || st.st_uid != uid) continue;
-        // A zombie is dead already (killed, waiting for whoever adopted it to reap it).
         std::ifstream stat_file(path + "/stat");
         std::string text;
         std::getline(stat_file, text);
         const auto close = text.rfind(')');
-        if (!zombies_too && close != std::string::npos && close + 2 < text.size() &&
-            text[close + 2] == 'Z')
-            continue;
-        ++count;
+        visit(close != std::string::npos && close + 2 < text.size() ? text.substr(close + 2)
+                                                                    : std::string());
     }
     closedir(proc);
+}
+}  // namespace
+
+int count_processes_of(uid_t uid, bool zombies_too) {
+    int count = 0;
+    for_each_process_of(uid, [&](const std::string& fields) {
+        // A zombie is dead already (killed, waiting for whoever adopted it to reap it).
+        if (zombies_too || fields.empty() || fields[0] != 'Z') ++count;
+    });
     return count;
 }
 
@@ -226,24 +235,12 @@ double cpu_seconds_of(uid_t uid) {
     // program, at the very end: so the sum over the uid's processes is the run's CPU time.
     static const double tick = double(sysconf(_SC_CLK_TCK));
     double ticks = 0;
-    DIR* proc = opendir("/proc");
-    if (!proc) return 0;
-    while (const dirent* e = readdir(proc)) {
-        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
-        struct stat st {};
-        const std::string path = std::string("/proc/") + e->d_name;
-        if (stat(path.c_str(), &st) != 0 || st.st_uid != uid) continue;
-        std::ifstream stat_file(path + "/stat");
-        std::string text;
-        std::getline(stat_file, text);
-        const auto close = text.rfind(')');
-        if (close == std::string::npos) continue;
-        std::istringstream fields(text.substr(close + 2));  // from field 3, the state
+    for_each_process_of(uid, [&](const std::string& text) {
+        std::istringstream fields(text);
         std::string field;
         for (int i = 3; i <= 17 && fields >> field; ++i)
             if (i >= 14) ticks += std::strtod(field.c_str(), nullptr);
-    }
-    closedir(proc);
+    });
     return ticks / tick;
 }
 

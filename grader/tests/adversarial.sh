@@ -30,8 +30,12 @@ case $case in
     if grep -q " source/build" "$work/list"; then echo "FAIL: build tree in the zip"; exit 1; fi
     exit 0 ;;
   package_run)  # the package's run_autograder in a simulated Gradescope layout
+    # A package for an assignment of two stages, the first and the last: a complete submission
+    # scores full marks in both, and the stages between are not graded (the reference case
+    # grades every stage directly).
     root=$work/autograder
-    "$bin/rt-grade" package --out "$work/autograder.zip" --source "$src" > /dev/null || exit 1
+    first=${all_stages%%,*} last=${all_stages##*,}
+    "$bin/rt-grade" package --out "$work/autograder.zip" --source "$src" --stages "$first,$last" > /dev/null || exit 1
     mkdir -p "$root/submission" "$root/results"
     (cd "$root" && unzip -q "$work/autograder.zip") || { echo "FAIL: unzip"; exit 1; }
     bash -n "$root/setup.sh" || { echo "FAIL: setup.sh does not parse"; exit 1; }
@@ -51,9 +55,10 @@ case $case in
     echo "run_autograder exited with $code after $(( $(date +%s) - start )) s"
     [ $code -eq 0 ] || { cat "$work/run.log"; echo "FAIL: run_autograder"; exit 1; }
     [ -s "$root/results/report.html" ] || { echo "FAIL: no report.html next to results.json"; exit 1; }
-    # Full marks in stages 01-05 (a stage in progress may not have them yet).
-    checks=()
-    for n in ${all_stages//,/ }; do checks+=(--full-marks-tag "$(stage_tag "$n")"); done
+    checks=(--full-marks --full-marks-tag "$(stage_tag "$first")" --full-marks-tag "$(stage_tag "$last")")
+    for n in ${all_stages//,/ }; do
+      [[ $n == "$first" || $n == "$last" ]] || checks+=(--not-contains "$(printf 'Stage %02d ' "$n")")
+    done
     "$bin/results_check" "$root/results/results.json" "${checks[@]}" --not-contains "not run" \
       --not-contains "is missing from the submission" || exit 1
     exit 0 ;;

@@ -149,6 +149,15 @@ struct TriangleChecker {
         }
     }
 
+    // Checks every case, stopping at the first fatal failure, then prints the table.
+    void check_all(const std::vector<TriangleCase>& cases) {
+        for (const TriangleCase& one : cases) {
+            check(one);
+            if (::testing::Test::HasFatalFailure()) return;
+        }
+        print();
+    }
+
     void print() const {
         std::printf("[%s] exact edge/vertex rays %d\n", name.c_str(), exact_edge_or_vertex);
         for (int m = 0; m < 2; ++m) {
@@ -172,11 +181,8 @@ TEST_F(TriangleExact, RandomRaysAgreeWithCgal) {
     // (Cramer: a 3x3 determinant ratio; watertight: sheared coordinates, then T / det).
     constexpr double kUlps = 32;  // measured 10.6 (Cramer), 4.9 (watertight)
     TriangleChecker check{"random", {kTriangleBand, kTriangleT}, {}, 0};
-    for (const TriangleCase& one : random_triangle_cases()) {
-        check.check(one);
-        if (HasFatalFailure()) return;
-    }
-    check.print();
+    check.check_all(random_triangle_cases());
+    if (HasFatalFailure()) return;
     for (int m = 0; m < 2; ++m) {
         const MethodStats& s = check.stats[m];
         EXPECT_GT(s.hits, 500) << kMethods[m].name << ": only " << s.hits << " of " << s.rays
@@ -195,11 +201,8 @@ TEST_F(TriangleExact, GrazingRays) {
     // normal down to 1e-5). The band and t error grow like 1 / cos, which the error model
     // already contains, so the same constants hold as for random rays.
     TriangleChecker check{"grazing", {kTriangleBand, kTriangleT}, {}, 0};
-    for (const TriangleCase& one : grazing_triangle_cases()) {
-        check.check(one);
-        if (HasFatalFailure()) return;
-    }
-    check.print();
+    check.check_all(grazing_triangle_cases());
+    if (HasFatalFailure()) return;
     for (int m = 0; m < 2; ++m)
         EXPECT_GT(check.stats[m].hits, 500)
             << kMethods[m].name << ": only " << check.stats[m].hits << " of " << check.stats[m].rays
@@ -213,11 +216,8 @@ TEST_F(TriangleExact, SliverTriangles) {
     // badly conditioned normal; the band in distance units does not need it (a sliver is thin,
     // so its edges are close to every interior point, and the exact distance is what counts).
     TriangleChecker check{"sliver", {kTriangleBand, kTriangleT}, {}, 0};
-    for (const TriangleCase& one : sliver_triangle_cases()) {
-        check.check(one);
-        if (HasFatalFailure()) return;
-    }
-    check.print();
+    check.check_all(sliver_triangle_cases());
+    if (HasFatalFailure()) return;
 }
 
 TEST_F(TriangleExact, FarAwayAndExtremeScales) {
@@ -226,11 +226,8 @@ TEST_F(TriangleExact, FarAwayAndExtremeScales) {
     // coordinate magnitude, so the band grows to eps * 1e4 for the translated case: that is the
     // absolute precision of the coordinates there, and no method can do better.
     TriangleChecker check{"scales", {kTriangleBand, kTriangleT}, {}, 0};
-    for (const TriangleCase& one : scaled_triangle_cases()) {
-        check.check(one);
-        if (HasFatalFailure()) return;
-    }
-    check.print();
+    check.check_all(scaled_triangle_cases());
+    if (HasFatalFailure()) return;
     for (int m = 0; m < 2; ++m)
         EXPECT_GT(check.stats[m].hits, 500)
             << kMethods[m].name << ": only " << check.stats[m].hits << " of " << check.stats[m].rays
