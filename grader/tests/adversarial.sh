@@ -124,8 +124,10 @@ case $case in
     append1 <<'CPP'
 namespace { struct Spin { Spin() { volatile bool forever = true; while (forever) {} } } spin; }
 CPP
-    # Spinning is work: the CPU limit stops it (the wall clock is for a child that waits).
-    checks=(--score-max 0 --contains "CPU time limit hit (2 s") ;;
+    # Spinning is work: the CPU limit stops it (the wall clock is for a child that waits). Every
+    # process of the stage spins to its limit, so one second each keeps the case short.
+    limit=(--time-limit 1)
+    checks=(--score-max 0 --contains "CPU time limit hit (1 s") ;;
   fork_bomb)
     solution1
     append1 <<'CPP'
@@ -133,8 +135,9 @@ CPP
 namespace { struct Bomb { Bomb() { for (;;) fork(); } } bomb; }
 CPP
     # Each process is under RLIMIT_CPU, and a dying one is replaced: the run's CPU budget, which
-    # counts all its processes, is what ends it (not the wall clock).
-    checks=(--score-max 0 --contains "CPU time limit hit (2 s, all its processes)") ;;
+    # counts all its processes, is what ends it (not the wall clock). One second, as above.
+    limit=(--time-limit 1)
+    checks=(--score-max 0 --contains "CPU time limit hit (1 s, all its processes)") ;;
   memory_hog)
     solution1
     append1 <<'CPP'
