@@ -5,11 +5,9 @@
 # discovered when ctest runs (so a starter tree whose stubs crash still builds and lists them).
 function(rt_add_gtest target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "PREFIX" "LABELS")
-  # A test's own code compiles at -O1: it runs little work itself (the framework, the student
-  # files and the CGAL reference it calls are libraries at -O3), and GoogleTest's macros compile
-  # about 40 % faster (framework_tests: 18.8 s of CPU at -O3, 11.1 s at -O1). With
-  # -ffp-contract=off and no -ffast-math, the level never changes a floating-point result.
-  target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O1>)
+  # A test's own code does little work itself: the framework, the student files and the CGAL
+  # reference it calls are libraries at -O3 (cmake/off_hot_path.cmake).
+  rt_off_hot_path(${target})
   gtest_discover_tests(${target}
     TEST_PREFIX "${arg_PREFIX}"
     PROPERTIES TIMEOUT 300
