@@ -61,11 +61,19 @@ std::map<std::string, fs::path> compile_submission(Grading& g,
 }
 
 // A starter tree has no solutions: the stages before a graded one use the tree's own files
-// (compiled here like any student file; the stub when they do not compile).
+// (compiled here like any student file; the stub when they do not compile). Only the stages
+// before the last graded one are linked so (link_stages): grading stage 01 compiles none.
 std::map<std::string, fs::path> compile_own_solutions(
     Grading& g, const std::map<std::string, fs::path>& student_objects) {
+    int last_graded = 0;
+    for (const auto& s : g.graded) last_graded = std::max(last_graded, s.number);
+    std::set<std::string> needed;
+    for (const auto& t : g.all_specs)
+        if (t.number < last_graded)
+            for (const auto& f : t.student_files) needed.insert(t.folder + "/" + f);
     std::map<std::string, fs::path> own;
     for (const auto& key : g.plan.solution_from_source) {
+        if (!needed.count(key)) continue;
         if (const auto it = student_objects.find(key); it != student_objects.end()) {
             own[key] = it->second;
             continue;

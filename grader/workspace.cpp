@@ -324,6 +324,9 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     }
 
     json plan = {{"compile", json::object()}, {"link", json::object()}, {"api", json::object()}};
+    // The objects the build above compiled from the workspace's student files, which are the
+    // stubs: the same command the jail replays, so they are the stubs' pristine objects.
+    std::map<std::string, fs::path> built_stub;
     try {
         // Compile commands of the student files, with the object redirected to @OUT@.
         const json commands = json::parse(read_text(w.build / "compile_commands.json"));
@@ -337,7 +340,10 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
                         // A warning in honest student code never fails its grading.
                         std::erase(argv, std::string("-Werror"));
                         for (std::size_t i = 0; i + 1 < argv.size(); ++i)
-                            if (argv[i] == "-o") argv[i + 1] = "@OUT@";
+                            if (argv[i] == "-o") {
+                                built_stub[k] = w.build / argv[i + 1];
+                                argv[i + 1] = "@OUT@";
+                            }
                         plan["compile"][k] = argv;
                     }
                 if (!plan["compile"].contains(k))
@@ -388,6 +394,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     partial.compile = plan["compile"].get<decltype(partial.compile)>();
     fs::create_directories(w.priv / "objects");
     std::vector<fs::path> solutions;
+    bool jail_compiled = false;  // the first stub still compiles in the jail: proof that it works
     for (const auto& s : specs)
         for (const auto& f : s.student_files) {
             const std::string k = s.folder + "/" + f;
@@ -398,12 +405,25 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
                     read_text(w.priv / "pristine" / (k + (solution ? ".solution" : ".stub")));
                 const fs::path raw = w.priv / "objects" / (object_name(k) + ".raw.o");
                 std::string compile_log;
-                if (!compile_in_jail(w, partial, k, text, w.root / "compile", raw, compile_log)) {
+                const auto built = built_stub.find(k);
+                if (!solution && jail_compiled && built != built_stub.end() &&
+                    fs::is_regular_file(built->second, ec) && read_text(w.src / k) == text) {
+                    // The build compiled this very text with this very command: a copy saves a
+                    // compilation per student file (a second or more each, every preparation).
+                    fs::copy_file(built->second, raw, fs::copy_options::overwrite_existing, ec);
+                    if (ec) {
+                        log << "rt-grade: error: cannot copy " << built->second << ": "
+                            << ec.message() << "\n";
+                        return false;
+                    }
+                } else if (!compile_in_jail(w, partial, k, text, w.root / "compile", raw,
+                                            compile_log)) {
                     log << "rt-grade: error: the " << (solution ? "solution" : "stub") << " of "
                         << k << " does not compile in the sandbox:\n"
                         << compile_log;
                     return false;
                 }
+                jail_compiled = true;
                 if (!solution) {
                     std::set<std::string> api;
                     for (const auto& [name, type] : defined_symbols(raw))
