@@ -232,13 +232,18 @@ class Runner {
         double yaw =
             unseen_yaw(g_.plan.secret, g_.digest, task.stage->folder + "/" + task.scene->name);
         Render truth;
-        for (int attempt = 0; g_.plan.has_reference && attempt < 3; ++attempt, yaw *= 1.8) {
+        const bool need_unseen = fraction > 0 && g_.plan.has_reference;
+        for (int attempt = 0; need_unseen && attempt < 3; ++attempt, yaw *= 1.8) {
             truth = render(g_.reference_rt, task, yaw, dir, "truth");
             // A turn that leaves the image as shipped would test nothing.
             if (!truth.ok || score_image(reference, truth.image, th).fraction < 1) break;
         }
         std::string unseen;
-        if (!g_.plan.has_reference) {
+        if (fraction <= 0) {
+            // The score is the lower of the two views: nothing the unseen one shows can change
+            // it, so neither it nor the reference's image of it is rendered.
+            unseen = "unseen view: not rendered (the shipped view already scores 0)";
+        } else if (!g_.plan.has_reference) {
             unseen =
                 "(a starter tree has no reference renderer: the course's grader "
                 "also scores an unseen view of this scene)";
