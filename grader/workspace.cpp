@@ -394,7 +394,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     partial.compile = plan["compile"].get<decltype(partial.compile)>();
     fs::create_directories(w.priv / "objects");
     std::vector<fs::path> solutions;
-    bool jail_compiled = false;  // the first stub still compiles in the jail: proof that it works
+    bool jail_compiled = false;  // the first file still compiles in the jail: proof that it works
     for (const auto& s : specs)
         for (const auto& f : s.student_files) {
             const std::string k = s.folder + "/" + f;

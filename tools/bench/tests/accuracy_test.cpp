@@ -6,14 +6,15 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
+#include <filesystem>
 #include <random>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "bench/accuracy.h"
 #include "bench/methods.h"
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "geometry/offset.h"
 
 namespace rt::bench {
@@ -43,11 +44,12 @@ constexpr int kCases = 10000;
 // wrong count fails). Report.CountsMatchAFreshRun checks them against a fresh run.
 ReportCounts published_counts() {
     const char* other = std::getenv("RT_ACCURACY_REPORT");
-    std::ifstream in(other && *other ? std::string(other)
-                                     : (rt::source_dir() / "docs/accuracy.md").string());
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_report(text.str());
+    const std::filesystem::path file =
+        other && *other ? std::filesystem::path(other) : rt::source_dir() / "docs/accuracy.md";
+    return parse_report(read_text_file(file, 16u << 20, [&](const FileProblem&) {
+        throw std::runtime_error(file.string() +
+                                 " cannot be read; regenerate it (its first lines)");
+    }));
 }
 
 // Watertight promises that no ray slips between faces that share an edge or a vertex; its 2D
