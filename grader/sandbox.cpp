@@ -1,4 +1,5 @@
 #include "sandbox.h"
+#include "confine.h"
 #include "jail.h"
 
 #include <dirent.h>
@@ -22,7 +23,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -112,8 +112,17 @@ void drop_capabilities() {
     syscall(SYS_capset, &header, data);
 }
 
+[[noreturn]] void refuse_to_run(const char* what) {
+    const std::string text = std::string("sandbox setup failed: ") + what + "\n";
+    if (write(2, text.data(), text.size()) < 0) _exit(126);
+    _exit(126);
+}
+
+// `scratch`: the program's private folder when it runs without a jail (Landlock confines it
+// then), empty in the jail.
 [[noreturn]] void exec_program(const RunSpec& spec, int out_fd, int err_fd,
-                               const std::vector<std::pair<int, int>>& passed, uid_t uid) {
+                               const std::vector<std::pair<int, int>>& passed, uid_t uid,
+                               const fs::path& scratch) {
     const Limits& l = spec.limits;
     set_limit(RLIMIT_CPU, rlim_t(l.cpu_seconds), rlim_t(l.cpu_seconds + 1));
     // RLIMIT_DATA counts the heap and anonymous mappings (what a memory hog grows) but not the
@@ -146,37 +155,16 @@ void drop_capabilities() {
     for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     std::vector<std::string> env = spec.env;
-    env.push_back("PATH=/usr/bin:/bin");
-    env.push_back("HOME=/tmp");
-    env.push_back("TMPDIR=/tmp");
+    const std::string tmp = scratch.empty() ? "/tmp" : scratch.string();
+    env.insert(env.end(), {"PATH=/usr/bin:/bin", "HOME=" + tmp, "TMPDIR=" + tmp});
     std::vector<char*> envp;
     for (auto& e : env) envp.push_back(e.data());
     envp.push_back(nullptr);
+    // Last, so nothing above needs more than the program will be allowed.
+    if (!scratch.empty() && !apply_landlock(spec, scratch)) refuse_to_run("Landlock");
+    if (!apply_seccomp()) refuse_to_run("seccomp");
     execve(argv[0], argv.data(), envp.data());
     _exit(127);
-}
-
-Isolation forced_or_probed() {
-    if (const char* f = std::getenv("RT_GRADE_ISOLATION")) {
-        const std::string s = f;
-        if (s == "none") return Isolation::None;
-        if (s == "uid") return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
-    }
-    char dir[] = "/tmp/rt-grade-probe-XXXXXX";
-    if (!mkdtemp(dir)) return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
-    const pid_t pid = fork();
-    if (pid == 0) {
-        RunSpec probe;
-        probe.working_dir = "/";
-        const bool ok = enter_namespaces() && enter_jail(probe, dir);
-        _exit(ok ? 0 : 1);
-    }
-    int status = 0;
-    const bool ok =
-        pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    rmdir(dir);
-    if (ok) return Isolation::Namespaces;
-    return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
 }
 
 std::string read_capped(int fd, long long cap, bool& truncated) {
@@ -244,27 +232,6 @@ double cpu_seconds_of(uid_t uid) {
     return ticks / tick;
 }
 
-std::string describe(Isolation isolation) {
-    switch (isolation) {
-        case Isolation::Namespaces:
-            return "namespaces (a jail of its own: no network, no host files but the system's, "
-                   "process tree contained)";
-        case Isolation::UidDrop:
-            return "uid drop to a sandbox uid (the kernel refused namespaces: network not blocked, "
-                   "host files protected only by permissions)";
-        case Isolation::None:
-            return "NONE (not root and no user namespaces: resource limits only)";
-    }
-    return "?";
-}
-
-Isolation probe_isolation() {
-    static std::once_flag once;
-    static Isolation result = Isolation::None;
-    std::call_once(once, [] { result = forced_or_probed(); });
-    return result;
-}
-
 std::string RunResult::describe(const Limits& limits) const {
     char text[160];
     switch (end) {
@@ -300,12 +267,165 @@ std::string RunResult::describe(const Limits& limits) const {
     return text;
 }
 
+namespace {
+
+// What the forked side of a run needs.
+struct RunContext {
+    const RunSpec& spec;
+    Isolation isolation;
+    uid_t uid;
+    int out_fd, err_fd, status_fd;
+    const char* root_dir;  // the jail's mount point (nullptr: none)
+    fs::path scratch;      // the program's private folder without a jail
+};
+
+// Outer child: a session of its own (so the kernel's autogroup scheduling shares the CPU fairly
+// between concurrent runs, whatever one of them forks), namespaces, the jail; then an init
+// process that runs the program and reports its wait status, so every descendant dies with it.
+[[noreturn]] void run_outer_child(const RunContext& c) {
+    if (setsid() < 0) setpgid(0, 0);
+    const bool jail = c.isolation == Isolation::Namespaces;
+    if (jail && (!c.root_dir || !enter_namespaces() || !enter_jail(c.spec, c.root_dir))) _exit(124);
+    const pid_t init = fork();
+    if (init == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        // Without a PID namespace, orphans (daemons) are adopted here rather than by the
+        // machine's init, which may never reap them: reaped zombies do not pile up against the
+        // uid's RLIMIT_NPROC.
+        if (!jail) prctl(PR_SET_CHILD_SUBREAPER, 1);
+        if (jail) mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
+        const pid_t program = fork();
+        if (program == 0) {
+            // File descriptors are dup2'ed without CLOEXEC inside exec_program.
+            const int o = fcntl(c.out_fd, F_DUPFD, 10), e = fcntl(c.err_fd, F_DUPFD, 10);
+            std::vector<std::pair<int, int>> passed;
+            for (const auto& [from, to] : c.spec.pass_fds)
+                passed.push_back({fcntl(from, F_DUPFD_CLOEXEC, 20), to});
+            exec_program(c.spec, o, e, passed, c.uid, jail ? fs::path() : c.scratch);
+        }
+        int status = 0;
+        while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
+        }
+        if (write(c.status_fd, &status, sizeof status) != sizeof status) _exit(1);
+        if (!jail && c.uid != 0) {
+            // Kill what the program left running (as its uid: nothing else can be hit), then
+            // reap every adopted orphan.
+            if (setresgid(c.uid, c.uid, c.uid) == 0 && setresuid(c.uid, c.uid, c.uid) == 0)
+                kill(-1, SIGKILL);
+            while (waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
+            }
+        }
+        _exit(0);  // as PID 1 of the namespace, this kills every leftover process
+    }
+    int status = 0;
+    while (init > 0 && waitpid(init, &status, 0) < 0 && errno == EINTR) {
+    }
+    _exit(0);
+}
+
+// Without a jail, the program's temporary files (TMPDIR, HOME) go to a folder of its own,
+// not to the host's /tmp: 0700, owned by the run's uid, removed after the run.
+bool make_scratch(uid_t uid, fs::path& scratch) {
+    char dir[] = "/tmp/rt-grade-tmp-XXXXXX";
+    if (!mkdtemp(dir)) return false;
+    scratch = dir;
+    return uid == 0 || chown(dir, uid, uid) == 0;
+}
+
+struct Supervision {
+    bool timed_out = false, cpu_exceeded = false;
+    int outer_status = 0;
+};
+
+// RLIMIT_CPU bounds each process; the run as a whole (every process of its leased uid, a fork
+// bomb's included) gets the same budget, checked here every tenth of a second.
+Supervision supervise(pid_t outer, const RunSpec& spec, uid_t uid,
+                      std::chrono::steady_clock::time_point start) {
+    Supervision s;
+    double next_cpu_check = 0.1;
+    for (;;) {
+        const pid_t done = waitpid(outer, &s.outer_status, WNOHANG);
+        if (done == outer) break;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (uid != 0 && elapsed >= next_cpu_check) {
+            next_cpu_check = elapsed + 0.1;
+            s.cpu_exceeded = cpu_seconds_of(uid) > spec.limits.cpu_seconds;
+        }
+        if (s.cpu_exceeded || elapsed > spec.limits.wall_seconds ||
+            (spec.cancel && spec.cancel->load())) {
+            s.timed_out = !s.cpu_exceeded;
+            kill(-outer, SIGKILL);
+            kill(outer, SIGKILL);
+            waitpid(outer, &s.outer_status, 0);
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(elapsed < 1 ? 2 : 20));
+    }
+    return s;
+}
+
+// How the program ended, from the supervision and the status its init reported.
+void set_end(RunResult& result, const Supervision& s, bool have_status, int status) {
+    if (s.timed_out) {
+        result.end = RunResult::End::TimedOut;
+    } else if (s.cpu_exceeded) {
+        result.end = RunResult::End::CpuLimit;
+    } else if (!have_status) {
+        result.end = RunResult::End::FailedToStart;
+        if (WIFEXITED(s.outer_status) && WEXITSTATUS(s.outer_status) == 124)
+            result.output = "sandbox setup failed\n";
+    } else if (WIFEXITED(status)) {
+        result.end = RunResult::End::Exited;
+        result.exit_code = WEXITSTATUS(status);
+        if (result.exit_code == 127) result.end = RunResult::End::FailedToStart;
+    } else if (WIFSIGNALED(status)) {
+        result.end = RunResult::End::Signaled;
+        result.signal = WTERMSIG(status);
+    }
+}
+
+// Appends the captured stdout then stderr to the result, within Limits::output_bytes.
+void collect_output(RunResult& result, int out_fd, int err_fd, long long cap) {
+    bool truncated = false;
+    std::string out = read_capped(out_fd, cap, truncated);
+    std::string err = read_capped(err_fd, cap, truncated);
+    result.output += out;
+    if (!err.empty()) {
+        if (!out.empty() && out.back() != '\n') result.output.push_back('\n');
+        result.output.append(err);
+    }
+    if (result.output.size() > std::size_t(cap)) {
+        result.output.resize(std::size_t(cap));
+        truncated = true;
+    }
+    result.output_truncated = truncated;
+}
+
+// Creates the unlinked capture files of stdout and stderr in the trusted-only capture folder
+// (created exclusively, never followed).
+bool open_captures(const fs::path& capture_dir, int& out_fd, int& err_fd) {
+    std::error_code ec;
+    fs::create_directories(capture_dir, ec);
+    std::string out_t = (capture_dir / "stdout-XXXXXX").string();
+    std::string err_t = (capture_dir / "stderr-XXXXXX").string();
+    out_fd = mkostemp(out_t.data(), O_CLOEXEC);
+    err_fd = mkostemp(err_t.data(), O_CLOEXEC);
+    if (out_fd >= 0) unlink(out_t.c_str());
+    if (err_fd >= 0) unlink(err_t.c_str());
+    if (out_fd >= 0 && err_fd >= 0) return true;
+    if (out_fd >= 0) close(out_fd);
+    if (err_fd >= 0) close(err_fd);
+    return false;
+}
+
+}  // namespace
+
 RunResult run_sandboxed(const RunSpec& spec) {
     RunResult result;
     const Isolation isolation = probe_isolation();
-    const bool root = getuid() == 0;
     UidLease lease;
-    if (root && isolation != Isolation::None && !lease_uid(lease)) {
+    if (getuid() == 0 && isolation != Isolation::None && !lease_uid(lease)) {
         result.output = "sandbox setup failed: no sandbox uid free\n";
         return result;
     }
@@ -317,112 +437,38 @@ RunResult run_sandboxed(const RunSpec& spec) {
                 "sandbox setup failed: cannot hand " + b.host.string() + " to the sandbox\n";
             return result;
         }
-    // Captures live in a folder the child never sees; created exclusively, never followed.
-    std::error_code ec;
-    fs::create_directories(spec.capture_dir, ec);
-    char out_name[] = "stdout-XXXXXX", err_name[] = "stderr-XXXXXX";
-    const std::string out_path = (spec.capture_dir / out_name).string();
-    const std::string err_path = (spec.capture_dir / err_name).string();
-    std::string out_t = out_path, err_t = err_path;
-    const int out_fd = mkostemp(out_t.data(), O_CLOEXEC);
-    const int err_fd = mkostemp(err_t.data(), O_CLOEXEC);
-    if (out_fd >= 0) unlink(out_t.c_str());
-    if (err_fd >= 0) unlink(err_t.c_str());
+    RunContext c{spec, isolation, lease.uid, -1, -1, -1, nullptr, {}};
     int status_pipe[2];
-    if (out_fd < 0 || err_fd < 0 || pipe2(status_pipe, O_CLOEXEC) != 0) {
-        if (out_fd >= 0) close(out_fd);
-        if (err_fd >= 0) close(err_fd);
+    if (!open_captures(spec.capture_dir, c.out_fd, c.err_fd)) {
         result.output = "sandbox setup failed: cannot capture output\n";
         return result;
     }
+    std::error_code ec;
+    if (pipe2(status_pipe, O_CLOEXEC) != 0 ||
+        (isolation != Isolation::Namespaces && !make_scratch(lease.uid, c.scratch))) {
+        if (!c.scratch.empty()) fs::remove_all(c.scratch, ec);
+        close(c.out_fd);
+        close(c.err_fd);
+        result.output = "sandbox setup failed: cannot make the run's folders\n";
+        return result;
+    }
+    c.status_fd = status_pipe[1];
     char root_dir[] = "/tmp/rt-grade-root-XXXXXX";
-    const bool have_root = mkdtemp(root_dir) != nullptr;
+    if (isolation == Isolation::Namespaces && mkdtemp(root_dir)) c.root_dir = root_dir;
 
     const auto start = std::chrono::steady_clock::now();
     const pid_t outer = fork();
     if (outer == 0) {
-        // Outer child: a session of its own (so the kernel's autogroup scheduling shares the
-        // CPU fairly between concurrent runs, whatever one of them forks), namespaces, the
-        // jail; then an init process that runs the program and reports its wait status, so
-        // every descendant dies with it.
-        if (setsid() < 0) setpgid(0, 0);
         close(status_pipe[0]);
-        if (isolation == Isolation::Namespaces) {
-            if (!have_root || !enter_namespaces() || !enter_jail(spec, root_dir)) _exit(124);
-        }
-        const pid_t init = fork();
-        if (init == 0) {
-            prctl(PR_SET_PDEATHSIG, SIGKILL);
-            // Without a PID namespace, orphans (daemons) are adopted here rather than by the
-            // machine's init, which may never reap them: reaped zombies do not pile up against the
-            // uid's RLIMIT_NPROC.
-            if (isolation != Isolation::Namespaces) prctl(PR_SET_CHILD_SUBREAPER, 1);
-            if (isolation == Isolation::Namespaces)
-                mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
-            const pid_t program = fork();
-            if (program == 0) {
-                // File descriptors are dup2'ed without CLOEXEC inside exec_program.
-                const int o = fcntl(out_fd, F_DUPFD, 10), e = fcntl(err_fd, F_DUPFD, 10);
-                std::vector<std::pair<int, int>> passed;
-                for (const auto& [from, to] : spec.pass_fds)
-                    passed.push_back({fcntl(from, F_DUPFD_CLOEXEC, 20), to});
-                exec_program(spec, o, e, passed, lease.uid);
-            }
-            int status = 0;
-            while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
-            }
-            if (write(status_pipe[1], &status, sizeof status) != sizeof status) _exit(1);
-            if (isolation != Isolation::Namespaces && lease.uid != 0) {
-                // Kill what the program left running (as its uid: nothing else can be hit), then
-                // reap every adopted orphan.
-                if (setresgid(lease.uid, lease.uid, lease.uid) == 0 &&
-                    setresuid(lease.uid, lease.uid, lease.uid) == 0)
-                    kill(-1, SIGKILL);
-                while (waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
-                }
-            }
-            _exit(0);  // as PID 1 of the namespace, this kills every leftover process
-        }
-        int status = 0;
-        while (init > 0 && waitpid(init, &status, 0) < 0 && errno == EINTR) {
-        }
-        _exit(0);
+        run_outer_child(c);
     }
     close(status_pipe[1]);
-    if (outer < 0) {
-        close(status_pipe[0]);
-        close(out_fd);
-        close(err_fd);
-        if (have_root) rmdir(root_dir);
-        return result;
+    Supervision s;
+    if (outer > 0) {
+        setpgid(outer, outer);  // also from the parent, against the race with the child's setpgid
+        s = supervise(outer, spec, lease.uid, start);
+        kill(-outer, SIGKILL);  // stragglers of the group (without a PID namespace)
     }
-    setpgid(outer, outer);  // also from the parent, against the race with the child's setpgid
-
-    // RLIMIT_CPU bounds each process; the run as a whole (every process of its leased uid, a
-    // fork bomb's included) gets the same budget, checked here every tenth of a second.
-    bool timed_out = false, cpu_exceeded = false;
-    int outer_status = 0;
-    double next_cpu_check = 0.1;
-    for (;;) {
-        const pid_t done = waitpid(outer, &outer_status, WNOHANG);
-        if (done == outer) break;
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (lease.uid != 0 && elapsed >= next_cpu_check) {
-            next_cpu_check = elapsed + 0.1;
-            cpu_exceeded = cpu_seconds_of(lease.uid) > spec.limits.cpu_seconds;
-        }
-        if (cpu_exceeded || elapsed > spec.limits.wall_seconds ||
-            (spec.cancel && spec.cancel->load())) {
-            timed_out = !cpu_exceeded;
-            kill(-outer, SIGKILL);
-            kill(outer, SIGKILL);
-            waitpid(outer, &outer_status, 0);
-            break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(elapsed < 1 ? 2 : 20));
-    }
-    kill(-outer, SIGKILL);  // stragglers of the group (without a PID namespace)
     if (lease.uid != 0) {
         reap_uid(lease.uid);
         result.survivors = count_processes_of(lease.uid);
@@ -432,39 +478,13 @@ RunResult run_sandboxed(const RunSpec& spec) {
     int status = 0;
     const bool have_status = read(status_pipe[0], &status, sizeof status) == sizeof status;
     close(status_pipe[0]);
-    if (have_root) rmdir(root_dir);  // the jail's mounts lived in the child's namespace only
-
-    if (timed_out) {
-        result.end = RunResult::End::TimedOut;
-    } else if (cpu_exceeded) {
-        result.end = RunResult::End::CpuLimit;
-    } else if (!have_status) {
-        result.end = RunResult::End::FailedToStart;
-        if (WIFEXITED(outer_status) && WEXITSTATUS(outer_status) == 124)
-            result.output = "sandbox setup failed\n";
-    } else if (WIFEXITED(status)) {
-        result.end = RunResult::End::Exited;
-        result.exit_code = WEXITSTATUS(status);
-        if (result.exit_code == 127) result.end = RunResult::End::FailedToStart;
-    } else if (WIFSIGNALED(status)) {
-        result.end = RunResult::End::Signaled;
-        result.signal = WTERMSIG(status);
-    }
-    bool truncated = false;
-    std::string out = read_capped(out_fd, spec.limits.output_bytes, truncated);
-    std::string err = read_capped(err_fd, spec.limits.output_bytes, truncated);
-    close(out_fd);
-    close(err_fd);
-    result.output += out;
-    if (!err.empty()) {
-        if (!out.empty() && out.back() != '\n') result.output.push_back('\n');
-        result.output.append(err);
-    }
-    if (result.output.size() > std::size_t(spec.limits.output_bytes)) {
-        result.output.resize(std::size_t(spec.limits.output_bytes));
-        truncated = true;
-    }
-    result.output_truncated = truncated;
+    if (c.root_dir) rmdir(root_dir);  // the jail's mounts lived in the child's namespace only
+    // Only once nothing of the run's uid is left to race the removal (symlinks swapped in).
+    if (!c.scratch.empty() && result.survivors == 0) fs::remove_all(c.scratch, ec);
+    if (outer > 0) set_end(result, s, have_status, status);
+    collect_output(result, c.out_fd, c.err_fd, spec.limits.output_bytes);
+    close(c.out_fd);
+    close(c.err_fd);
     return result;
 }
 

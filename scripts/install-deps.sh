@@ -25,6 +25,7 @@ packages=(
   libembree-dev                       # rt-bench: Embree 3, the BVH benchmark's yardstick (optional)
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
+  libseccomp-dev                      # rt-grade: the seccomp filter of its container mode
   jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB
   hyperfine                           # tools/bench_startup.sh: process start-up figures
 )
