@@ -244,11 +244,66 @@ namespace { struct Litter { Litter() {
 } } litter; }
 CPP
     checks=(--full-marks)
-    grade_and_check || exit 1
+    [ -e /tmp/results.json ] && had_results=1 || had_results=0  # someone else's: not ours to judge
+    grade_and_check; failed=$?
     for f in /tmp/$tag /var/tmp/$tag /dev/shm/$tag; do
-      [ -e "$f" ] && { echo "FAIL: the sandbox wrote $f on the host"; rm -f "$f"; exit 1; }
+      [ -e "$f" ] && { echo "FAIL: the sandbox wrote $f on the host"; rm -f "$f"; failed=1; }
     done
-    exit 0 ;;
+    if [ $had_results = 0 ] && [ -e /tmp/results.json ]; then
+      echo "FAIL: the sandbox wrote /tmp/results.json on the host"; rm -f /tmp/results.json; failed=1
+    fi
+    exit $failed ;;
+  network)  # a test that resolves a name and connects to a listener on 127.0.0.1 (TCP and UDP)
+    # The listener: perl-base is in every Debian and Ubuntu system. It logs what reaches it.
+    perl -MIO::Socket::INET -MIO::Select -e '
+      my $t = IO::Socket::INET->new(LocalAddr => "127.0.0.1", LocalPort => 0, Listen => 16) or die;
+      my $u = IO::Socket::INET->new(LocalAddr => "127.0.0.1", LocalPort => 0, Proto => "udp") or die;
+      open(my $p, ">", "$ARGV[0].tmp") or die; print $p $t->sockport, " ", $u->sockport, "\n";
+      close $p; rename("$ARGV[0].tmp", $ARGV[0]); $| = 1;
+      my $s = IO::Select->new($t, $u);
+      for (;;) { for my $h ($s->can_read) {
+        if ($h == $t) { my $c = $t->accept; print "tcp\n"; close $c if $c }
+        else { my $d; $u->recv($d, 512); print "udp\n" } } }' "$work/ports" >> "$work/seen" &
+    listener=$!
+    for _ in $(seq 100); do [ -s "$work/ports" ] && break; sleep 0.1; done
+    read -r tcp udp < "$work/ports" || { echo "FAIL: no listener"; kill $listener; exit 1; }
+    # The listener works: a connection from here is seen.
+    (exec 3<> "/dev/tcp/127.0.0.1/$tcp") && sleep 0.5
+    [ "$(cat "$work/seen")" = tcp ] || { echo "FAIL: the listener saw nothing from the host"; kill $listener; exit 1; }
+    : > "$work/seen"
+    solution1
+    sed "s|@TCP@|$tcp|g; s|@UDP@|$udp|g" <<'CPP' | append1
+#include <arpa/inet.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+namespace { struct Phone { Phone() {
+  addrinfo hints{}, *found = nullptr;
+  hints.ai_family = AF_INET; hints.ai_socktype = SOCK_STREAM;
+  if (getaddrinfo("localhost", "@TCP@", &hints, &found) == 0) {  // a name, resolved
+    for (addrinfo* a = found; a; a = a->ai_next) {
+      const int s = socket(a->ai_family, a->ai_socktype, 0);
+      if (s >= 0) { (void)!connect(s, a->ai_addr, a->ai_addrlen); close(s); } }
+    freeaddrinfo(found);
+  }
+  sockaddr_in to{}; to.sin_family = AF_INET; to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  to.sin_port = htons(@TCP@);
+  int s = socket(AF_INET, SOCK_STREAM, 0);
+  if (s >= 0) { (void)!connect(s, reinterpret_cast<sockaddr*>(&to), sizeof to); close(s); }
+  to.sin_port = htons(@UDP@);
+  s = socket(AF_INET, SOCK_DGRAM, 0);
+  if (s >= 0) { (void)!sendto(s, "x", 1, 0, reinterpret_cast<sockaddr*>(&to), sizeof to); close(s); }
+} } phone; }
+CPP
+    checks=(--full-marks)
+    grade_and_check; failed=$?
+    sleep 0.5
+    kill $listener
+    if [ -s "$work/seen" ]; then
+      echo "FAIL: the listener saw $(sort "$work/seen" | uniq -c | tr '\n' ' ')from the sandbox"; failed=1
+    fi
+    exit $failed ;;
   symlink_plant)  # symlinks where the grader reads and writes: it never follows them
     echo original > "$work/canary"
     solution1
