@@ -1,5 +1,6 @@
-// Landlock and seccomp for a sandboxed child without a jail (confine.h). Runs in the child,
-// after fork and the uid drop, just before exec.
+// Landlock and seccomp for a sandboxed child without a jail (confine.h), applied in the child
+// after fork and the uid drop, just before exec; and the probes of what the kernel permits
+// (namespaces, Landlock, seccomp) with the report's text for each isolation (sandbox.h).
 #include "confine.h"
 #include "jail.h"
 
@@ -158,25 +159,8 @@ Isolation forced_or_probed() {
     return getuid() == 0 ? Isolation::UidDrop : Isolation::None;
 }
 
-}  // namespace
-
-Confinement probe_confinement() {
-    static const Confinement found = [] {
-        Confinement c;
-        const long abi =
-            syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
-        c.landlock_abi = abi > 0 && wanted("landlock") ? int(abi) : 0;
-#ifdef RT_HAVE_SECCOMP
-        c.seccomp = wanted("seccomp") && prctl(PR_GET_SECCOMP) >= 0 && seccomp_api_get() >= 1;
-#endif
-        return c;
-    }();
-    return found;
-}
-
-bool apply_landlock(const RunSpec& spec, const fs::path& scratch) {
-    const int abi = probe_confinement().landlock_abi;
-    if (abi == 0) return true;
+// The child's Landlock domain (confine.h).
+bool restrict_landlock(int abi, const RunSpec& spec, const fs::path& scratch) {
     Ruleset rules(abi);
     const std::uint64_t read = kReadFile | kReadDir, run = read | kExecute, all = ~0ULL;
     rules.allow("/usr", run, true);
@@ -202,14 +186,57 @@ bool apply_landlock(const RunSpec& spec, const fs::path& scratch) {
     return rules.restrict_self();
 }
 
-bool apply_seccomp() {
 #ifdef RT_HAVE_SECCOMP
-    if (!probe_confinement().seccomp) return true;
+bool load_seccomp() {
     const scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
     if (ctx == nullptr) return false;
     const bool ok = add_seccomp_rules(ctx) && seccomp_load(ctx) == 0;
     seccomp_release(ctx);
     return ok;
+}
+#endif
+
+// Whether a mechanism the kernel announces really applies here (a container's own seccomp
+// profile may refuse its calls): a child tries it. Otherwise every run would fail to start.
+template <class Apply>
+bool works_in_child(Apply apply) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);
+        _exit(apply() ? 0 : 1);
+    }
+    int status = 0;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) &&
+           WEXITSTATUS(status) == 0;
+}
+
+}  // namespace
+
+Confinement probe_confinement() {
+    static const Confinement found = [] {
+        Confinement c;
+        const long abi =
+            syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
+        if (abi > 0 && wanted("landlock") &&
+            works_in_child([abi] { return restrict_landlock(int(abi), RunSpec(), {}); }))
+            c.landlock_abi = int(abi);
+#ifdef RT_HAVE_SECCOMP
+        c.seccomp = wanted("seccomp") && prctl(PR_GET_SECCOMP) >= 0 && seccomp_api_get() >= 1 &&
+                    works_in_child(load_seccomp);
+#endif
+        return c;
+    }();
+    return found;
+}
+
+bool apply_landlock(const RunSpec& spec, const fs::path& scratch) {
+    const int abi = probe_confinement().landlock_abi;
+    return abi == 0 || restrict_landlock(abi, spec, scratch);
+}
+
+bool apply_seccomp() {
+#ifdef RT_HAVE_SECCOMP
+    return !probe_confinement().seccomp || load_seccomp();
 #else
     return true;
 #endif

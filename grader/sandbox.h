@@ -16,8 +16,10 @@
 //     kernel's autogroup scheduler shares the CPU between concurrent runs, not between their
 //     processes; no network (new net namespace); only the descriptors of `pass_fds` are
 //     inherited.
-// Without namespaces (the kernel or a container forbids them) only the uid lease, the limits
-// and the reaper remain; the report says so.
+// Without namespaces (the kernel or a container forbids them: the container mode) the uid lease,
+// the limits and the reaper remain, and Landlock and seccomp (confine.h) bound what the child
+// reads, writes and reaches where the kernel offers them; the report says which guarantee is lost
+// where one is missing. The seccomp filter applies in the jail too.
 #pragma once
 
 #include <sys/types.h>
