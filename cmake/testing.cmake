@@ -31,8 +31,12 @@ endfunction()
 # (framework/testing/scene_image_test.cpp), for the folder this is called from.
 function(rt_stage_tests number target)
   cmake_parse_arguments(PARSE_ARGV 2 arg "SCENE_IMAGES" "" "SOURCES;LABELS;LIBRARIES")
-  add_executable(${target} ${arg_SOURCES})
-  target_link_libraries(${target} PRIVATE rt_testing GTest::gtest_main ${arg_LIBRARIES})
+  # The tests compile once, into objects that two programs link: <target>, the tests with the
+  # student code (a student's own tree), and <target>_judge, the same tests with every call of
+  # student code sent to rt-worker (the grading judge: framework/remote/remote_call.h). A binary
+  # that renders on the GPU (rt_gpu_render) has no judge: its student code is GLSL.
+  add_library(${target}_objects OBJECT ${arg_SOURCES})
+  target_link_libraries(${target}_objects PUBLIC rt_test_support ${arg_LIBRARIES})
   if(arg_SCENE_IMAGES)
     get_filename_component(stage_folder ${CMAKE_CURRENT_SOURCE_DIR} NAME)
     set(stage_source ${CMAKE_CURRENT_BINARY_DIR}/${target}_image_stage.cpp)
@@ -42,8 +46,23 @@ namespace rt::testing {\n\
 extern const char* const kImageTestStage;\n\
 const char* const kImageTestStage = \"${stage_folder}\";\n\
 }  // namespace rt::testing\n")
-    target_sources(${target} PRIVATE ${stage_source} $<TARGET_OBJECTS:rt_scene_images>)
-    target_link_libraries(${target} PRIVATE nlohmann_json::nlohmann_json)
+    target_sources(${target}_objects PRIVATE ${stage_source})
+    target_link_libraries(${target}_objects PUBLIC nlohmann_json::nlohmann_json)
+    set(image_objects $<TARGET_OBJECTS:rt_scene_images>)
   endif()
+  rt_off_hot_path(${target}_objects)
+  add_executable(${target} ${image_objects})
+  target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render GTest::gtest_main)
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
+  if(NOT "rt_gpu_render" IN_LIST arg_LIBRARIES)
+    add_executable(${target}_judge ${image_objects})
+    target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
+      GTest::gtest_main)
+    rt_off_hot_path(${target}_judge)
+    # Every test of the binary through the split, with the reference solution in rt-worker.
+    add_test(NAME Remote.${target} COMMAND ${target}_judge --gtest_brief=1)
+    set_tests_properties(Remote.${target} PROPERTIES LABELS "remote;stage${number}"
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      ENVIRONMENT RT_REMOTE_WORKER=$<TARGET_FILE:rt-worker>)
+  endif()
 endfunction()

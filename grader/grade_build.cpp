@@ -118,8 +118,10 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
                     objects.push_back(stub_object(g.w, key));
             }
         std::vector<std::string> targets{"rt"};
+        if (has_judge(s)) targets.push_back(kWorker);
         for (const auto& group : s.groups)
-            if (std::find(targets.begin(), targets.end(), group.binary) == targets.end())
+            if (!has_judge(s) &&
+                std::find(targets.begin(), targets.end(), group.binary) == targets.end())
                 targets.push_back(group.binary);
         const fs::path bin = g.scratch / ("stage-" + two_digits(s.number)) / "bin";
         std::string link_log;
@@ -136,6 +138,14 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
             fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec;
         fs::permissions(bin.parent_path(), exec_only);
         fs::permissions(bin, exec_only);
+        // The judges: the workspace's, built once (they hold no student code).
+        if (has_judge(s))
+            for (const auto& group : s.groups) {
+                if (!fs::exists(g.w.priv / "judges" / judge_target(group.binary))) continue;
+                fs::copy_file(g.w.priv / "judges" / judge_target(group.binary), bin / group.binary,
+                              fs::copy_options::overwrite_existing);
+                targets.push_back(group.binary);
+            }
         for (const auto& t : targets) fs::permissions(bin / t, exec_only);
         fs::remove(bin / "librt_stages.a");
         g.stage_bins[s.number] = bin;

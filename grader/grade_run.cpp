@@ -2,6 +2,7 @@
 // own, `jobs` at a time. Unit tests pass only through the verdict channel; scenes are scored
 // on the shipped view and on an unseen view rendered by the reference here.
 #include <fcntl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -143,12 +144,17 @@ class Runner {
                  "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
         add_gpu(task, r);
         r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.child_end, kResultFd}};
-        const RunResult res = channel.ok ? run_sandboxed(r) : RunResult{};
+        std::string worker_output;
+        const RunResult res = !channel.ok              ? RunResult{}
+                              : has_judge(*task.stage) ? run_judged(bin, dir, r, worker_output)
+                                                       : run_sandboxed(r);
         g_.survivors += res.survivors;
         std::string why = channel.ok ? "" : "the grader could not open the test channel";
         const std::string records = channel.records();
         const bool passed = res.ok() && channel_passed(records, channel.nonce, task.test, why);
         out.output = trim_gtest_output(res.output);
+        if (!worker_output.empty())
+            out.output += "\nOutput of your code (the worker process):\n" + worker_output;
         if (!passed) {
             std::string head = res.ok() ? why : res.describe(r.limits);
             if (res.end == RunResult::End::Exited && res.exit_code == 1) {
@@ -161,6 +167,38 @@ class Runner {
         }
         out.status = passed ? "passed" : "failed";
         out.score = passed ? out.max_score : 0;
+    }
+
+    // A unit test of a C++ stage: the judge (`judge`, the tests and their assertions, no student
+    // code) in one jail, the worker (framework and student objects) in another with a uid of its
+    // own, joined by a socket pair and nothing else (framework/remote/remote_call.h). Each end is
+    // closed here as soon as its process is gone, so the other sees the end of the stream.
+    RunResult run_judged(const fs::path& bin, const fs::path& dir, RunSpec& judge,
+                         std::string& worker_output) {
+        int ends[2];
+        if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return RunResult{};
+        RunSpec worker = base_spec(bin / kWorker, child_dir(dir / "worker-out"),
+                                   trusted_dir(dir / "worker-trusted"));
+        worker.argv = {(bin / kWorker).string()};
+        worker.env = {"RT_REMOTE_FD=" + std::to_string(kRemoteFd)};
+        worker.pass_fds = {{ends[1], kRemoteFd}};
+        worker.limits = judge.limits;
+        RunResult worker_result;
+        std::thread serving([&] {
+            worker_result = run_sandboxed(worker);
+            close(ends[1]);
+        });
+        judge.env.push_back("RT_REMOTE_FD=" + std::to_string(kRemoteFd));
+        judge.pass_fds.push_back({ends[0], kRemoteFd});
+        RunResult result = run_sandboxed(judge);
+        close(ends[0]);
+        serving.join();
+        g_.survivors += worker_result.survivors;
+        worker_output = cap_output(clean_output(worker_result.output), 3000);
+        if (!worker_result.ok())
+            worker_output =
+                "the worker " + worker_result.describe(worker.limits) + "\n" + worker_output;
+        return result;
     }
 
     Render render(const fs::path& binary, const GradeTask& task, double yaw, const fs::path& dir,

@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -206,6 +207,18 @@ void for_each_process_of(uid_t uid, Visit visit) {
     }
     closedir(proc);
 }
+
+// Closes every descriptor of this process but `keep`.
+void close_all_but(std::vector<int> keep) {
+    std::sort(keep.begin(), keep.end());
+    unsigned from = 0;
+    for (const int fd : keep) {
+        if (fd < 0 || unsigned(fd) < from) continue;
+        if (unsigned(fd) > from) close_range(from, unsigned(fd) - 1, 0);
+        from = unsigned(fd) + 1;
+    }
+    close_range(from, ~0u, 0);
+}
 }  // namespace
 
 int count_processes_of(uid_t uid, bool zombies_too) {
@@ -284,6 +297,11 @@ struct RunContext {
 // process that runs the program and reports its wait status, so every descendant dies with it.
 [[noreturn]] void run_outer_child(const RunContext& c) {
     if (setsid() < 0) setpgid(0, 0);
+    // Only what this run needs stays open: a descriptor of another run (a judge's socket,
+    // forked into this process by chance) would otherwise outlive that run's peer here.
+    std::vector<int> keep{0, 1, 2, c.out_fd, c.err_fd, c.status_fd};
+    for (const auto& [from, to] : c.spec.pass_fds) keep.push_back(from);
+    close_all_but(keep);
     const bool jail = c.isolation == Isolation::Namespaces;
     if (jail && (!c.root_dir || !enter_namespaces() || !enter_jail(c.spec, c.root_dir))) _exit(124);
     const pid_t init = fork();

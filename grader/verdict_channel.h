@@ -27,6 +27,8 @@ struct VerdictChannel {
 };
 
 constexpr int kNonceFd = 3, kResultFd = 4;
+// The judge's and the worker's end of their socket (framework/remote/, RT_REMOTE_FD).
+constexpr int kRemoteFd = 5;
 
 // The verdict: every record carries the nonce (else the channel was tampered with), exactly one
 // record names this test and says PASS, the program's end record counts 1 passed and 0 failed.

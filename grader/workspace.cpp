@@ -123,11 +123,19 @@ int run_with_progress(const std::string& command, std::string& output, std::ostr
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+// What the workspace builds: the renderer, the worker, each graded binary's judge (or, for a
+// GPU stage, the binary itself).
 std::vector<std::string> build_targets(const std::vector<StageSpec>& specs) {
-    std::set<std::string> targets{"rt"};
+    std::set<std::string> targets{"rt", kWorker};
     for (const auto& s : specs)
-        for (const auto& g : s.groups) targets.insert(g.binary);
+        for (const auto& g : s.groups)
+            targets.insert(has_judge(s) ? judge_target(g.binary) : g.binary);
     return {targets.begin(), targets.end()};
+}
+
+// A target linked per submission from the saved command, with the stage archive.
+bool linked_per_submission(const std::string& target) {
+    return !target.ends_with("_judge");
 }
 
 std::string object_name(const std::string& key) {
@@ -269,7 +277,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
     // gtest_main, and is stripped: its verdicts come through the nonce channel.
     hidden_cmake += "# The trusted test main: verdicts through the nonce channel.\n";
     for (const auto& t : build_targets(specs)) {
-        if (t == "rt") continue;
+        if (t == "rt" || t == kWorker) continue;
         hidden_cmake +=
             "get_target_property(rt_grade_libs " + t +
             " LINK_LIBRARIES)\n"
@@ -351,6 +359,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             }
         // Link commands, with the stage archive and the output as placeholders.
         for (const auto& t : targets) {
+            if (!linked_per_submission(t)) continue;
             std::string text;
             run_argv({"/usr/bin/ninja", "-C", w.build.string(), "-t", "commands", "bin/" + t}, "/",
                      text);
@@ -468,9 +477,15 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             return false;
         }
     }
-    // The expected test lists come from the instructor's binaries.
+    // The judges, kept where children never look (each grading copies them), and the expected
+    // test lists, from the instructor's binaries.
+    fs::create_directories(w.priv / "judges");
     for (const auto& t : targets) {
-        if (t == "rt") continue;
+        if (t == "rt" || t == kWorker) continue;
+        if (!linked_per_submission(t))
+            fs::copy_file(w.build / "bin" / t, w.priv / "judges" / t,
+                          fs::copy_options::overwrite_existing, ec);
+        const std::string graded = t.ends_with("_judge") ? t.substr(0, t.size() - 6) : t;
         out.clear();
         run_argv({(w.build / "bin" / t).string(), "--gtest_list_tests"}, w.build, out);
         std::vector<std::string> names;
@@ -486,7 +501,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
                 names.push_back(suite + test);
             }
         }
-        write_text(w.priv / "expected" / (t + ".json"), json(names).dump(1));
+        write_text(w.priv / "expected" / (graded + ".json"), json(names).dump(1));
     }
     write_text(w.priv / "key", key);
     write_text(w.root / "key", key);

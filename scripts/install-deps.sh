@@ -15,6 +15,7 @@ packages=(
   libcli11-dev              # command lines
   libtinyobjloader-dev      # OBJ meshes
   libgtest-dev libgmock-dev # unit tests
+  libxxhash-dev             # rt-grade: the judge names a scene the worker holds by its hash
   libcgal-dev libgmp-dev libmpfr-dev  # exact predicates in the tests
   libglfw3-dev libosmesa6-dev         # GL contexts (windowed, headless)
   libegl-dev libegl-mesa0 libepoxy-dev # headless EGL contexts, GL function loading

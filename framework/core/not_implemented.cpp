@@ -36,5 +36,9 @@ std::uint64_t stub_calls_total() {
 std::uint64_t stub_calls_this_thread() {
     return t_this_thread;
 }
+void count_stub_calls(std::uint64_t n) {
+    g_total.fetch_add(n, std::memory_order_relaxed);
+    t_this_thread += n;
+}
 
 }  // namespace rt

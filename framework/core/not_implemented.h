@@ -21,6 +21,10 @@ void report_not_implemented(const char* function, const char* file, int line, co
 std::uint64_t stub_calls_total();
 std::uint64_t stub_calls_this_thread();
 
+// Counts `n` stub calls made on this thread's behalf by another process: the grading worker
+// that runs the student's code for a judge (framework/remote/).
+void count_stub_calls(std::uint64_t n);
+
 }  // namespace rt
 
 #define RT_NOT_IMPLEMENTED(handout)                                                        \
