@@ -50,12 +50,21 @@ void forge() {
     const int again = open(path.c_str(), O_RDONLY | O_NONBLOCK);
     if (again >= 0) { n = read(again, buf, sizeof buf); if (n > 0) harvest(std::string(buf, n)); close(again); }
   }
+  // Pairs of 32-byte arrays side by side whose XOR is 32 hex digits (a masked nonce and its mask).
+  auto xor_pairs = [&](const unsigned char* m, unsigned long size) {
+    for (unsigned long i = 0; i + 64 <= size && nonces.size() < 64; ++i) {
+      int k = 0;
+      for (; k < 32; ++k) { const int c = m[i + k] ^ m[i + 32 + k]; if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) break; }
+      if (k == 32) { std::string n(32, '0'); for (k = 0; k < 32; ++k) n[k] = char(m[i + k] ^ m[i + 32 + k]); nonces.push_back(n); }
+    }
+  };
   std::ifstream maps("/proc/self/maps"); std::string line;
   while (std::getline(maps, line) && nonces.size() < 64) {
     unsigned long lo = 0, hi = 0; char perms[8] = {};
     if (std::sscanf(line.c_str(), "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[1] != 'w') continue;
     if (hi - lo > (8ul << 20)) continue;
     const char* m = reinterpret_cast<const char*>(lo); int run = 0;
+    xor_pairs(reinterpret_cast<const unsigned char*>(lo), hi - lo);
     for (unsigned long i = 0; i < hi - lo && nonces.size() < 64; ++i) {
       const char c = m[i];
       run = ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')) ? run + 1 : 0;
@@ -153,7 +162,7 @@ CPP
 }
 
 case $case in
-  forge_destructor | forge_atexit | forge_signal)
+  forge_destructor | forge_atexit | forge_signal | forge_midtest | forge_thread)
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     forger | append1
     case $case in
@@ -164,8 +173,20 @@ case $case in
         itimerval t{}; t.it_value.tv_usec = 20000; setitimer(ITIMER_REAL, &t, nullptr); } } arm; }' | append1
         # ... and the test body must still be running when it fires.
         sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|{ volatile long spin = 0; while (spin < 300000000L) spin = spin + 1; } RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp" ;;
+      # The first call of the student's function, inside the test: well-formed records on every
+      # descriptor, then exit 0 before the test's assertions run.
+      forge_midtest)
+        sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|forge_now(); RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp"
+        sed -i '0,/^namespace rt {/s//void forge_now();\nnamespace rt {/' "$sub/$s1/camera_rays.cpp"
+        echo 'void forge_now() { forge(); }' | append1 ;;
+      # A second thread forges while the test runs.
+      forge_thread) echo '#include <thread>
+namespace { struct Start { Start() { std::thread([] { usleep(20000); forge(); }).detach(); } } start; }' | append1
+        sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|{ volatile long spin = 0; while (spin < 300000000L) spin = spin + 1; } RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp" ;;
     esac
-    checks=(--score-max 0 --contains "FORGER ran" --contains "tampering") ;;
+    # The forger runs in the worker, which holds no verdict channel, no nonce and no GoogleTest:
+    # every test scores what the stubs score.
+    checks=(--score-max 0 --contains "FORGER ran") ;;
   hand_in_reference)  # the shipped references written as renders: the shipped view passes...
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     hand_in perspective_directions orthographic_directions | append1
