@@ -185,14 +185,14 @@ static_assert(
     sizeof(Real) != sizeof(float) || sizeof(Scene) == kSceneSize,
     "Scene changed: add its new field to put/get(Scene) in framework/remote/wire_types.cpp");
 
-#define RT_SCENE_FIELDS(F)                                                                    \
-    F(source)                                                                                 \
-    F(camera)                                                                                 \
-    F(image) F(mode) F(background) F(ambient_light) F(max_depth) F(shadows) F(fresnel)        \
-        F(accelerator) F(texture_lookup) F(spheres) F(planes) F(boxes) F(vertices) F(normals) \
-            F(uvs) F(triangles) F(materials) F(material_names) F(lights) F(area_lights)       \
-                F(moving_spheres) F(sampling) F(fog) F(textures) F(texture_names)             \
-                    F(texture_images) F(texels) F(environment) F(features) F(revision) F(bvh)
+// clang-format off
+#define RT_SCENE_FIELDS(F) \
+    F(source) F(camera) F(image) F(mode) F(background) F(ambient_light) F(max_depth) F(shadows) \
+    F(fresnel) F(accelerator) F(texture_lookup) F(spheres) F(planes) F(boxes) F(vertices) \
+    F(normals) F(uvs) F(triangles) F(materials) F(material_names) F(lights) F(area_lights) \
+    F(moving_spheres) F(sampling) F(fog) F(textures) F(texture_names) F(texture_images) \
+    F(texels) F(environment) F(features) F(revision) F(bvh)
+// clang-format on
 
 void put(Writer& w, const Scene& s) {
 #define RT_PUT_FIELD(f) put(w, s.f);
