@@ -54,15 +54,21 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   add_executable(${target} ${image_objects})
   target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render GTest::gtest_main)
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
-  if(NOT "rt_gpu_render" IN_LIST arg_LIBRARIES)
-    add_executable(${target}_judge ${image_objects})
-    target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
-      GTest::gtest_main)
-    rt_off_hot_path(${target}_judge)
-    # Every test of the binary through the split, with the reference solution in rt-worker.
-    add_test(NAME Remote.${target} COMMAND ${target}_judge --gtest_brief=1)
-    set_tests_properties(Remote.${target} PROPERTIES LABELS "remote;stage${number}"
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-      ENVIRONMENT RT_REMOTE_WORKER=$<TARGET_FILE:rt-worker>)
+  if("rt_gpu_render" IN_LIST arg_LIBRARIES)
+    return()
   endif()
+  # The judge is for rt-grade, which builds it by name: a student's build leaves it out.
+  add_executable(${target}_judge ${image_objects})
+  target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
+    GTest::gtest_main)
+  rt_off_hot_path(${target}_judge)
+  if(NOT RT_INSTRUCTOR)
+    set_target_properties(${target}_judge PROPERTIES EXCLUDE_FROM_ALL ON)
+    return()
+  endif()
+  # Every test of the binary through the split, with the reference solution in rt-worker.
+  add_test(NAME Remote.${target} COMMAND ${target}_judge --gtest_brief=1)
+  set_tests_properties(Remote.${target} PROPERTIES LABELS "remote;stage${number}"
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    ENVIRONMENT RT_REMOTE_WORKER=$<TARGET_FILE:rt-worker>)
 endfunction()

@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
@@ -294,6 +295,17 @@ Isolation probe_isolation() {
         probe_confinement();  // here, not first in a child after fork
     });
     return result;
+}
+
+void close_all_but(std::vector<int> keep) {
+    std::sort(keep.begin(), keep.end());
+    unsigned from = 0;
+    for (const int fd : keep) {
+        if (fd < 0 || unsigned(fd) < from) continue;
+        if (unsigned(fd) > from) close_range(from, unsigned(fd) - 1, 0);
+        from = unsigned(fd) + 1;
+    }
+    close_range(from, ~0u, 0);
 }
 
 }  // namespace rt::grader

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "sandbox.h"
 
@@ -31,5 +32,9 @@ Confinement probe_confinement();
 // says so).
 bool apply_landlock(const RunSpec& spec, const std::filesystem::path& scratch);
 bool apply_seccomp();
+
+// In the outer child of a run: closes every descriptor but `keep`, so none of another run's (a
+// judge's socket end, forked into this process by chance) outlives that run's peer here.
+void close_all_but(std::vector<int> keep);
 
 }  // namespace rt::grader

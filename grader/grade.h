@@ -64,6 +64,9 @@ inline const char* kWorker = "rt-worker";
 inline std::string judge_target(const std::string& binary) {
     return binary + "_judge";
 }
+inline bool is_judge_target(const std::string& target) {
+    return target.ends_with("_judge");
+}
 
 // Every stage that has a grading.json, in order. Throws std::runtime_error naming the file.
 std::vector<StageSpec> load_stage_specs(const std::filesystem::path& source);

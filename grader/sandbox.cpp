@@ -18,7 +18,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -208,17 +207,6 @@ void for_each_process_of(uid_t uid, Visit visit) {
     closedir(proc);
 }
 
-// Closes every descriptor of this process but `keep`.
-void close_all_but(std::vector<int> keep) {
-    std::sort(keep.begin(), keep.end());
-    unsigned from = 0;
-    for (const int fd : keep) {
-        if (fd < 0 || unsigned(fd) < from) continue;
-        if (unsigned(fd) > from) close_range(from, unsigned(fd) - 1, 0);
-        from = unsigned(fd) + 1;
-    }
-    close_range(from, ~0u, 0);
-}
 }  // namespace
 
 int count_processes_of(uid_t uid, bool zombies_too) {

@@ -133,11 +133,6 @@ std::vector<std::string> build_targets(const std::vector<StageSpec>& specs) {
     return {targets.begin(), targets.end()};
 }
 
-// A target linked per submission from the saved command, with the stage archive.
-bool linked_per_submission(const std::string& target) {
-    return !target.ends_with("_judge");
-}
-
 std::string object_name(const std::string& key) {
     std::string name = key;
     std::replace(name.begin(), name.end(), '/', '_');
@@ -359,7 +354,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             }
         // Link commands, with the stage archive and the output as placeholders.
         for (const auto& t : targets) {
-            if (!linked_per_submission(t)) continue;
+            if (is_judge_target(t)) continue;  // built once, no student code
             std::string text;
             run_argv({"/usr/bin/ninja", "-C", w.build.string(), "-t", "commands", "bin/" + t}, "/",
                      text);
@@ -477,32 +472,7 @@ bool prepare_workspace(const GradeOptions& o, std::ostream& log) {
             return false;
         }
     }
-    // The judges, kept where children never look (each grading copies them), and the expected
-    // test lists, from the instructor's binaries.
-    fs::create_directories(w.priv / "judges");
-    for (const auto& t : targets) {
-        if (t == "rt" || t == kWorker) continue;
-        if (!linked_per_submission(t))
-            fs::copy_file(w.build / "bin" / t, w.priv / "judges" / t,
-                          fs::copy_options::overwrite_existing, ec);
-        const std::string graded = t.ends_with("_judge") ? t.substr(0, t.size() - 6) : t;
-        out.clear();
-        run_argv({(w.build / "bin" / t).string(), "--gtest_list_tests"}, w.build, out);
-        std::vector<std::string> names;
-        std::istringstream lines(out);
-        std::string line, suite;
-        while (std::getline(lines, line)) {
-            if (line.empty() || line.starts_with("Running main")) continue;
-            if (line[0] != ' ') {
-                suite = line.substr(0, line.find_first_of(" #"));
-            } else {
-                std::string test = line.substr(2);
-                test = test.substr(0, test.find_first_of(" #"));
-                names.push_back(suite + test);
-            }
-        }
-        write_text(w.priv / "expected" / (graded + ".json"), json(names).dump(1));
-    }
+    keep_test_binaries(w, targets);
     write_text(w.priv / "key", key);
     write_text(w.root / "key", key);
     log << "rt-grade: workspace ready in " << int(seconds_since(start)) << " s\n";

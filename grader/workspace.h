@@ -65,6 +65,10 @@ std::string check_and_localize(const std::filesystem::path& object,
                                const std::filesystem::path& out);
 
 // Archives `objects` and links `targets` into `bin`. Returns false with the linker's output.
+// After the workspace build: each judge copied where children never look (every grading copies
+// it), and each graded binary's expected test list, from the instructor's binary.
+void keep_test_binaries(const Workspace& w, const std::vector<std::string>& targets);
+
 bool link_stage(const Workspace& w, const BuildPlan& plan,
                 const std::vector<std::filesystem::path>& objects,
                 const std::vector<std::string>& targets, const std::filesystem::path& bin,

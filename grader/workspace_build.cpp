@@ -1,9 +1,14 @@
 // The grading-time steps on a prepared workspace: one submitted file compiled in the jail, and
-// a graded stage's binaries linked from objects (workspace.h, steps 1 and 3).
+// a graded stage's binaries linked from objects (workspace.h, steps 1 and 3); and the test
+// binaries a preparation keeps.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "grade.h"
 #include "sandbox.h"
 #include "util.h"
 #include "workspace.h"
@@ -107,6 +112,43 @@ bool link_stage(const Workspace& w, const BuildPlan& plan, const std::vector<fs:
         }
     }
     return true;
+}
+
+namespace {
+
+// The test names `--gtest_list_tests` prints, as Suite.Test.
+std::vector<std::string> listed_tests(const std::string& listing) {
+    std::vector<std::string> names;
+    std::istringstream lines(listing);
+    std::string line, suite;
+    while (std::getline(lines, line)) {
+        if (line.empty() || line.starts_with("Running main")) continue;
+        if (line[0] != ' ') {
+            suite = line.substr(0, line.find_first_of(" #"));
+        } else {
+            std::string test = line.substr(2);
+            names.push_back(suite + test.substr(0, test.find_first_of(" #")));
+        }
+    }
+    return names;
+}
+
+}  // namespace
+
+void keep_test_binaries(const Workspace& w, const std::vector<std::string>& targets) {
+    fs::create_directories(w.priv / "judges");
+    for (const auto& t : targets) {
+        if (t == "rt" || t == kWorker) continue;
+        if (is_judge_target(t))
+            fs::copy_file(w.build / "bin" / t, w.priv / "judges" / t,
+                          fs::copy_options::overwrite_existing);
+        const std::string graded =
+            is_judge_target(t) ? t.substr(0, t.size() - judge_target("").size()) : t;
+        std::string out;
+        run_argv({(w.build / "bin" / t).string(), "--gtest_list_tests"}, w.build, out);
+        write_text(w.priv / "expected" / (graded + ".json"),
+                   nlohmann::json(listed_tests(out)).dump(1));
+    }
 }
 
 }  // namespace rt::grader

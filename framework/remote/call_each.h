@@ -68,4 +68,14 @@ auto call_each(std::vector<std::tuple<A...>>& calls) {
     return results;
 }
 
+// call_each of `count` calls, the i-th with the arguments `arguments(i)` returns (a tuple),
+// made in order of i: a test's loop of calls with fresh random numbers, made at once.
+template <auto function, class Arguments>
+auto call_for(int count, Arguments arguments) {
+    std::vector<decltype(arguments(0))> calls;
+    calls.reserve(std::size_t(std::max(count, 0)));
+    for (int i = 0; i < count; ++i) calls.push_back(arguments(i));
+    return call_each<function>(calls);
+}
+
 }  // namespace rt::testing

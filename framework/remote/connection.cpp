@@ -33,10 +33,12 @@ bool read_all(int fd, char* data, std::size_t size) {
 
 }  // namespace
 
+// The size and the payload in one send: the peer wakes once per message, not twice.
 bool send_message(int fd, const std::string& payload) {
     const std::uint64_t size = payload.size();
-    return write_all(fd, reinterpret_cast<const char*>(&size), sizeof size) &&
-           write_all(fd, payload.data(), payload.size());
+    std::string message(reinterpret_cast<const char*>(&size), sizeof size);
+    message += payload;
+    return write_all(fd, message.data(), message.size());
 }
 
 bool receive_message(int fd, std::string& payload) {

@@ -1,13 +1,13 @@
 // The judge's end of the worker connection (remote_call.h): the socket the grader passed
 // (RT_REMOTE_FD), or, outside grading, a worker this process starts itself (RT_REMOTE_WORKER,
 // the path of rt-worker: how ctest checks the split without the grader).
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <set>
@@ -38,6 +38,7 @@ int start_worker(const char* worker) {
     const pid_t pid = fork();
     if (pid == 0) {
         dup2(ends[1], 3);
+        fcntl(3, F_SETFD, 0);  // the worker's end survives exec even when it already was 3
         setenv("RT_REMOTE_FD", "3", 1);
         execl(worker, worker, "--serve", static_cast<char*>(nullptr));
         _exit(127);
@@ -55,12 +56,8 @@ class Client {
         signal(SIGPIPE, SIG_IGN);
     }
 
-    ~Client() {
-        if (std::getenv("RT_REMOTE_STATS")) std::fprintf(stderr, "remote calls: %lu\n", calls_);
-    }
     std::string call(const std::string& request, const char* what) {
         std::lock_guard lock(mutex_);
-        ++calls_;
         if (fd_ < 0)
             throw RemoteError(
                 "this test binary is a grading judge: it runs student code only in a worker "
@@ -115,7 +112,6 @@ class Client {
     int fd_ = -1;
     bool dead_ = false;
     std::uint64_t stubs_seen_ = 0;
-    unsigned long calls_ = 0;
     std::set<std::uint64_t> sent_;
 };
 

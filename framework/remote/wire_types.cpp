@@ -49,47 +49,15 @@ void get(Reader& r, FogEvent& v) {
     normalize(v.scattered);
 }
 
-void put(Writer& w, const Image& v) {
-    put(w, v.width);
-    put(w, v.height);
-    put(w, v.pixels);
-}
-void get(Reader& r, Image& v) {
-    get(r, v.width);
-    get(r, v.height);
-    get(r, v.pixels);
+void check_decoded(Reader& r, Image& v) {
     if (v.width < 0 || v.height < 0 || v.pixels.size() != std::size_t(v.width) * v.height) {
         r.fail();
         v = Image();
     }
 }
 
-void put(Writer& w, const Bvh& v) {
-    put(w, v.nodes);
-    put(w, v.primitives);
-}
-void get(Reader& r, Bvh& v) {
-    get(r, v.nodes);
-    get(r, v.primitives);
-}
-
-void put(Writer& w, const AccelerationReport& v) {
-    put(w, v.requested);
-    put(w, v.built);
-    put(w, v.problem);
-    put(w, v.build_ms);
-    put(w, v.primitives);
-    put(w, v.nodes);
-    put(w, v.depth);
-}
-void get(Reader& r, AccelerationReport& v) {
-    get(r, v.requested);
-    get(r, v.built);
-    get(r, v.problem);
-    get(r, v.build_ms);
-    get(r, v.primitives);
-    get(r, v.nodes);
-    get(r, v.depth);
+void check_decoded(Reader& r, RayNode& v) {
+    if (int(v.kind) < 0 || int(v.kind) > int(RayNode::Kind::Refraction)) r.fail();
 }
 
 // A render's options without its cancel flag (nothing in a test cancels across processes).
@@ -103,48 +71,6 @@ void get(Reader& r, RenderOptions& v) {
     get(r, v.show_progress);
     get(r, v.tile_size);
     v.cancel = nullptr;
-}
-
-void put(Writer& w, const RayNode& v) {
-    put(w, v.kind);
-    put(w, v.depth);
-    put(w, v.ray);
-    put(w, v.ray_weight);
-    put(w, v.weight);
-    put(w, v.hit);
-    put(w, v.hit_record);
-    put(w, v.surface);
-    put(w, v.local);
-    put(w, v.contribution);
-    put(w, v.shadows);
-    put(w, v.children);
-}
-void get(Reader& r, RayNode& v) {
-    get(r, v.kind);
-    get(r, v.depth);
-    get(r, v.ray);
-    get(r, v.ray_weight);
-    get(r, v.weight);
-    get(r, v.hit);
-    get(r, v.hit_record);
-    get(r, v.surface);
-    get(r, v.local);
-    get(r, v.contribution);
-    get(r, v.shadows);
-    get(r, v.children);
-    if (int(v.kind) < 0 || int(v.kind) > int(RayNode::Kind::Refraction)) r.fail();
-}
-void put(Writer& w, const PixelTree& v) {
-    put(w, v.x);
-    put(w, v.y);
-    put(w, v.colour);
-    put(w, v.root);
-}
-void get(Reader& r, PixelTree& v) {
-    get(r, v.x);
-    get(r, v.y);
-    get(r, v.colour);
-    get(r, v.root);
 }
 
 void put(Writer& w, const TextureView& v) {
@@ -173,38 +99,8 @@ void get(Reader& r, OwnedLightVisibility& v) {
     v.view.per_light = v.colours;
 }
 
-}  // namespace rt::remote
-
-namespace rt::remote {
-
-constexpr std::size_t kSceneSize = 768;  // sizeof(Scene) when its codec was written (float)
-
-// Every field but the OpenImageIO texture system, which the worker makes anew from the texture
-// table (worker_serve.cpp). A field added to Scene must be added here: the size check says so.
-static_assert(
-    sizeof(Real) != sizeof(float) || sizeof(Scene) == kSceneSize,
-    "Scene changed: add its new field to put/get(Scene) in framework/remote/wire_types.cpp");
-
-// clang-format off
-#define RT_SCENE_FIELDS(F) \
-    F(source) F(camera) F(image) F(mode) F(background) F(ambient_light) F(max_depth) F(shadows) \
-    F(fresnel) F(accelerator) F(texture_lookup) F(spheres) F(planes) F(boxes) F(vertices) \
-    F(normals) F(uvs) F(triangles) F(materials) F(material_names) F(lights) F(area_lights) \
-    F(moving_spheres) F(sampling) F(fog) F(textures) F(texture_names) F(texture_images) \
-    F(texels) F(environment) F(features) F(revision) F(bvh)
-// clang-format on
-
-void put(Writer& w, const Scene& s) {
-#define RT_PUT_FIELD(f) put(w, s.f);
-    RT_SCENE_FIELDS(RT_PUT_FIELD)
-#undef RT_PUT_FIELD
-}
-void get(Reader& r, Scene& s) {
-#define RT_GET_FIELD(f) get(r, s.f);
-    RT_SCENE_FIELDS(RT_GET_FIELD)
-#undef RT_GET_FIELD
-    normalize(s.shadows);
-    normalize(s.fresnel);
-}
+// sizeof(Scene) (with float) when its field list was written.
+static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 768,
+              "Scene changed: add its new field to RT_WIRE_FIELDS(Scene) in wire_types.h");
 
 }  // namespace rt::remote

@@ -2,6 +2,9 @@
 // containers, pointers or bools that a test reads, and the scene, which crosses by handle.
 #pragma once
 
+#include <concepts>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "image/image.h"
@@ -38,20 +41,54 @@ void put(Writer& w, const SecondaryRays& v);
 void get(Reader& r, SecondaryRays& v);
 void put(Writer& w, const FogEvent& v);
 void get(Reader& r, FogEvent& v);
-void put(Writer& w, const Image& v);
-void get(Reader& r, Image& v);
-void put(Writer& w, const Bvh& v);
-void get(Reader& r, Bvh& v);
-void put(Writer& w, const AccelerationReport& v);
-void get(Reader& r, AccelerationReport& v);
+// Types that cross field by field name their fields once, for both directions.
+#define RT_WIRE_FIELDS(Type, ...)                       \
+    template <class T>                                  \
+    requires std::same_as<std::remove_const_t<T>, Type> \
+    auto wire_fields(T& v) {                            \
+        return std::tie(__VA_ARGS__);                   \
+    }
+RT_WIRE_FIELDS(Image, v.width, v.height, v.pixels)
+RT_WIRE_FIELDS(Bvh, v.nodes, v.primitives)
+RT_WIRE_FIELDS(AccelerationReport, v.requested, v.built, v.problem, v.build_ms, v.primitives,
+               v.nodes, v.depth)
+RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v.hit_record,
+               v.surface, v.local, v.contribution, v.shadows, v.children)
+RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.colour, v.root)
+// Every field but the OpenImageIO texture system, which the worker makes anew from the texture
+// table (worker_serve.cpp). wire_types.cpp checks the size: a new field must be added here.
+RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambient_light,
+               v.max_depth, v.shadows, v.fresnel, v.accelerator, v.texture_lookup, v.spheres,
+               v.planes, v.boxes, v.vertices, v.normals, v.uvs, v.triangles, v.materials,
+               v.material_names, v.lights, v.area_lights, v.moving_spheres, v.sampling, v.fog,
+               v.textures, v.texture_names, v.texture_images, v.texels, v.environment, v.features,
+               v.revision, v.bvh)
+#undef RT_WIRE_FIELDS
+
+template <class T>
+concept Fielded = requires(T& v) {
+    wire_fields(v);
+};
+
+// What a decoded value must satisfy besides its fields' own checks (none by default).
+template <class T>
+void check_decoded(Reader&, T&) {}
+void check_decoded(Reader& r, Image& v);
+void check_decoded(Reader& r, RayNode& v);
+
+template <Fielded T>
+void put(Writer& w, const T& v) {
+    std::apply([&](const auto&... field) { (put(w, field), ...); }, wire_fields(v));
+}
+template <Fielded T>
+void get(Reader& r, T& v) {
+    std::apply([&](auto&... field) { (get(r, field), ...); }, wire_fields(v));
+    check_decoded(r, v);
+}
+
+// A render's options without its cancel flag (nothing in a test cancels across processes).
 void put(Writer& w, const RenderOptions& v);
 void get(Reader& r, RenderOptions& v);
-void put(Writer& w, const RayNode& v);
-void get(Reader& r, RayNode& v);
-void put(Writer& w, const PixelTree& v);
-void get(Reader& r, PixelTree& v);
-void put(Writer& w, const Scene& v);  // in full (a Scene& parameter)
-void get(Reader& r, Scene& v);
 
 // A texture view crosses with its texels; the worker's copy points into its own storage.
 void put(Writer& w, const TextureView& v);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "remote/call_each.h"
 #include "render/sampled.h"
 #include "scene/scene_loader.h"
 #include "stage_api/stage10.h"
@@ -121,7 +122,9 @@ TEST_F(Fog, PixelThroughAFogSlabDimsTheBackground) {
                                     "fog_slab.json", ".");
     ASSERT_TRUE(scene.features.fog);
     std::vector<double> values;
-    for (int s = 0; s < 20000; ++s) values.push_back(sample_pixel(scene, 0, 0, s).r);
+    for (const Color& c : testing::call_for<&sample_pixel>(
+             20000, [&](int s) { return std::tuple(std::cref(scene), 0, 0, s, nullptr); }))
+        values.push_back(c.r);
     // The pixel's rays are within 0.25 degrees of the axis: their path differs by < 1e-5.
     stats::expect_mean(values, std::exp(-0.4 * 2),
                        std::string("the pixel behind a slab of fog 2 thick; ") + kReadFog);
@@ -153,7 +156,9 @@ TEST_F(Fog, LightScatteredByASlabMatchesTheIntegral) {
     for (int k = 1; k < kSteps; ++k) integral += (k % 2 ? 4 : 2) * integrand(1 + 2.0 * k / kSteps);
     integral *= 2.0 / kSteps / 3;
     std::vector<double> values;
-    for (int s = 0; s < 40000; ++s) values.push_back(sample_pixel(scene, 0, 0, s).g);
+    for (const Color& c : testing::call_for<&sample_pixel>(
+             40000, [&](int s) { return std::tuple(std::cref(scene), 0, 0, s, nullptr); }))
+        values.push_back(c.g);
     stats::expect_mean(
         values, integral,
         std::string("the light a slab of fog scatters from a point light; ") + kReadFog);

@@ -3,9 +3,12 @@
 // against closed forms (t-tests), soft shadows, glossy directions, ambient occlusion and the
 // indirect bounce against analytic integrals. statistics.h states the false-failure rates.
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <tuple>
 
 #include "geometry/onb.h"
+#include "remote/call_each.h"
 #include "stage_api/stage10.h"
 #include "statistics.h"
 #include "testing/stage_test.h"
@@ -53,8 +56,10 @@ TEST_F(AreaSampling, RectangleSamplesFollowTheirPdf) {
     constexpr int kBins = 8, kSub = 6;
     std::vector<double> observed(kBins * kBins, 0), expected(kBins * kBins, 0);
     stats::Uniform random(11);
+    const auto samples = testing::call_for<&sample_rectangle>(
+        kSamples, [&](int) { return std::tuple(light, from, random.next2()); });
     for (int i = 0; i < kSamples; ++i) {
-        const AreaSample s = sample_rectangle(light, from, random.next2());
+        const AreaSample& s = samples[std::size_t(i)];
         const Vec3 q = s.point - light.corner;
         const double u = glm::dot(q, light.edge_u) / 4, v = glm::dot(q, light.edge_v);
         ASSERT_TRUE(u > -1e-5 && u < 1 + 1e-5 && v > -1e-5 && v < 1 + 1e-5 && std::abs(q.y) < 1e-5)
@@ -101,8 +106,10 @@ TEST_F(AreaSampling, SphereSamplesFollowTheirPdf) {
         return std::size_t(i * kPhi + j);
     };
     stats::Uniform random(12);
+    const auto samples = testing::call_for<&sample_sphere>(
+        kSamples, [&](int) { return std::tuple(light, from, random.next2()); });
     for (int i = 0; i < kSamples; ++i) {
-        const AreaSample s = sample_sphere(light, from, random.next2());
+        const AreaSample& s = samples[std::size_t(i)];
         ASSERT_NEAR(glm::length(s.point - light.center), light.radius, 1e-4)
             << "a sample off the sphere";
         ASSERT_GE(glm::dot(s.normal, from - s.point), -1e-4) << "a sample on the hidden side";
@@ -139,10 +146,11 @@ std::vector<double> estimates(const Scene& scene, const SurfacePoint& at, const 
     Material white;
     white.diffuse = Color(1), white.specular = Color(0);
     stats::Uniform random(seed);
+    const auto colours = testing::call_for<&area_light_estimate>(kSamples, [&](int) {
+        return std::tuple(std::cref(scene), white, at, at.normal, at.normal, light, random.next2());
+    });
     std::vector<double> values;
-    for (int i = 0; i < kSamples; ++i)
-        values.push_back(
-            area_light_estimate(scene, white, at, at.normal, at.normal, light, random.next2()).r);
+    for (const Color& c : colours) values.push_back(c.r);
     return values;
 }
 
@@ -213,8 +221,9 @@ TEST_F(Glossy, DirectionsSpreadAsAFuzzSphere) {
             bins[std::size_t(i * kPhi + std::clamp(int(phi / (2 * kPi) * kPhi), 0, kPhi - 1))] += 1;
         };
         stats::Uniform random(19), other(20);
-        for (int i = 0; i < kSamples; ++i) {
-            const Vec3 d = glossy_direction(mirror, fuzz, random.next2());
+        const auto directions = testing::call_for<&glossy_direction>(
+            kSamples, [&](int) { return std::tuple(mirror, fuzz, random.next2()); });
+        for (const Vec3 d : directions) {
             ASSERT_NEAR(glm::length(d), 1, 1e-4) << "not a unit direction";
             add(student, d);
             const Vec2 u = other.next2();  // a reference uniform sphere point
@@ -241,9 +250,10 @@ TEST_F(Indirect, AmbientOcclusionUnderACeiling) {
     scene.update_features();
     const SurfacePoint at = point_at(Vec3(0, 0, 0), Vec3(0, 1, 0));
     stats::Uniform random(21);
-    std::vector<double> values;
-    for (int i = 0; i < kSamples; ++i)
-        values.push_back(ambient_occlusion(scene, at, at.normal, 2, random.next2()));
+    const std::vector<Real> occlusion = testing::call_for<&ambient_occlusion>(kSamples, [&](int) {
+        return std::tuple(std::cref(scene), at, at.normal, Real(2), random.next2());
+    });
+    const std::vector<double> values(occlusion.begin(), occlusion.end());
     stats::expect_mean(values, 0.25, "ambient occlusion under a ceiling");
     Scene empty;
     empty.update_features();

@@ -4,7 +4,10 @@
 // mapping.
 #include <cmath>
 #include <numbers>
+#include <tuple>
+#include <vector>
 
+#include "remote/call_each.h"
 #include "stage_api/stage10.h"
 #include "statistics.h"
 #include "testing/stage_test.h"
@@ -39,8 +42,9 @@ struct PolarBins {
 TEST_F(Warps, UniformDiskIsUniformInArea) {
     stats::Uniform random(1);
     PolarBins bins;
-    for (int i = 0; i < kSamples; ++i) {
-        const Vec2 p = sample_uniform_disk(random.next2());
+    const auto samples = testing::call_for<&sample_uniform_disk>(
+        kSamples, [&](int) { return std::tuple(random.next2()); });
+    for (const Vec2 p : samples) {
         const double r2 = double(p.x) * p.x + double(p.y) * p.y;
         ASSERT_LE(r2, 1 + 1e-5) << "a disk sample outside the unit disk";
         bins.add(r2, p.x, p.y);
@@ -51,8 +55,10 @@ TEST_F(Warps, UniformDiskIsUniformInArea) {
 TEST_F(Warps, CosineHemisphereFollowsCosOverPi) {
     stats::Uniform random(2);
     PolarBins bins;
+    const auto samples = testing::call_for<&sample_cosine_hemisphere>(
+        kSamples, [&](int) { return std::tuple(random.next2()); });
     for (int i = 0; i < kSamples; ++i) {
-        const Vec3 d = sample_cosine_hemisphere(random.next2());
+        const Vec3 d = samples[std::size_t(i)];
         ASSERT_NEAR(glm::length(d), 1, 1e-4) << "not a unit direction";
         ASSERT_GE(d.z, 0) << "below the hemisphere";
         // Under cos / pi the projection onto the disk is uniform: 1 - z^2 = r^2 is uniform.
@@ -68,8 +74,9 @@ TEST_F(Warps, CosineHemisphereFollowsCosOverPi) {
 TEST_F(Warps, UniformSphereIsUniform) {
     stats::Uniform random(3);
     PolarBins bins;
-    for (int i = 0; i < kSamples; ++i) {
-        const Vec3 d = sample_uniform_sphere(random.next2());
+    const auto samples = testing::call_for<&sample_uniform_sphere>(
+        kSamples, [&](int) { return std::tuple(random.next2()); });
+    for (const Vec3 d : samples) {
         ASSERT_NEAR(glm::length(d), 1, 1e-4) << "not a unit direction";
         bins.add((1 - double(d.z)) / 2, d.x, d.y);  // Archimedes: z is uniform
     }
@@ -77,12 +84,14 @@ TEST_F(Warps, UniformSphereIsUniform) {
 }
 
 // Offsets binned on a grid over [-extent, extent)^2 against the per-axis density's CDF.
-void check_filter(Vec2 (*filter)(Vec2), double extent, double (*cdf)(double), const char* what) {
+template <auto filter>
+void check_filter(double extent, double (*cdf)(double), const char* what) {
     constexpr int kBins = 10;
     std::vector<double> observed(kBins * kBins, 0), expected(kBins * kBins, 0);
     stats::Uniform random(4);
-    for (int i = 0; i < kSamples; ++i) {
-        const Vec2 o = filter(random.next2());
+    const auto offsets =
+        testing::call_for<filter>(kSamples, [&](int) { return std::tuple(random.next2()); });
+    for (const Vec2 o : offsets) {
         ASSERT_TRUE(std::abs(o.x) <= extent && std::abs(o.y) <= extent)
             << what << " gave an offset outside its support: (" << o.x << ", " << o.y << ")";
         const int bx = std::clamp(int((o.x + extent) / (2 * extent) * kBins), 0, kBins - 1);
@@ -101,14 +110,13 @@ void check_filter(Vec2 (*filter)(Vec2), double extent, double (*cdf)(double), co
 }
 
 TEST_F(Warps, BoxFilterIsUniformOverThePixel) {
-    check_filter(
-        box_filter_offset, 0.5, [](double x) { return x + 0.5; }, "box_filter_offset");
+    check_filter<&box_filter_offset>(
+        0.5, [](double x) { return x + 0.5; }, "box_filter_offset");
 }
 
 TEST_F(Warps, TentFilterFollowsOneMinusAbsX) {
-    check_filter(
-        tent_filter_offset, 1,
-        [](double x) { return x < 0 ? (1 + x) * (1 + x) / 2 : 1 - (1 - x) * (1 - x) / 2; },
+    check_filter<&tent_filter_offset>(
+        1, [](double x) { return x < 0 ? (1 + x) * (1 + x) / 2 : 1 - (1 - x) * (1 - x) / 2; },
         "tent_filter_offset");
 }
 
@@ -136,21 +144,23 @@ TEST_F(PixelSamples, JitterIsUniformWithinEachCell) {
         std::vector<double> observed(kSub * kSub, 0);
         stats::Uniform random(6);
         const int pixels = kSamples / count;
-        for (int p = 0; p < pixels; ++p)
-            for (int i = 0; i < count; ++i) {
-                const Vec2 s = stratified_sample(i, count, random.next2());
-                const int x = std::clamp(int(s.x * kSub), 0, kSub - 1);
-                const int y = std::clamp(int(s.y * kSub), 0, kSub - 1);
-                observed[std::size_t(y * kSub + x)] += 1;
-            }
+        const auto samples = testing::call_for<&stratified_sample>(
+            pixels * count, [&](int k) { return std::tuple(k % count, count, random.next2()); });
+        for (const Vec2 s : samples) {
+            const int x = std::clamp(int(s.x * kSub), 0, kSub - 1);
+            const int y = std::clamp(int(s.y * kSub), 0, kSub - 1);
+            observed[std::size_t(y * kSub + x)] += 1;
+        }
         stats::expect_chi_square(
             observed, std::vector<double>(observed.size(), double(pixels) * count / (kSub * kSub)),
             "stratified_sample with " + std::to_string(count) + " samples");
         // Within one cell of a 2 x 2 grid (count 4, sample 0): uniform in [0, 0.5)^2.
         if (count != 4) continue;
         std::vector<double> cell(kSub * kSub, 0);
-        for (int p = 0; p < kSamples; ++p) {
-            const Vec2 s = stratified_sample(0, 4, random.next2()) * Real(2);
+        const auto firsts = testing::call_for<&stratified_sample>(
+            kSamples, [&](int) { return std::tuple(0, 4, random.next2()); });
+        for (const Vec2 first : firsts) {
+            const Vec2 s = first * Real(2);
             ASSERT_TRUE(s.x < 1 && s.y < 1) << "sample 0 of 4 left its cell";
             cell[std::size_t(std::min(kSub - 1, int(s.y * kSub)) * kSub +
                              std::min(kSub - 1, int(s.x * kSub)))] += 1;
@@ -172,11 +182,17 @@ TEST_F(Lens, ThinLensRaysMeetInThePlaneInFocus) {
     const Real focus = 4, aperture = 0.5f;
     stats::Uniform random(7);
     PolarBins bins;
+    std::vector<std::tuple<Camera, Ray, Real, Real, Vec2>> calls;
     for (int i = 0; i < kSamples; ++i) {
         const Vec3 d = glm::normalize(Vec3(random.next() - 0.5f, random.next() - 0.5f, -1));
-        const Vec3 direction = camera.u * d.x + camera.v * d.y - camera.w * d.z;
-        const Ray pinhole{camera.eye, direction};
-        const Ray ray = thin_lens_ray(camera, pinhole, aperture, focus, random.next2());
+        const Ray pinhole{camera.eye, camera.u * d.x + camera.v * d.y - camera.w * d.z};
+        calls.emplace_back(camera, pinhole, aperture, focus, random.next2());
+    }
+    const auto rays = testing::call_each<&thin_lens_ray>(calls);
+    for (int i = 0; i < kSamples; ++i) {
+        const Ray& pinhole = std::get<1>(calls[std::size_t(i)]);
+        const Vec3 direction = pinhole.direction;
+        const Ray& ray = rays[std::size_t(i)];
         ASSERT_NEAR(glm::length(ray.direction), 1, 1e-4) << "not a unit direction";
         // The lens point: in the lens plane, within the aperture.
         const Vec3 offset = ray.origin - camera.eye;
@@ -209,8 +225,9 @@ TEST_F(Lens, ShutterTimesAreUniformAndSpheresMoveLinearly) {
     constexpr int kBins = 20;
     std::vector<double> observed(kBins, 0);
     stats::Uniform random(8);
-    for (int i = 0; i < kSamples; ++i) {
-        const Real t = shutter_time(2, 3, random.next());
+    const auto times = testing::call_for<&shutter_time>(
+        kSamples, [&](int) { return std::tuple(Real(2), Real(3), random.next()); });
+    for (const Real t : times) {
         ASSERT_TRUE(t >= 2 && t <= 3) << "a time outside the shutter interval: " << t;
         observed[std::size_t(std::clamp(int((t - 2) * kBins), 0, kBins - 1))] += 1;
     }
