@@ -47,6 +47,12 @@ int start_worker(const char* worker) {
     return pid > 0 ? ends[0] : -1;
 }
 
+// The function a call-list key names: "intersect_sphere" of "intersect_sphere(const Ray& ...)".
+std::string function_name(const char* key) {
+    const std::string k(key);
+    return k.substr(0, k.find('('));
+}
+
 class Client {
   public:
     Client() {
@@ -74,7 +80,7 @@ class Client {
             get(r, status);
             get(r, stubs);
             if (!r.ok() || status > kCallback)
-                throw RemoteError(std::string("malformed reply to ") + what);
+                throw RemoteError("malformed reply to " + function_name(what));
             if (stubs > stubs_seen_) count_stub_calls(stubs - stubs_seen_);
             stubs_seen_ = std::max(stubs_seen_, stubs);
             std::string rest = reply.substr(1 + sizeof stubs);
@@ -89,7 +95,8 @@ class Client {
   private:
     [[noreturn]] void lost(const char* what) {
         dead_ = true;
-        throw RemoteError(std::string("the process running your code ended during ") + what +
+        throw RemoteError("the process running your code ended during a call of " +
+                          function_name(what) +
                           " (a crash, exit() or abort: see its output below)");
     }
 
@@ -100,11 +107,11 @@ class Client {
         std::uint32_t index = 0;
         get(r, index);
         if (!r.ok() || index >= callbacks.size())
-            throw RemoteError(std::string("malformed callback during ") + what);
+            throw RemoteError("malformed callback during " + function_name(what));
         Writer out;
         callbacks[index](r, out);
         if (!r.ok() || !r.at_end())
-            throw RemoteError(std::string("malformed callback during ") + what);
+            throw RemoteError("malformed callback during " + function_name(what));
         if (!send_message(fd_, out.data())) lost(what);
     }
 
