@@ -79,6 +79,20 @@ void forge() {
   std::printf("FORGER ran: %zu nonce guesses\n", nonces.size()); std::fflush(stdout);
   _exit(0);
 }
+// Overwrites the writable data of its own program (where a test framework in the process would
+// keep its results) with 1s, so every flag reads true and every counter is odd, then forges.
+void corrupt_and_forge() {
+  std::printf("CORRUPTER ran\n"); std::fflush(stdout);
+  std::ifstream maps("/proc/self/maps"); std::string line, exe;
+  std::getline(std::ifstream("/proc/self/cmdline"), exe, '\0');
+  while (std::getline(maps, line)) {
+    unsigned long lo = 0, hi = 0; char perms[8] = {};
+    if (std::sscanf(line.c_str(), "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[1] != 'w') continue;
+    if (line.find(exe.substr(exe.rfind('/') + 1)) == std::string::npos) continue;
+    std::memset(reinterpret_cast<void*>(lo), 1, hi - lo);
+  }
+  forge();
+}
 }
 CPP
 }
@@ -162,7 +176,7 @@ CPP
 }
 
 case $case in
-  forge_destructor | forge_atexit | forge_signal | forge_midtest | forge_thread)
+  forge_destructor | forge_atexit | forge_signal | forge_midtest | forge_thread | forge_corrupt)
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     forger | append1
     case $case in
@@ -179,6 +193,11 @@ case $case in
         sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|forge_now(); RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp"
         sed -i '0,/^namespace rt {/s//void forge_now();\nnamespace rt {/' "$sub/$s1/camera_rays.cpp"
         echo 'void forge_now() { forge(); }' | append1 ;;
+      # The first call corrupts the process's state (its program's writable data), then forges.
+      forge_corrupt)
+        sed -i 's|RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|corrupt_now(); RT_NOT_IMPLEMENTED("stages/01-camera-rays/README.md#perspective-rays");|' "$sub/$s1/camera_rays.cpp"
+        sed -i '0,/^namespace rt {/s//void corrupt_now();\nnamespace rt {/' "$sub/$s1/camera_rays.cpp"
+        echo 'void corrupt_now() { corrupt_and_forge(); }' | append1 ;;
       # A second thread forges while the test runs.
       forge_thread) echo '#include <thread>
 namespace { struct Start { Start() { std::thread([] { usleep(20000); forge(); }).detach(); } } start; }' | append1
@@ -186,7 +205,9 @@ namespace { struct Start { Start() { std::thread([] { usleep(20000); forge(); })
     esac
     # The forger runs in the worker, which holds no verdict channel, no nonce and no GoogleTest:
     # every test scores what the stubs score.
-    checks=(--score-max 0 --contains "FORGER ran") ;;
+    checks=(--score-max 0 --contains "FORGER ran")
+    # What corruption leaves of the forger itself may not run to its end: the report says it began.
+    [ $case != forge_corrupt ] || checks=(--score-max 0 --contains "CORRUPTER ran") ;;
   hand_in_reference)  # the shipped references written as renders: the shipped view passes...
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     hand_in perspective_directions orthographic_directions | append1
