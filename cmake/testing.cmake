@@ -66,8 +66,10 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
     set_target_properties(${target}_judge PROPERTIES EXCLUDE_FROM_ALL ON)
     return()
   endif()
-  # Every test of the binary through the split, with the reference solution in rt-worker.
-  add_test(NAME Remote.${target} COMMAND ${target}_judge --gtest_brief=1)
+  # Every graded test of the binary through the split, with the reference solution in rt-worker
+  # (the image tests are not graded as unit tests: rt-grade renders the scenes itself).
+  add_test(NAME Remote.${target}
+    COMMAND ${target}_judge --gtest_brief=1 --gtest_filter=-Graded/Image.*)
   set_tests_properties(Remote.${target} PROPERTIES LABELS "remote;stage${number}"
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     ENVIRONMENT RT_REMOTE_WORKER=$<TARGET_FILE:rt-worker>)
