@@ -33,10 +33,12 @@ function(rt_stage_tests number target)
   cmake_parse_arguments(PARSE_ARGV 2 arg "SCENE_IMAGES" "" "SOURCES;LABELS;LIBRARIES")
   # The tests compile once, into objects that two programs link: <target>, the tests with the
   # student code (a student's own tree), and <target>_judge, the same tests with every call of
-  # student code sent to rt-worker (the grading judge: framework/remote/remote_call.h). A binary
-  # that renders on the GPU (rt_gpu_render) has no judge: its student code is GLSL.
+  # student code sent to rt-worker (the grading judge: framework/remote/remote_call.h). The GPU
+  # renderer runs the student's GLSL, so only <target> links it; a judge sends its calls too.
+  set(object_libraries ${arg_LIBRARIES})
+  list(REMOVE_ITEM object_libraries rt_gpu_render)
   add_library(${target}_objects OBJECT ${arg_SOURCES})
-  target_link_libraries(${target}_objects PUBLIC rt_test_support ${arg_LIBRARIES})
+  target_link_libraries(${target}_objects PUBLIC rt_test_support ${object_libraries})
   if(arg_SCENE_IMAGES)
     get_filename_component(stage_folder ${CMAKE_CURRENT_SOURCE_DIR} NAME)
     set(stage_source ${CMAKE_CURRENT_BINARY_DIR}/${target}_image_stage.cpp)
@@ -52,11 +54,9 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   endif()
   rt_off_hot_path(${target}_objects)
   add_executable(${target} ${image_objects})
-  target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render GTest::gtest_main)
+  target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render
+    ${arg_LIBRARIES} GTest::gtest_main)
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
-  if("rt_gpu_render" IN_LIST arg_LIBRARIES)
-    return()
-  endif()
   # The judge is for rt-grade, which builds it by name: a student's build leaves it out.
   add_executable(${target}_judge ${image_objects})
   target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
@@ -73,4 +73,9 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   set_tests_properties(Remote.${target} PROPERTIES LABELS "remote;stage${number}"
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     ENVIRONMENT RT_REMOTE_WORKER=$<TARGET_FILE:rt-worker>)
+  add_test(NAME Remote.${target}.HoldsNoStudentCode
+    COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_judge_links.sh $<TARGET_FILE:${target}_judge>
+            $<TARGET_FILE:rt_judge> $<TARGET_FILE:rt_stages> $<TARGET_FILE:rt_render>
+            $<TARGET_FILE:rt_gpu_render>)
+  set_tests_properties(Remote.${target}.HoldsNoStudentCode PROPERTIES LABELS "remote;framework")
 endfunction()

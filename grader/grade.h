@@ -53,13 +53,9 @@ struct StageSpec {
 // A student file compiled into the stage objects (C++), as opposed to GLSL read at run time.
 bool is_compiled_student_file(const std::string& key);
 
-// The unit tests of a C++ stage run as a judge and a worker (framework/remote/remote_call.h):
-// the workspace builds <binary>_judge once (it holds no student code) and links rt-worker per
-// submission. A GPU stage's binaries are linked per submission whole (their student code is
-// GLSL, docs/grading.md).
-inline bool has_judge(const StageSpec& s) {
-    return !s.gpu;
-}
+// Every unit test runs as a judge and a worker (framework/remote/remote_call.h): the workspace
+// builds <binary>_judge once (it holds no student code, C++ or GLSL) and links rt-worker per
+// submission.
 inline const char* kWorker = "rt-worker";
 inline std::string judge_target(const std::string& binary) {
     return binary + "_judge";

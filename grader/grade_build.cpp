@@ -117,12 +117,7 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
                 else
                     objects.push_back(stub_object(g.w, key));
             }
-        std::vector<std::string> targets{"rt"};
-        if (has_judge(s)) targets.push_back(kWorker);
-        for (const auto& group : s.groups)
-            if (!has_judge(s) &&
-                std::find(targets.begin(), targets.end(), group.binary) == targets.end())
-                targets.push_back(group.binary);
+        std::vector<std::string> targets{"rt", kWorker};
         const fs::path bin = g.scratch / ("stage-" + two_digits(s.number)) / "bin";
         std::string link_log;
         if (!link_stage(g.w, g.plan, objects, targets, bin, link_log)) {
@@ -139,13 +134,12 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
         fs::permissions(bin.parent_path(), exec_only);
         fs::permissions(bin, exec_only);
         // The judges: the workspace's, built once (they hold no student code).
-        if (has_judge(s))
-            for (const auto& group : s.groups) {
-                if (!fs::exists(g.w.priv / "judges" / judge_target(group.binary))) continue;
-                fs::copy_file(g.w.priv / "judges" / judge_target(group.binary), bin / group.binary,
-                              fs::copy_options::overwrite_existing);
-                targets.push_back(group.binary);
-            }
+        for (const auto& group : s.groups) {
+            if (!fs::exists(g.w.priv / "judges" / judge_target(group.binary))) continue;
+            fs::copy_file(g.w.priv / "judges" / judge_target(group.binary), bin / group.binary,
+                          fs::copy_options::overwrite_existing);
+            targets.push_back(group.binary);
+        }
         for (const auto& t : targets) fs::permissions(bin / t, exec_only);
         fs::remove(bin / "librt_stages.a");
         g.stage_bins[s.number] = bin;

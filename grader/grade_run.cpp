@@ -142,12 +142,10 @@ class Runner {
         VerdictChannel channel;
         r.env = {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
                  "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
-        add_gpu(task, r);
         r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.child_end, kResultFd}};
         std::string worker_output;
-        const RunResult res = !channel.ok              ? RunResult{}
-                              : has_judge(*task.stage) ? run_judged(bin, dir, r, worker_output)
-                                                       : run_sandboxed(r);
+        const RunResult res =
+            channel.ok ? run_judged(bin, task, dir, r, worker_output) : RunResult{};
         g_.survivors += res.survivors;
         std::string why = channel.ok ? "" : "the grader could not open the test channel";
         const std::string records = channel.records();
@@ -169,12 +167,12 @@ class Runner {
         out.score = passed ? out.max_score : 0;
     }
 
-    // A unit test of a C++ stage: the judge (`judge`, the tests and their assertions, no student
-    // code) in one jail, the worker (framework and student objects) in another with a uid of its
-    // own, joined by a socket pair and nothing else (framework/remote/remote_call.h). Each end is
-    // closed here as soon as its process is gone, so the other sees the end of the stream.
-    RunResult run_judged(const fs::path& bin, const fs::path& dir, RunSpec& judge,
-                         std::string& worker_output) {
+    // A unit test: the judge (`judge`, the tests and their assertions, no student code) in one
+    // jail, the worker (framework, student objects, and a GPU stage's GLSL) in another with a uid
+    // of its own, joined by a socket pair and nothing else (framework/remote/remote_call.h). Each
+    // end is closed here as soon as its process is gone, so the other sees the end of the stream.
+    RunResult run_judged(const fs::path& bin, const GradeTask& task, const fs::path& dir,
+                         RunSpec& judge, std::string& worker_output) {
         int ends[2];
         if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return RunResult{};
         RunSpec worker = base_spec(bin / kWorker, child_dir(dir / "worker-out"),
@@ -183,6 +181,7 @@ class Runner {
         worker.env = {"RT_REMOTE_FD=" + std::to_string(kRemoteFd)};
         worker.pass_fds = {{ends[1], kRemoteFd}};
         worker.limits = judge.limits;
+        add_gpu(task, worker);
         RunResult worker_result;
         std::thread serving([&] {
             worker_result = run_sandboxed(worker);

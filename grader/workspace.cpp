@@ -123,13 +123,11 @@ int run_with_progress(const std::string& command, std::string& output, std::ostr
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-// What the workspace builds: the renderer, the worker, each graded binary's judge (or, for a
-// GPU stage, the binary itself).
+// What the workspace builds: the renderer, the worker and each graded binary's judge.
 std::vector<std::string> build_targets(const std::vector<StageSpec>& specs) {
     std::set<std::string> targets{"rt", kWorker};
     for (const auto& s : specs)
-        for (const auto& g : s.groups)
-            targets.insert(has_judge(s) ? judge_target(g.binary) : g.binary);
+        for (const auto& g : s.groups) targets.insert(judge_target(g.binary));
     return {targets.begin(), targets.end()};
 }
 

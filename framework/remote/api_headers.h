@@ -1,14 +1,17 @@
-// Every declaration the call lists (stage_api/calls.h) name: the stage APIs and the render/
-// functions that call them.
+// Every declaration the call lists (stage_api/calls.h) name: the stage APIs, the render/
+// functions that call them, and stage 09's GPU functions.
 #pragma once
 
 #include "render/accelerate.h"
 #include "render/background.h"
 #include "render/camera_ray.h"
+#include "render/gpu_cases.h"
+#include "render/gpu_render.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
 #include "render/sampled.h"
 #include "render/shade.h"
+#include "render/shadertoy_run.h"
 #include "render/texturing.h"
 #include "stage_api/calls.h"
 #include "stage_api/stage01.h"

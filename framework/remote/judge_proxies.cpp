@@ -1,6 +1,7 @@
-// The judge's definitions of every function in the call lists (stage_api/calls.h): each sends
-// its call to the worker (remote_call.h). A judge links these instead of rt_stages and
-// rt_render, so no student code, and nothing that calls it, is in its process.
+// The judge's definitions of every function in the call lists (stage_api/calls.h), stage 09's
+// GLSL-running ones included: each sends its call to the worker (remote_call.h). A judge links
+// these instead of rt_stages, rt_render and rt_gpu_render, so no student code, and nothing that
+// calls it, is in its process.
 #include <map>
 
 #include "remote/api_headers.h"
@@ -15,6 +16,7 @@ namespace rt {
                                                           RT_REMOTE_ARGS args);   \
     }
 RT_ALL_CALLS(RT_DEFINE_PROXY)
+RT_GPU_CALLS(RT_DEFINE_PROXY)
 #undef RT_DEFINE_PROXY
 
 }  // namespace rt

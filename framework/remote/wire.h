@@ -94,8 +94,12 @@ inline void normalize(bool& b) {
 
 // The codec of a type: put/get. Trivially copyable types by default; the others (and the
 // trivially copyable ones that hold pointers or bools) overload put/get in wire_types.h.
+// Set for each type that names its fields (RT_WIRE_FIELDS, wire_types.h): it crosses field by
+// field even when trivially copyable, so its bools are checked on the way in.
 template <class T>
-concept PlainBytes = std::is_trivially_copyable_v<T> && !std::is_pointer_v<T>;
+inline constexpr bool kFieldByField = false;
+template <class T>
+concept PlainBytes = std::is_trivially_copyable_v<T> && !std::is_pointer_v<T> && !kFieldByField<T>;
 
 template <PlainBytes T>
 void put(Writer& w, const T& value) {

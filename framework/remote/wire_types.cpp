@@ -2,6 +2,8 @@
 
 #include <xxhash.h>
 
+#include <stdexcept>
+
 namespace rt::remote {
 
 Writer::Writer(HashOnly) : hash_(XXH3_createState()) {
@@ -56,6 +58,13 @@ void check_decoded(Reader& r, Image& v) {
     }
 }
 
+void check_decoded(Reader& r, Image8& v) {
+    if (v.width < 0 || v.height < 0 || v.data.size() != std::size_t(v.width) * v.height * 3) {
+        r.fail();
+        v = Image8();
+    }
+}
+
 void check_decoded(Reader& r, RayNode& v) {
     if (int(v.kind) < 0 || int(v.kind) > int(RayNode::Kind::Refraction)) r.fail();
 }
@@ -71,6 +80,27 @@ void get(Reader& r, RenderOptions& v) {
     get(r, v.show_progress);
     get(r, v.tile_size);
     v.cancel = nullptr;
+}
+
+void put(Writer& w, const GpuRenderOptions& v) {
+    if (v.log || v.timings || v.cancel)
+        throw std::invalid_argument("a GPU render's log, timings or cancel flag cannot cross");
+    put(w, v.context);
+    put(w, v.student_dir.string());
+    put(w, v.uber);
+    put(w, v.sampling_dir.string());
+    put(w, v.samples_per_dispatch);
+}
+void get(Reader& r, GpuRenderOptions& v) {
+    std::string student_dir, sampling_dir;
+    get(r, v.context);
+    get(r, student_dir);
+    get(r, v.uber);
+    get(r, sampling_dir);
+    get(r, v.samples_per_dispatch);
+    if (int(v.context) < int(GlKind::Egl) || int(v.context) > int(GlKind::Window)) r.fail();
+    v.student_dir = student_dir;
+    v.sampling_dir = sampling_dir;
 }
 
 void put(Writer& w, const TextureView& v) {

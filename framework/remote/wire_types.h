@@ -10,9 +10,12 @@
 #include "image/image.h"
 #include "remote/wire.h"
 #include "render/accelerate.h"
+#include "render/gpu_cases.h"
+#include "render/gpu_render.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
 #include "render/shade.h"
+#include "render/shadertoy_run.h"
 #include "scene/scene.h"
 #include "stage_api/stage03.h"
 #include "stage_api/stage05.h"
@@ -43,18 +46,23 @@ void put(Writer& w, const FogEvent& v);
 void get(Reader& r, FogEvent& v);
 // Types that cross field by field name their fields once, for both directions.
 #define RT_WIRE_FIELDS(Type, ...)                       \
+    template <>                                         \
+    inline constexpr bool kFieldByField<Type> = true;   \
     template <class T>                                  \
     requires std::same_as<std::remove_const_t<T>, Type> \
     auto wire_fields(T& v) {                            \
         return std::tie(__VA_ARGS__);                   \
     }
 RT_WIRE_FIELDS(Image, v.width, v.height, v.pixels)
+RT_WIRE_FIELDS(Image8, v.width, v.height, v.data)
 RT_WIRE_FIELDS(Bvh, v.nodes, v.primitives)
 RT_WIRE_FIELDS(AccelerationReport, v.requested, v.built, v.problem, v.build_ms, v.primitives,
                v.nodes, v.depth)
 RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v.hit_record,
                v.surface, v.local, v.contribution, v.shadows, v.children)
 RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.colour, v.root)
+RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face)
+RT_WIRE_FIELDS(ShadertoyRun, v.compile_errors, v.draw_error, v.image)
 // Every field but the OpenImageIO texture system, which the worker makes anew from the texture
 // table (worker_serve.cpp). wire_types.cpp checks the size: a new field must be added here.
 RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambient_light,
@@ -74,6 +82,7 @@ concept Fielded = requires(T& v) {
 template <class T>
 void check_decoded(Reader&, T&) {}
 void check_decoded(Reader& r, Image& v);
+void check_decoded(Reader& r, Image8& v);
 void check_decoded(Reader& r, RayNode& v);
 
 template <Fielded T>
@@ -89,6 +98,11 @@ void get(Reader& r, T& v) {
 // A render's options without its cancel flag (nothing in a test cancels across processes).
 void put(Writer& w, const RenderOptions& v);
 void get(Reader& r, RenderOptions& v);
+
+// A GPU render's options without its log, timings and cancel flag (a test sets none; the judge
+// refuses to send them).
+void put(Writer& w, const GpuRenderOptions& v);
+void get(Reader& r, GpuRenderOptions& v);
 
 // A texture view crosses with its texels; the worker's copy points into its own storage.
 void put(Writer& w, const TextureView& v);

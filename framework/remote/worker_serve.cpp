@@ -26,7 +26,7 @@ const std::unordered_map<std::string_view, Handler>& handlers() {
 #define RT_HANDLER(ret, name, params, args) \
     {RT_REMOTE_KEY(name, params),           \
      &Remote<ret params>::serve<static_cast<ret(*) params>(&::rt::name)>},
-        RT_ALL_CALLS(RT_HANDLER)
+        RT_ALL_CALLS(RT_HANDLER) RT_GPU_CALLS(RT_HANDLER)
 #undef RT_HANDLER
     };
     return table;

@@ -244,19 +244,6 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     return d;
 }
 
-fs::path gpu_student_dir() {
-    // The grader points its sandboxed tests and renders at the GLSL it grades.
-    const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
-    return graded && *graded ? fs::path(graded) : source_dir() / "stages/09-gpu";
-}
-
-fs::path gpu_sampling_dir() {
-    const char* graded = std::getenv("RT_GPU_STUDENT_DIR");
-    if (graded && *graded && fs::is_regular_file(fs::path(graded) / "sampling.glsl"))
-        return fs::path(graded);
-    return source_dir() / "stages/10-sampling";
-}
-
 AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber,
                                       const fs::path& sampling_dir) {

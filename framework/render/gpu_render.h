@@ -16,6 +16,7 @@
 
 #include "gl/gl_context.h"
 #include "gl/shader_source.h"
+#include "gpu/glsl_dirs.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -61,14 +62,6 @@ void check_gpu_supported(const Scene& scene, RenderMode mode);
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
 std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
-
-// Where the student's GLSL is read from: $RT_GPU_STUDENT_DIR when set (the grader's sandboxed
-// tests and renders: the submission being graded), else stages/09-gpu of the course tree.
-std::filesystem::path gpu_student_dir();
-
-// Where stage 10's GLSL (sampling.glsl, included only for scenes with Features::sampled()) is
-// read from: $RT_GPU_STUDENT_DIR when it holds sampling.glsl, else stages/10-sampling.
-std::filesystem::path gpu_sampling_dir();
 
 // A GPU renderer that keeps its context and compiled programs between renders (the viewer, the
 // benchmark): programs are cached by their #defines, i.e. by the scene's feature mask, so a

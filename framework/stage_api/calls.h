@@ -105,6 +105,14 @@
     X(Vec2, surface_texcoord, (const Scene& scene, const Hit& hit, const SurfacePoint& at), (scene, hit, at)) \
     X(Color, sample_pixel, (const Scene& scene, int x, int y, int sample, TraceObserver* observer), (scene, x, y, sample, observer))
 
+// Stage 09's: the framework functions that run the student's GLSL (render/gpu_render.h,
+// render/gpu_cases.h, render/shadertoy_run.h). A judge sends them to the worker too, so it links
+// no GPU renderer and runs no GLSL.
+#define RT_GPU_CALLS(X) \
+    X(Image, render_gpu, (const Scene& scene, RenderMode mode, const GpuRenderOptions& options), (scene, mode, options)) \
+    X(bool, run_gpu_cases, (const std::vector<gpu_cases::GpuRayCase>& cases, std::vector<gpu_cases::GpuAnswer>& answers, std::string& error), (cases, answers, error)) \
+    X(ShadertoyRun, run_shadertoy_export, (const Scene& scene, RenderMode mode), (scene, mode))
+
 #define RT_ALL_CALLS(X) \
     RT_STAGE01_CALLS(X) RT_STAGE02_CALLS(X) RT_STAGE03_CALLS(X) RT_STAGE04_CALLS(X) \
     RT_STAGE05_CALLS(X) RT_STAGE06_CALLS(X) RT_STAGE07_CALLS(X) RT_STAGE08_CALLS(X) \

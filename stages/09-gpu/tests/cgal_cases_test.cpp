@@ -1,5 +1,5 @@
 // Stage 09's GPU unit test on stage 02's hard cases: the student's intersect_sphere, _plane,
-// _triangle and _box (GLSL, run by tests/intersect_cases.comp) on the rays stage 02's CGAL test
+// _triangle and _box (GLSL, run by shaders/intersect_cases.comp) on the rays stage 02's CGAL test
 // checks (testing/exact_cases.h: grazing rays, slivers, rays through box edges and corners,
 // near-tangent rays, rays parallel to a plane, origins on a surface, extreme scales), judged
 // against the exact answers CGAL gives for exactly those float inputs, by stage 02's rule:
@@ -24,7 +24,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "gpu_cases.h"
+#include "render/gpu_cases.h"
 #include "testing/exact_cases.h"
 #include "testing/stage_test.h"
 
@@ -303,7 +303,7 @@ TEST_F(GpuExactCases, AnswersAsExactArithmeticAllows) {
     const CgalBatch batch = cgal_batch(families);
     std::vector<gc::GpuAnswer> answers;
     std::string error;
-    ASSERT_TRUE(gc::run_on_gpu(batch.cases, answers, error)) << error;
+    ASSERT_TRUE(run_gpu_cases(batch.cases, answers, error)) << error;
     for (const CgalBatch::Family& family : batch.families) {
         int wrong = 0, hits = 0;
         std::string first;

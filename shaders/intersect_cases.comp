@@ -1,5 +1,5 @@
 #version 430
-// Stage 09's GPU unit tests (intersect_test.cpp): the student's intersect_sphere, _plane,
+// Stage 09's GPU unit tests (framework/render/gpu_cases.h): the student's intersect_sphere, _plane,
 // _triangle and _box on a batch of rays, one invocation a case, each answer written back.
 layout(local_size_x = 64) in;
 

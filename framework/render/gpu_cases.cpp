@@ -1,30 +1,20 @@
 // The host side of stage 09's GPU unit tests (gpu_cases.h).
-#include "gpu_cases.h"
+#include "render/gpu_cases.h"
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <memory>
 
+#include "core/source_dir.h"
 #include "gl/compute_program.h"
 #include "gl/gl_context.h"
 #include "gpu/gpu_scene.h"
 #include "render/gpu_render.h"
-#include "testing/stage_test.h"
 
-namespace rt::gpu_cases {
+namespace rt {
 
 namespace {
-
-GpuRayCase ray_case(const Ray& ray, Kind kind, Interval range, glm::vec4 a, glm::vec4 b = {},
-                    glm::vec4 c = {}) {
-    return {g4(ray.origin, gpu::int_bits(kind)),
-            g4(ray.direction),
-            glm::vec4(float(range.min), float(range.max), 0, 0),
-            a,
-            b,
-            c};
-}
 
 GLuint case_buffer(const GlApi& gl, int binding, GLsizeiptr bytes, const void* data) {
     GLuint buffer = 0;
@@ -37,33 +27,15 @@ GLuint case_buffer(const GlApi& gl, int binding, GLsizeiptr bytes, const void* d
 
 }  // namespace
 
-glm::vec4 g4(const Vec3& v, float w) {
-    return glm::vec4(float(v.x), float(v.y), float(v.z), w);
-}
-
-GpuRayCase sphere_case(const Ray& ray, const Sphere& sphere, Interval range) {
-    return ray_case(ray, kSphere, range, g4(sphere.center, float(sphere.radius)));
-}
-GpuRayCase plane_case(const Ray& ray, const Plane& plane, Interval range) {
-    return ray_case(ray, kPlane, range, g4(plane.point), g4(plane.normal));
-}
-GpuRayCase triangle_case(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
-                         Interval range) {
-    return ray_case(ray, kTriangle, range, g4(a), g4(b), g4(c));
-}
-GpuRayCase box_case(const Ray& ray, const Box& box, Interval range) {
-    return ray_case(ray, kBox, range, g4(box.min), g4(box.max));
-}
-
-bool run_on_gpu(const std::vector<GpuRayCase>& cases, std::vector<GpuAnswer>& answers,
-                std::string& error) {
+bool run_gpu_cases(const std::vector<gpu_cases::GpuRayCase>& cases,
+                   std::vector<gpu_cases::GpuAnswer>& answers, std::string& error) {
+    using gpu_cases::GpuRayCase;
     const std::unique_ptr<GlContext> context = GlContext::create(GlKind::Egl, error);
     if (!context) return false;
     const GlApi& gl = context->gl();
-    const std::filesystem::path root = ::rt::testing::source_dir();
-    const AssembledShader shader =
-        assemble_shader(root / "stages/09-gpu/tests/intersect_cases.comp",
-                        {root / "shaders", gpu_student_dir()}, "");
+    const std::filesystem::path root = source_dir();
+    const AssembledShader shader = assemble_shader(root / "shaders/intersect_cases.comp",
+                                                   {root / "shaders", gpu_student_dir()}, "");
     const GLuint program = build_compute_program(gl, shader, error);
     if (program == 0) return false;
     // Binding 15 (compute_io.glsl's Output): 4 words of stub flags, then the answers.
@@ -95,4 +67,4 @@ bool run_on_gpu(const std::vector<GpuRayCase>& cases, std::vector<GpuAnswer>& an
     return true;
 }
 
-}  // namespace rt::gpu_cases
+}  // namespace rt

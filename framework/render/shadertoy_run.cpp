@@ -1,0 +1,93 @@
+// Shadertoy's wrapper, glslangValidator and a headless draw around an export (shadertoy_run.h).
+#include "render/shadertoy_run.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "core/not_implemented.h"
+#include "gl/compute_program.h"
+#include "gl/gl_context.h"
+#include "render/shadertoy_export.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+// What Shadertoy puts before the Image tab's code (its uniforms), and a main of our own.
+const char* const kShadertoyHead =
+    "#version 300 es\n"
+    "precision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
+    "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\n"
+    "uniform float iFrameRate;\nuniform int iFrame;\nuniform float iChannelTime[4];\n"
+    "uniform vec3 iChannelResolution[4];\nuniform vec4 iMouse;\nuniform vec4 iDate;\n"
+    "uniform float iSampleRate;\nuniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\n"
+    "uniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
+const char* const kShadertoyTail =
+    "\nout vec4 rt_frag_colour;\n"
+    "void main() {\n"
+    "    mainImage(rt_frag_colour, gl_FragCoord.xy);\n"
+    "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
+    "    rt_frag_colour.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
+    "}\n";
+
+// glslangValidator's verdict on the wrapped export: "" when it compiles.
+std::string glslang_errors(const std::string& wrapped) {
+    if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
+        return "glslangValidator not installed (apt-get install glslang-tools)";
+    const fs::path file =
+        fs::temp_directory_path() / ("rt-shadertoy-" + std::to_string(getpid()) + ".frag");
+    std::ofstream(file, std::ios::binary) << wrapped;
+    const fs::path log = file.string() + ".log";
+    const int status = std::system(
+        ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
+    std::ifstream in(log);
+    std::ostringstream text;
+    text << in.rdbuf();
+    fs::remove(file), fs::remove(log);
+    return status == 0 ? "" : text.str() + "(lines of " + file.string() + ")";
+}
+
+// Reports each stub a pixel reached, once, as the compute path does (render/gpu_render.cpp).
+void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::uint8_t>& rgba) {
+    static std::map<std::string, std::unique_ptr<std::atomic<bool>>> reported;
+    for (std::size_t i = 3; i < rgba.size(); i += 4) {
+        if (rgba[i] == 255 || rgba[i] >= shader.stubs.size()) continue;
+        const ShaderStub& s = shader.stubs[rgba[i]];
+        auto& once = reported[s.file + ":" + std::to_string(s.line)];
+        if (!once) once = std::make_unique<std::atomic<bool>>(false);
+        report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
+                               *once);
+    }
+}
+
+}  // namespace
+
+ShadertoyRun run_shadertoy_export(const Scene& scene, RenderMode mode) {
+    const ShadertoyExport shader = export_shadertoy(scene, mode);
+    const std::string wrapped = kShadertoyHead + shader.text + kShadertoyTail;
+    ShadertoyRun run;
+    run.compile_errors = glslang_errors(wrapped);
+    const std::unique_ptr<GlContext> context = GlContext::create(GlKind::Egl, run.draw_error);
+    if (!context) return run;
+    const int width = scene.image.width, height = scene.image.height;
+    std::vector<std::uint8_t> rgba;
+    run.draw_error = draw_fragment_shader(context->gl(), wrapped, width, height, rgba);
+    if (!run.draw_error.empty()) return run;
+    report_export_stubs(shader, rgba);
+    run.image = {width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
+    for (std::size_t i = 0; i < run.image.data.size(); ++i)
+        run.image.data[i] = rgba[i / 3 * 4 + i % 3];
+    return run;
+}
+
+}  // namespace rt
