@@ -34,7 +34,7 @@ struct PlaneFrame {
     vec3 b;
 };
 PlaneFrame plane_frame(vec3 normal) {
-    const vec3 r = abs(normal.z) > 0.9 ? vec3(0, -1, 0) : vec3(0, 0, 1);
+    const vec3 r = abs(normal.y) > 0.9 ? vec3(0, 0, 1) : vec3(0, -1, 0);
     const vec3 t = normalize(cross(normal, r));
     return PlaneFrame(t, cross(t, normal));
 }

@@ -8,7 +8,9 @@
 namespace rt {
 
 PlaneFrame plane_frame(const Vec3& normal) {
-    const Vec3 r = std::abs(normal.z) > Real(0.9) ? Vec3(0, -1, 0) : Vec3(0, 0, 1);
+    // Down for every wall (t then points right as the wall is seen from the front), +z for a
+    // floor or ceiling, where down is the normal itself.
+    const Vec3 r = std::abs(normal.y) > Real(0.9) ? Vec3(0, 0, 1) : Vec3(0, -1, 0);
     PlaneFrame f;
     f.t = glm::normalize(glm::cross(normal, r));
     f.b = glm::cross(f.t, normal);

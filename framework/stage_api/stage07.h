@@ -97,9 +97,10 @@ Vec3 normal_from_map(const Vec3& normal, const Vec3& tangent, const Color& texel
 // --- Provided by the framework (framework/render/texturing.cpp), for the functions above ---
 
 // The tangent frame of a plane with unit normal n: t (the u axis) and b = cross(t, n) (the v
-// axis), both unit and perpendicular to n. t = normalize(cross(n, r)) with r = (0, 0, 1), or
-// r = (0, -1, 0) when |n.z| > 0.9. So a floor (n = +y) has u along +x and v along +z, and a wall
-// facing +z has u along +x and v downwards, as its picture is seen from the front.
+// axis), both unit and perpendicular to n. t = normalize(cross(n, r)) with r = (0, -1, 0), or
+// r = (0, 0, 1) when |n.y| > 0.9. So a floor (n = +y) has u along +x and v along +z, and every
+// wall (a box's four side faces too) has u to the right and v downwards as it is seen from the
+// front: its picture upright.
 struct PlaneFrame {
     Vec3 t{1, 0, 0};
     Vec3 b{0, 0, 1};

@@ -63,6 +63,10 @@ TEST_F(PlaneTexcoord, WallIsUpright) {
     const Plane wall{Vec3(0, 0, -3), Vec3(0, 0, 1), 0};  // facing the camera
     expect_uv(plane_texcoord(wall, Vec3(1, 0, -3)), Vec2(1, 0), "u along +x");
     expect_uv(plane_texcoord(wall, Vec3(0, 1, -3)), Vec2(0, -1), "v grows downwards");
+    // A wall facing +x, seen from +x: its right is -z.
+    const Plane side{Vec3(0), Vec3(1, 0, 0), 0};
+    expect_uv(plane_texcoord(side, Vec3(0, 0, -1)), Vec2(1, 0), "facing +x: u to the right (-z)");
+    expect_uv(plane_texcoord(side, Vec3(0, 1, 0)), Vec2(0, -1), "facing +x: v downwards");
     const Plane tilted{Vec3(0), glm::normalize(Vec3(1, 2, 3)), 0};
     const PlaneFrame f = plane_frame(tilted.normal);
     const Vec3 p = Real(0.5) * f.t - Real(2) * f.b;
@@ -75,6 +79,11 @@ TEST_F(BoxTexcoord, EachFaceSpansTheImageUpright) {
     expect_uv(box_texcoord(box, Vec3(1, 1, 2), Vec3(0, 0, 1)), Vec2(0.5f, 0.5f), "+z centre");
     expect_uv(box_texcoord(box, Vec3(-1, 2, 2), Vec3(0, 0, 1)), Vec2(0, 0), "+z top-left corner");
     expect_uv(box_texcoord(box, Vec3(3, 0, 2), Vec3(0, 0, 1)), Vec2(1, 1), "+z bottom-right");
+    // The other side faces, each upright as seen from outside: top-left corner (0, 0).
+    expect_uv(box_texcoord(box, Vec3(3, 2, 2), Vec3(1, 0, 0)), Vec2(0, 0), "+x top-left corner");
+    expect_uv(box_texcoord(box, Vec3(3, 0, -2), Vec3(1, 0, 0)), Vec2(1, 1), "+x bottom-right");
+    expect_uv(box_texcoord(box, Vec3(-1, 2, -2), Vec3(-1, 0, 0)), Vec2(0, 0), "-x top-left");
+    expect_uv(box_texcoord(box, Vec3(3, 2, -2), Vec3(0, 0, -1)), Vec2(0, 0), "-z top-left");
     // Top face (+y): u along +x, v along +z (as a floor).
     expect_uv(box_texcoord(box, Vec3(-1, 2, -2), Vec3(0, 1, 0)), Vec2(0, 0), "+y far-left corner");
     expect_uv(box_texcoord(box, Vec3(3, 2, 2), Vec3(0, 1, 0)), Vec2(1, 1), "+y near-right corner");
