@@ -57,6 +57,13 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render
     ${arg_LIBRARIES} GTest::gtest_main)
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
+  # `cmake --build --preset release --target stageNN`: what a student working on stage NN needs
+  # (its test binaries and rt), not every other stage's tests, the grader or the benchmarks.
+  if(NOT TARGET stage${number})
+    add_custom_target(stage${number})
+    add_dependencies(stage${number} rt)
+  endif()
+  add_dependencies(stage${number} ${target})
   # The judge is for rt-grade, which builds it by name: a student's build leaves it out.
   add_executable(${target}_judge ${image_objects})
   target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
@@ -66,6 +73,7 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
     set_target_properties(${target}_judge PROPERTIES EXCLUDE_FROM_ALL ON)
     return()
   endif()
+  add_dependencies(stage${number} ${target}_judge rt-worker)  # its Remote test is -L stageNN too
   # Every graded test of the binary through the split, with the reference solution in rt-worker
   # (the image tests are not graded as unit tests: rt-grade renders the scenes itself).
   add_test(NAME Remote.${target}

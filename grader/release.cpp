@@ -312,7 +312,9 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
 
         std::ofstream release(options.out / "RELEASE.txt", std::ios::trunc);
         release << "Starter tree written by `rt-grade release`.\n"
-                << "Source: " << options.source.string() << " (" << list->how << ")\n"
+                // The files, not where they were: the instructor's path means nothing to a
+                // student and says more about the instructor's machine than it should.
+                << "Files: " << list->how << "\n"
                 << "Solved through stage: " << options.solved_through << "\n\n"
                 << "Stages:\n";
         for (const auto& [folder, info] : stages) {

@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "util.h"
 
@@ -76,6 +76,14 @@ void write_html_report(const Report& report, const fs::path& file) {
     h += "<h1>rt-grade: " + points(score) + " / " + points(max_score) + " points</h1>\n";
     h += "<p>Sandbox: " + html_escape(report.isolation) + ". Graded in " + points(report.seconds) +
          " s.</p>\n";
+    // Every row has an anchor made from its test's name ("#Stage-02-Sphere.SmallSphereFarAway"),
+    // the same in every report, so a link to a test survives the next grading.
+    const auto anchor = [](const ReportTest& t) {
+        std::string id = t.name;
+        for (char& c : id)
+            if (std::isspace(static_cast<unsigned char>(c))) c = '-';
+        return html_escape(id);
+    };
     // Failures first: what to fix, each with its first line of reason and a link to its row.
     std::string fails;
     int failed = 0;
@@ -84,10 +92,9 @@ void write_html_report(const Report& report, const fs::path& file) {
         ++failed;
         std::string first = t.output.substr(0, t.output.find('\n'));
         if (first.size() > 160) first = first.substr(0, 157) + "...";
-        fails += "<tr><td><a href=\"#t" + html_escape(t.number) + "-" + std::to_string(failed) +
-                 "\">" + html_escape(t.name) + "</a></td><td>" + points(t.score) + " / " +
-                 points(t.max_score) + "</td><td><code>" + html_escape(first) +
-                 "</code></td></tr>\n";
+        fails += "<tr><td><a href=\"#" + anchor(t) + "\">" + html_escape(t.name) + "</a></td><td>" +
+                 points(t.score) + " / " + points(t.max_score) + "</td><td><code>" +
+                 html_escape(first) + "</code></td></tr>\n";
     }
     if (failed > 0)
         h += "<h2 class=\"failed\">" + std::to_string(failed) + " failing test" +
@@ -99,26 +106,15 @@ void write_html_report(const Report& report, const fs::path& file) {
         h += "<h2 class=\"passed\">Every test passes.</h2>\n";
     if (!report.general.empty())
         h += "<pre class=\"note\">" + html_escape(report.general) + "</pre>\n";
-    // Anchors of failing rows, numbered as in the summary above.
-    std::map<const ReportTest*, std::string> anchors;
-    {
-        int k = 0;
-        for (const auto& t : report.tests)
-            if (t.status != "passed")
-                anchors[&t] = "t" + html_escape(t.number) + "-" + std::to_string(++k);
-    }
     auto table = [&](int stage) {
         std::string rows;
         for (const auto& t : report.tests) {
             if (t.stage != stage) continue;
             const std::string cls = t.status == "passed" ? "passed" : "failed";
-            const auto anchor = anchors.find(&t);
-            rows += "<tr" +
-                    (anchor == anchors.end() ? std::string() : " id=\"" + anchor->second + "\"") +
-                    "><td>" + html_escape(t.number) + "</td><td>" + html_escape(t.name) +
-                    "</td><td class=\"" + cls + "\">" + cls + "</td><td>" + points(t.score) +
-                    " / " + points(t.max_score) + "</td><td>" + html_escape(t.visibility) +
-                    "</td><td>";
+            rows += "<tr id=\"" + anchor(t) + "\"><td>" + html_escape(t.number) + "</td><td>" +
+                    html_escape(t.name) + "</td><td class=\"" + cls + "\">" + cls + "</td><td>" +
+                    points(t.score) + " / " + points(t.max_score) + "</td><td>" +
+                    html_escape(t.visibility) + "</td><td>";
             if (!t.output.empty())
                 rows += "<details" + std::string(t.status == "passed" ? "" : " open") +
                         "><summary>output</summary><pre>" + html_escape(t.output) +

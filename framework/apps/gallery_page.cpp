@@ -140,7 +140,11 @@ fs::path GalleryPage::write() const {
          << "<title>rt gallery</title>\n"
          << kStyle << "\n</head>\n<body>\n"
          << "<h1>rt gallery</h1>\n<p>" << passed << " of " << graded
-         << " graded scenes match their reference image by the grader's metric. Each scene: "
+         << " graded scenes match their reference image by the grader's metric";
+    if (entries_.size() > std::size_t(graded))
+        page << " (the other " << entries_.size() - graded << " of the " << entries_.size()
+             << " scenes are not graded: no verdict)";
+    page << ". Each scene: "
             "your render, the reference, and the difference (black: equal, red: differs within "
             "tolerance, <b>white: failing pixel</b>).</p>\n";
     // At a glance: the graded scenes that do not pass, each linked to its place below.
@@ -210,9 +214,15 @@ fs::path GalleryPage::write() const {
 // Every stage folder with scenes, in order: stages/NN-name/scenes/*.json.
 int run_gallery(const fs::path& source, const fs::path& out, int threads) {
     std::vector<fs::path> stages;
-    for (const auto& entry : fs::directory_iterator(source / "stages"))
-        if (entry.is_directory() && fs::is_directory(entry.path() / "scenes"))
+    std::string without_scenes;  // stage 09: its GPU port draws the other stages' scenes
+    for (const auto& entry : fs::directory_iterator(source / "stages")) {
+        if (!entry.is_directory()) continue;
+        if (fs::is_directory(entry.path() / "scenes"))
             stages.push_back(entry.path());
+        else if (fs::exists(entry.path() / "stage.json"))
+            without_scenes +=
+                (without_scenes.empty() ? "" : ", ") + entry.path().filename().string();
+    }
     std::sort(stages.begin(), stages.end());
     int count = 0;
     const auto start = std::chrono::steady_clock::now();
@@ -241,9 +251,11 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
             ++count;
         }
     }
-    std::printf("rendered %d scenes of %zu stages in %.1f s\ngallery: %s\n", count, stages.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                fs::absolute(out).lexically_normal().c_str());
+    std::printf(
+        "rendered %d scenes in %.1f s: every stage's scenes/%s\ngallery: %s\n", count,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        without_scenes.empty() ? "" : (" (" + without_scenes + ": no scenes/ of its own)").c_str(),
+        fs::absolute(out).lexically_normal().c_str());
     if (regenerating) return 0;
     const fs::path index = page.write();
     std::printf("page: %s (%d graded scenes do not match their reference)\n",

@@ -61,7 +61,7 @@ RT_WIRE_FIELDS(AccelerationReport, v.requested, v.built, v.problem, v.build_ms, 
 RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v.hit_record,
                v.surface, v.local, v.contribution, v.shadows, v.children)
 RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.colour, v.root)
-RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face)
+RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face, v.uv)
 RT_WIRE_FIELDS(ShadertoyRun, v.compile_errors, v.draw_error, v.image)
 // Every field but the OpenImageIO texture system, which the worker makes anew from the texture
 // table (worker_serve.cpp). wire_types.cpp checks the size: a new field must be added here.

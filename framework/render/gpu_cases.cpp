@@ -62,7 +62,7 @@ bool run_gpu_cases(const std::vector<gpu_cases::GpuRayCase>& cases,
     answers.assign(cases.size(), {});
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const glm::vec4* g = &output[1 + 4 * i];  // found, t, stub; normal, front; point; uv
-        answers[i] = {g[0].x == 1, g[0].y, glm::vec3(g[1]), g[1].w == 1};
+        answers[i] = {g[0].x == 1, g[0].y, glm::vec3(g[1]), g[1].w == 1, glm::vec2(g[3])};
     }
     return true;
 }

@@ -1,5 +1,6 @@
 #include "render/shadertoy_export.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -187,28 +188,37 @@ std::string scene_constants(const Scene& scene, RenderMode mode) {
 }
 
 // Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
-// dropped from declarations inside functions (ES takes it only with constant initialisers).
-std::string for_shadertoy(const AssembledShader& shader) {
+// dropped from declarations inside functions, wherever on the line (ES takes it only with
+// constant initialisers). Appends to `out` and, line for line, where each came from to `origins`.
+void for_shadertoy(const AssembledShader& shader, std::string& out,
+                   std::vector<std::string>& origins) {
     static const std::regex line_re(R"(^#line (\d+) (\d+)$)");
-    static const std::regex local_const_re(R"(^(\s+)const\s+)");
+    static const std::regex local_const_re(R"(\bconst\s+)");
     constexpr long kFileLines = 100000;  // shader_source.cpp's encoding of the file in the line
     std::istringstream lines(shader.text);
-    std::string line, out;
+    std::string line, file_name;
+    long file_line = 0;
     int depth = 0;
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_match(line, m, line_re)) {
             const std::size_t file = std::stoul(m[2]);
-            if (std::stol(m[1]) % kFileLines == 1 && file < shader.files.size())
-                out += "// ---- " + shader.files[file] + " ----\n";
+            file_name = file < shader.files.size() ? shader.files[file] : "";
+            file_line = std::stol(m[1]) % kFileLines;
+            if (file_line == 1 && !file_name.empty()) {
+                out += "// ---- " + file_name + " ----\n";
+                origins.push_back("");
+            }
             continue;
         }
-        if (depth > 0) line = std::regex_replace(line, local_const_re, "$1");
-        const std::string code = line.substr(0, line.find("//"));
+        const std::size_t comment = line.find("//");
+        std::string code = line.substr(0, comment);
+        if (depth > 0) code = std::regex_replace(code, local_const_re, "");
         for (char ch : code) depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
-        out += line + "\n";
+        out += code + (comment == std::string::npos ? "" : line.substr(comment)) + "\n";
+        origins.push_back(file_name.empty() ? "" : file_name + ":" + std::to_string(file_line));
+        ++file_line;
     }
-    return out;
 }
 
 // scene_layout.glsl's structs, without its storage buffers (the export's arrays are constants).
@@ -258,7 +268,9 @@ ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::
                ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "
                "field of view; the image takes the canvas's shape.\n\n" +
                gpu_defines(scene, mode) + "\n" + scene_structs() + "\n" +
-               scene_constants(scene, mode) + "\n" + for_shadertoy(shader);
+               scene_constants(scene, mode) + "\n";
+    out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
+    for_shadertoy(shader, out.text, out.line_origins);
     if (out.text.size() > kMaxShadertoyBytes)
         throw GpuError((scene.source.empty() ? "the scene" : scene.source) + ": its export " +
                        "would be " + std::to_string(out.text.size() / 1024) +

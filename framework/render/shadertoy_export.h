@@ -19,6 +19,9 @@ namespace rt {
 struct ShadertoyExport {
     std::string text;               // the shader, to paste into Shadertoy's Image tab
     std::vector<ShaderStub> stubs;  // by the value of rt_first_stub (stubs paint magenta)
+    // For each line of `text` (index 0: line 1), the GLSL file and line it came from, as
+    // "stages/09-gpu/intersect.glsl:42"; "" for the export's own lines (the scene's constants).
+    std::vector<std::string> line_origins;
 };
 
 // Images are baked as constant arrays up to this many texels in all; Shadertoy cannot load the

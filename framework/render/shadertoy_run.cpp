@@ -3,13 +3,16 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -40,8 +43,28 @@ const char* const kShadertoyTail =
     "    rt_frag_colour.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
     "}\n";
 
+// A compiler's log of the wrapped export with each line number it names ("ERROR: x.frag:379:"
+// from glslang, "0:379(12):" from Mesa) replaced by the student's file and line it came from,
+// or by "the export's line N" for the scene's constants: the wrapped file is gone by now.
+std::string with_source_lines(const std::string& log, const ShadertoyExport& shader) {
+    static const std::regex line_re(R"((?:[^\s:]*\.frag|\b0):(\d+))");
+    const long head =
+        std::count(kShadertoyHead, kShadertoyHead + std::strlen(kShadertoyHead), '\n');
+    std::string out;
+    auto from = log.cbegin();
+    for (std::sregex_iterator it(log.begin(), log.end(), line_re), end; it != end; ++it) {
+        out.append(from, (*it)[0].first);
+        const long line = std::stol((*it)[1]) - head;  // 1-based, in the export
+        const bool known = line >= 1 && std::size_t(line) <= shader.line_origins.size();
+        const std::string& origin = known ? shader.line_origins[line - 1] : std::string();
+        out += !origin.empty() ? origin : "the export's line " + std::to_string(line);
+        from = (*it)[0].second;
+    }
+    return out.append(from, log.cend());
+}
+
 // glslangValidator's verdict on the wrapped export: "" when it compiles.
-std::string glslang_errors(const std::string& wrapped) {
+std::string glslang_errors(const std::string& wrapped, const ShadertoyExport& shader) {
     if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
         return "glslangValidator not installed (apt-get install glslang-tools)";
     const fs::path file =
@@ -54,7 +77,10 @@ std::string glslang_errors(const std::string& wrapped) {
     std::ostringstream text;
     text << in.rdbuf();
     fs::remove(file), fs::remove(log);
-    return status == 0 ? "" : text.str() + "(lines of " + file.string() + ")";
+    if (status == 0) return "";
+    std::string errors = text.str();  // without the line naming the wrapped file, which is gone
+    if (errors.starts_with(file.string() + "\n")) errors.erase(0, file.string().size() + 1);
+    return with_source_lines(errors, shader);
 }
 
 // Reports each stub a pixel reached, once, as the compute path does (render/gpu_render.cpp).
@@ -76,12 +102,13 @@ ShadertoyRun run_shadertoy_export(const Scene& scene, RenderMode mode) {
     const ShadertoyExport shader = export_shadertoy(scene, mode);
     const std::string wrapped = kShadertoyHead + shader.text + kShadertoyTail;
     ShadertoyRun run;
-    run.compile_errors = glslang_errors(wrapped);
+    run.compile_errors = glslang_errors(wrapped, shader);
     const std::unique_ptr<GlContext> context = GlContext::create(GlKind::Egl, run.draw_error);
     if (!context) return run;
     const int width = scene.image.width, height = scene.image.height;
     std::vector<std::uint8_t> rgba;
-    run.draw_error = draw_fragment_shader(context->gl(), wrapped, width, height, rgba);
+    run.draw_error = with_source_lines(
+        draw_fragment_shader(context->gl(), wrapped, width, height, rgba), shader);
     if (!run.draw_error.empty()) return run;
     report_export_stubs(shader, rgba);
     run.image = {width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};

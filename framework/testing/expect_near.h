@@ -26,3 +26,15 @@ void expect_colour_near(const Color& actual, const Color& expected, const std::s
                         std::source_location where = std::source_location::current());
 
 }  // namespace rt::testing
+
+// How GoogleTest prints the framework's vectors (Vec2, Vec3, Color, glm's float vectors) in any
+// failure message: "(x, y, z)" as text() writes it, not "12-byte object <00-00 ...>". Found by
+// argument-dependent lookup, so every test that includes this header (stage_test.h does) uses it.
+namespace glm {
+template <length_t L, class T, qualifier Q>
+void PrintTo(const vec<L, T, Q>& v, std::ostream* out) {
+    *out << "(";
+    for (length_t i = 0; i < L; ++i) *out << (i ? ", " : "") << v[i];
+    *out << ")";
+}
+}  // namespace glm

@@ -35,8 +35,11 @@ std::vector<std::string> graded_scenes() {
     return names;
 }
 
-// The comparison of scene `name`: the framework's default, unless grading.json compares block
-// means (stage 10's Monte Carlo images), whose tolerance and pass_percent it then takes too.
+// The comparison of scene `name` as the grader makes it for full points (grader/stage_specs.cpp
+// reads the same keys): grading.json's image_defaults with the scene's own entry over them, the
+// grader's defaults (grader/grade.h, ImageThresholds) for what neither sets. So a test passes
+// exactly when rt-grade would give the image full points, and both print the same share of
+// failing pixels.
 CompareOptions compare_options(const std::string& name) {
     CompareOptions options;
     const nlohmann::json spec = grading_spec();
@@ -44,11 +47,10 @@ CompareOptions compare_options(const std::string& name) {
     nlohmann::json merged = spec.value("image_defaults", nlohmann::json::object());
     for (const nlohmann::json& scene : spec.value("scenes", nlohmann::json::array()))
         if (scene.value("name", "") == name) merged.update(scene);
-    if (merged.value("block", 0) > 0) {
-        options.block = merged.value("block", 0);
-        options.tolerance = merged.value("tolerance", options.tolerance);
-        options.max_failing_percent = merged.value("pass_percent", options.max_failing_percent);
-    }
+    options.tolerance = merged.value("tolerance", options.tolerance);
+    options.max_failing_percent = merged.value("pass_percent", options.max_failing_percent);
+    options.neighbourhood = merged.value("neighbourhood", true);
+    options.block = merged.value("block", options.block);
     return options;
 }
 

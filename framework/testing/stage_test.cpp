@@ -46,14 +46,27 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
     }
     const CompareResult result = compare_images(actual, reference, options);
     if (result.passed) return;
-    const auto out_dir = std::filesystem::path(RT_TEST_OUTPUT_DIR) / stage;
-    std::filesystem::create_directories(out_dir);
-    write_image8(actual, out_dir / (scene_name + ".png"));
-    if (result.size_matches) write_image8(result.heat_map, out_dir / (scene_name + ".diff.png"));
+    std::vector<KeptImage> kept = {{"your image", scene_name + ".png", &actual}};
+    if (result.size_matches)
+        kept.push_back({"difference", scene_name + ".diff.png", &result.heat_map});
     ADD_FAILURE() << scene_file.string() << ": " << result.summary()
-                  << "\n  your image: " << (out_dir / (scene_name + ".png")).string()
-                  << "\n  reference:  " << reference_file.string()
-                  << "\n  difference: " << (out_dir / (scene_name + ".diff.png")).string();
+                  << keep_failure_images(stage, kept)
+                  << "\n  reference: " << reference_file.string();
+}
+
+std::string keep_failure_images(const std::string& folder, const std::vector<KeptImage>& images) {
+    const auto out_dir = std::filesystem::path(RT_TEST_OUTPUT_DIR) / folder;
+    std::string lines;
+    try {
+        std::filesystem::create_directories(out_dir);
+        for (const KeptImage& k : images) {
+            write_image8(*k.image, out_dir / k.file);
+            lines += "\n  " + k.label + ": " + (out_dir / k.file).string();
+        }
+    } catch (const std::exception& e) {
+        lines += "\n  (the images could not be kept: " + std::string(e.what()) + ")";
+    }
+    return lines;
 }
 
 }  // namespace rt::testing

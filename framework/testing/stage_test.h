@@ -9,10 +9,12 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "image/compare.h"
 #include "image/image.h"
 #include "scene/scene.h"
+#include "testing/expect_near.h"
 
 namespace rt::testing {
 
@@ -35,6 +37,15 @@ std::filesystem::path source_dir();
 // `options`: the comparison (the default, or stage 10's block means from its grading.json).
 void expect_matches_reference(const std::string& stage, const std::string& scene_name,
                               const CompareOptions& options = {});
+
+// For a failing image comparison: writes each (label, file name, image) under
+// build/test-output/<folder>/ and returns lines naming them ("\n  label: PATH"), or says why they
+// could not be written (a grading judge's folder is read-only).
+struct KeptImage {
+    std::string label, file;
+    const Image8* image;
+};
+std::string keep_failure_images(const std::string& folder, const std::vector<KeptImage>& images);
 
 }  // namespace rt::testing
 

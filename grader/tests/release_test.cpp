@@ -331,6 +331,8 @@ TEST_F(ReleaseTree, StripsEveryStageAndSkipsBuildDirs) {
     const std::string notes = read(out_ / "RELEASE.txt");
     EXPECT_NE(notes.find("01-rays (Rays): not solved"), std::string::npos) << notes;
     EXPECT_NE(notes.find("02-hits: not solved"), std::string::npos) << notes;
+    // The instructor's path stays on the instructor's machine.
+    EXPECT_EQ(notes.find(source_.string()), std::string::npos) << notes;
 }
 
 // GLSL student files (stage 09) carry the same markers in the same // comments: stripped and

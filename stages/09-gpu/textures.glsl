@@ -95,8 +95,12 @@ int wrap_texel(int i, int n, int wrap) {
     // END SOLUTION
 }
 
-// A texel index from a coordinate in texels, reduced first (by whole periods, or clamped) so
-// that the conversion to int cannot overflow for a far-away coordinate.
+// The index, in 0 .. n - 1, of the texel at coordinate `c` (in texels along a row or column of
+// n, a whole number: sample_nearest and sample_bilinear floor it first) under `wrap`
+// (kWrapRepeat, kWrapMirror or kWrapClamp), as wrap_texel(int(c), n, wrap) gives for any c that
+// fits an int. c may be huge (a far-away plane's uv), negative or NaN (a degenerate uv: treat it
+// as 0): reduce it first, by a whole number of periods for repeat and mirror (2n keeps both
+// right) or by clamping to [-1, n], so that the conversion to int cannot overflow.
 int texel_index(float c, int n, int wrap) {
     // BEGIN SOLUTION
     if (isnan(c)) c = 0.0;  // a degenerate uv must not reach int()

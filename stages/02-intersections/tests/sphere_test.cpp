@@ -80,7 +80,11 @@ TEST_F(Sphere, SmallSphereFarAway) {
     Hit hit;
     ASSERT_TRUE(intersect_sphere(Ray{Vec3(0, 0, 0), Vec3(0, 0, -1)},
                                  rt::Sphere{Vec3(0, 0, -1e4f), 1, 0}, {}, hit));
-    EXPECT_NEAR(hit.t, 9999, 9999 * 4 * std::numeric_limits<Real>::epsilon());
+    EXPECT_NEAR(hit.t, 9999, 9999 * 4 * std::numeric_limits<Real>::epsilon())
+        << "the sphere's near side is at t = 9999: t = 10000 means the discriminant came out 0, "
+           "which is what b^2 - a c gives when its two terms (about 1e8 each) cancel in float; "
+           "compute it from the ray's offset from the centre instead: read "
+           "stages/02-intersections/README.md#a-stable-quadratic";
 }
 
 TEST_F(Sphere, BadDirectionsMiss) {

@@ -59,17 +59,27 @@ Scene small_scene(const std::string& relative) {
     return scene;
 }
 
-// The GPU image of `scene` in `mode` against the CPU's, under the metric above.
+// The GPU image of `scene` in `mode` against the CPU's, under the metric above. A failure keeps
+// both images and their difference, and says how to see the scene whole.
 void expect_gpu_matches_cpu(const Scene& scene, RenderMode mode, const std::string& what,
                             const GpuRenderOptions& options = {}) {
-    const Image cpu = render(scene, mode);
-    const Image gpu = render_gpu(scene, mode, options);
+    const Image8 cpu = to_image8(render(scene, mode));
+    const Image8 gpu = to_image8(render_gpu(scene, mode, options));
     CompareOptions compare;
     compare.tolerance = 2;
     compare.max_failing_percent = 0.5;
-    const CompareResult r = compare_images(to_image8(gpu), to_image8(cpu), compare);
-    EXPECT_TRUE(r.passed) << what << " (" << to_string(mode)
-                          << ", GPU against CPU): " << r.summary();
+    const CompareResult r = compare_images(gpu, cpu, compare);
+    if (r.passed) return;
+    const std::string name = fs::path(scene.source).stem().string() + (options.uber ? "-uber" : "");
+    std::vector<::rt::testing::KeptImage> kept = {{"GPU (yours)", name + ".gpu.png", &gpu},
+                                                  {"CPU", name + ".cpu.png", &cpu}};
+    if (r.size_matches) kept.push_back({"difference", name + ".diff.png", &r.heat_map});
+    ADD_FAILURE() << what << " (" << to_string(mode) << ", GPU against CPU): " << r.summary()
+                  << ::rt::testing::keep_failure_images("09-gpu", kept)
+                  << "\n  the scene whole: build/bin/rt render "
+                  << fs::path(scene.source).lexically_relative(::rt::testing::source_dir()).string()
+                  << " --mode " << to_string(mode) << " --gpu" << (options.uber ? " --uber" : "")
+                  << " -o gpu.png, then without --gpu for the CPU's";
 }
 
 TEST_P(Conformance, GpuMatchesCpu) {

@@ -72,41 +72,93 @@ bool cpu_answer(const RandomCase& c, Hit& hit) {
     }
 }
 
-RT_TEST_SUITE(GpuIntersect);
-
-TEST_F(GpuIntersect, AnswersAsStage02Does) {
-    const std::vector<RandomCase> cases = random_cases();
-    std::vector<gpu_cases::GpuRayCase> gpu;
-    for (const RandomCase& c : cases) gpu.push_back(gpu_case(c));
-    std::vector<GpuAnswer> answers;
-    std::string error;
-    ASSERT_TRUE(run_gpu_cases(gpu, answers, error)) << error;
-
-    int flips = 0, hits = 0;
+// The GPU's answers against stage 02's (C++) for `cases`, each failure named by `name(i)`; counts
+// the hits on both sides and the hit/miss flips, which the caller judges.
+struct Agreement {
+    int hits = 0, flips = 0;
+};
+template <class Name>
+Agreement expect_agreement(const std::vector<RandomCase>& cases,
+                           const std::vector<GpuAnswer>& answers, Name name) {
+    Agreement a;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         Hit cpu;
         const bool cpu_found = cpu_answer(cases[i], cpu);
         const GpuAnswer& g = answers[i];
         if (cpu_found != g.found) {
-            ++flips;
+            ++a.flips;
             continue;
         }
         if (!cpu_found) continue;
-        ++hits;
+        ++a.hits;
         const float scale = std::max(1.0f, float(cpu.t));
-        // "sphere case 17": the cases come 512 to a kind (random_cases).
-        const std::string what =
-            std::string(gpu_cases::kind_name(cases[i].kind)) + " case " + std::to_string(i % 512);
+        const std::string what = name(i);
         EXPECT_NEAR(g.t, cpu.t, 1e-4f * scale) << what;
         EXPECT_NEAR(g.normal.x, cpu.normal.x, 1e-4f) << what;
         EXPECT_NEAR(g.normal.y, cpu.normal.y, 1e-4f) << what;
         EXPECT_NEAR(g.normal.z, cpu.normal.z, 1e-4f) << what;
         EXPECT_EQ(g.front_face, cpu.front_face) << what;
+        // hit.uv: a triangle's barycentrics (beta, gamma) in that order, the sphere's longitude
+        // (which wraps at 1, and means nothing at a pole) and latitude.
+        float du = g.uv.x - float(cpu.uv.x);
+        if (cases[i].kind == gpu_cases::kSphere) du -= std::round(du);
+        const bool pole = cases[i].kind == gpu_cases::kSphere && std::abs(cpu.normal.y) > 0.9999f;
+        if (!pole) {
+            EXPECT_NEAR(du, 0, 1e-4f)
+                << what << ": hit.uv.x is " << g.uv.x << ", stage 02 says " << cpu.uv.x;
+        }
+        EXPECT_NEAR(g.uv.y, cpu.uv.y, 1e-4f) << what << ": hit.uv.y";
     }
-    std::printf("%zu cases, %d hits, %d hit/miss flips\n", cases.size(), hits, flips);
-    EXPECT_GT(hits, int(cases.size() / 4)) << "the cases should hit about half the time";
-    EXPECT_LE(flips, int(cases.size() / 200))
+    return a;
+}
+
+std::vector<GpuAnswer> answers_on_gpu(const std::vector<RandomCase>& cases) {
+    std::vector<gpu_cases::GpuRayCase> gpu;
+    for (const RandomCase& c : cases) gpu.push_back(gpu_case(c));
+    std::vector<GpuAnswer> answers;
+    std::string error;
+    EXPECT_TRUE(run_gpu_cases(gpu, answers, error)) << error;
+    answers.resize(cases.size());
+    return answers;
+}
+
+RT_TEST_SUITE(GpuIntersect);
+
+TEST_F(GpuIntersect, AnswersAsStage02Does) {
+    const std::vector<RandomCase> cases = random_cases();
+    const Agreement a = expect_agreement(cases, answers_on_gpu(cases), [&](std::size_t i) {
+        // "sphere case 17": the cases come 512 to a kind (random_cases).
+        return std::string(gpu_cases::kind_name(cases[i].kind)) + " case " +
+               std::to_string(i % 512);
+    });
+    std::printf("%zu cases, %d hits, %d hit/miss flips\n", cases.size(), a.hits, a.flips);
+    EXPECT_GT(a.hits, int(cases.size() / 4)) << "the cases should hit about half the time";
+    EXPECT_LE(a.flips, int(cases.size() / 200))
         << "GPU and CPU disagree on hit or miss; read stages/09-gpu/README.md#intersections";
+}
+
+// Rays whose half_b (the stable quadratic's b / 2) is exactly 0: from the sphere's centre, and
+// from points of the plane through the centre across the ray. GLSL's sign(0) is 0, so
+// q = -(half_b + sign(half_b) * root) comes out 0 and the hit is lost; C++'s copysign is 1.
+TEST_F(GpuIntersect, StableQuadraticWhereHalfBIsZero) {
+    const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    std::vector<RandomCase> cases;
+    for (int along = 0; along < 3; ++along)
+        for (const Real sign : {Real(1), Real(-1)}) {
+            const Vec3 d = sign * axes[along];
+            cases.push_back({Ray(kCaseSphere.center, d), gpu_cases::kSphere});
+            const Vec3 across = axes[(along + 1) % 3] * Real(0.5);
+            cases.push_back({Ray(kCaseSphere.center + across, d), gpu_cases::kSphere});
+        }
+    const Agreement a = expect_agreement(cases, answers_on_gpu(cases), [&](std::size_t i) {
+        return "the ray from (" + std::to_string(cases[i].ray.origin.x) + ", " +
+               std::to_string(cases[i].ray.origin.y) + ", " +
+               std::to_string(cases[i].ray.origin.z) + ") inside the sphere";
+    });
+    EXPECT_EQ(a.flips, 0) << a.flips << " of " << cases.size()
+                          << " rays from inside the sphere with half_b = 0 miss it: GLSL's sign(0) "
+                             "is 0, so the stable quadratic loses its root; read "
+                             "stages/09-gpu/README.md#intersections";
 }
 
 }  // namespace
