@@ -1,9 +1,11 @@
 #include "gl/shader_source.h"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "core/source_dir.h"
 
@@ -11,6 +13,21 @@ namespace fs = std::filesystem;
 
 namespace rt {
 namespace {
+
+// The names of `#ifdef NAME` or `#if defined(A) || defined(B) ...`; empty for any other line.
+std::vector<std::string> guard_names(const std::string& line) {
+    static const std::regex ifdef_re(R"(^\s*#\s*ifdef\s+(\w+)\s*$)");
+    static const std::regex if_re(
+        R"(^\s*#\s*if\s+defined\s*\(\s*\w+\s*\)(\s*\|\|\s*defined\s*\(\s*\w+\s*\))*\s*$)");
+    static const std::regex name_re(R"(defined\s*\(\s*(\w+)\s*\))");
+    std::smatch m;
+    if (std::regex_match(line, m, ifdef_re)) return {m[1].str()};
+    std::vector<std::string> names;
+    if (std::regex_match(line, if_re))
+        for (std::sregex_iterator it(line.begin(), line.end(), name_re), end; it != end; ++it)
+            names.push_back((*it)[1].str());
+    return names;
+}
 
 bool read_file(const fs::path& path, std::string& text) {
     std::ifstream in(path, std::ios::binary);
@@ -61,7 +78,8 @@ class Assembler {
         included_.insert(fs::weakly_canonical(path));
         if (!entry) out_.text += line_directive(1, id);
         std::istringstream lines(text);
-        std::string line, function, guard;
+        std::string line, function;
+        std::vector<std::string> guard;  // the names of the #ifdef or #if defined(..) || .. above
         int number = 0;
         static const std::regex include_re(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
         static const std::regex stub_re(R"re(RT_NOT_IMPLEMENTED\(\s*"([^"]*)"\s*\))re");
@@ -75,11 +93,12 @@ class Assembler {
                 continue;
             }
             if (std::regex_match(line, m, include_re)) {
-                // An include right under `#ifdef NAME` is left out unless the host defines NAME:
-                // its file (and its stubs) belong to that feature only.
-                if (!guard.empty() && !defined(defines, guard)) {
-                    out_.text += "// " + trim_left(line) + ": not included (no " + guard + ")\n";
-                    guard.clear();
+                // An include right under `#ifdef NAME` (or `#if defined(A) || defined(B)`) is left
+                // out unless the host defines one of the names: its file (and its stubs) belong
+                // to those features only.
+                if (!wanted(guard, defines)) {
+                    out_.text += "// " + trim_left(line) + ": not included (no " + guard[0] +
+                                 (guard.size() > 1 ? " or the others" : "") + ")\n";
                     continue;
                 }
                 const fs::path found = find(path.parent_path(), m[1].str());
@@ -94,8 +113,12 @@ class Assembler {
                 out_.text += line_directive(number + 1, id);
                 continue;
             }
-            static const std::regex ifdef_re(R"(^\s*#\s*ifdef\s+(\w+)\s*$)");
-            guard = std::regex_match(line, m, ifdef_re) ? m[1].str() : "";
+            // A #define right under a guard (trace.glsl's HAS_MAPS) counts when the guard holds;
+            // one elsewhere always (a guess on the safe side: the file is then included).
+            static const std::regex define_re(R"(^\s*#\s*define\s+(\w+).*$)");
+            if (std::regex_match(line, m, define_re) && wanted(guard, defines))
+                derived_.insert(m[1].str());
+            guard = guard_names(line);
             if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
             if (!trim_left(line).starts_with("//") && std::regex_search(line, m, stub_re)) {
                 const int k = int(out_.stubs.size());
@@ -109,6 +132,14 @@ class Assembler {
     }
 
   private:
+    // Whether a guard (guard_names) holds: one of its names is defined by the host's `defines`
+    // or by a #define of the shader seen so far. No guard: true.
+    bool wanted(const std::vector<std::string>& guard, const std::string& defines) const {
+        return guard.empty() || std::any_of(guard.begin(), guard.end(), [&](const std::string& n) {
+                   return defined(defines, n) || derived_.contains(n);
+               });
+    }
+
     fs::path find(const fs::path& beside, const std::string& name) const {
         if (fs::is_regular_file(beside / name)) return beside / name;
         for (const fs::path& dir : dirs_)
@@ -119,6 +150,7 @@ class Assembler {
     const std::vector<fs::path>& dirs_;
     AssembledShader& out_;
     std::set<fs::path> included_;
+    std::set<std::string> derived_;  // names the shader #defines itself
 };
 
 }  // namespace

@@ -47,6 +47,29 @@ TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreNumbered) {
     EXPECT_EQ(s.stubs[0].handout, "stages/09-gpu/README.md#f");
 }
 
+// An include right under a guard the host's defines (or the shader's own #defines under their
+// guards) do not satisfy is left out, with its stubs: a scene without textures is not told about
+// texture stubs.
+TEST_F(ShaderSource, GuardedIncludesAndTheirStubsFollowTheDefines) {
+    write("main.comp",
+          "#version 430\n#if defined(A) || defined(B)\n#define MAPS\n#endif\n"
+          "#if defined(MAPS) || defined(ENV)\n#include \"t.glsl\"\n#include \"u.glsl\"\n#endif\n"
+          "#ifdef ENV\n#include \"e.glsl\"\n#endif\nvoid main() {}\n");
+    for (const char* f : {"t", "u", "e"})
+        write(std::string("student/") + f + ".glsl",
+              std::string("void ") + f + "() {\n    RT_NOT_IMPLEMENTED(\"x.md#y\");\n}\n");
+    const auto stubs = [&](const std::string& defines) {
+        std::string names;
+        for (const ShaderStub& s :
+             assemble_shader(dir_ / "main.comp", {dir_ / "student"}, defines).stubs)
+            names += s.function;
+        return names;
+    };
+    EXPECT_EQ(stubs(""), "");
+    EXPECT_EQ(stubs("#define B\n"), "tu");  // through the shader's own MAPS
+    EXPECT_EQ(stubs("#define ENV\n"), "tue");
+}
+
 TEST_F(ShaderSource, MissingIncludeNamesTheLine) {
     write("main.comp", "#version 430\n\n#include \"nowhere.glsl\"\n");
     const AssembledShader s = assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "");
