@@ -12,5 +12,5 @@ pgrep -x fluxbox > /dev/null || (fluxbox > /tmp/fluxbox.log 2>&1 &)
 pgrep -x x11vnc > /dev/null ||
   x11vnc -display :1 -forever -shared -nopw -localhost -rfbport 5900 -bg -o /tmp/x11vnc.log > /dev/null
 pgrep -f "websockify.*6080" > /dev/null ||
-  (websockify --web /usr/share/novnc 6080 localhost:5900 > /tmp/novnc.log 2>&1 &)
+  (websockify --web /usr/share/novnc 6080 127.0.0.1:5900 > /tmp/novnc.log 2>&1 &)
 echo "desktop: DISPLAY=:1; see it at http://localhost:6080/vnc.html"

@@ -39,3 +39,11 @@ void rt_not_implemented(int stub) {
     atomicOr(stub_flags[stub / 32], 1u << uint(stub % 32));
     rt_stub_reached = true;
 }
+// The guard gl/shader_source.cpp puts on each while loop of a student file: llvmpipe ends a loop
+// silently after some tens of thousands of iterations and goes on with wrong values; this ends
+// it first (kLoopLimit, gl/shader_source.h) and reports the loop like a stub.
+bool rt_loop_guard(int iteration, int loop) {
+    if (iteration < 10000) return true;
+    rt_not_implemented(loop);
+    return false;
+}

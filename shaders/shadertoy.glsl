@@ -13,6 +13,12 @@ void rt_not_implemented(int stub) {
     if (rt_first_stub < 0) rt_first_stub = stub;
     rt_stub_reached = true;
 }
+// compute_io.glsl's guard of a student's while loop.
+bool rt_loop_guard(int iteration, int loop) {
+    if (iteration < 10000) return true;
+    rt_not_implemented(loop);
+    return false;
+}
 
 #include "trace.glsl"
 

@@ -30,6 +30,18 @@ void report_not_implemented(const char* function, const char* file, int line, co
     }
 }
 
+void report_endless_loop(const char* file, int line, int limit, std::atomic<bool>& reported) {
+    g_total.fetch_add(1, std::memory_order_relaxed);
+    ++t_this_thread;
+    if (!reported.exchange(true)) {
+        std::fprintf(stderr,
+                     "%s:%d: this loop ran %d times for one pixel and was stopped: does it ever "
+                     "end? (llvmpipe would have ended it silently, with wrong values)\n",
+                     relative_to_source(file).c_str(), line, limit);
+        std::fflush(stderr);
+    }
+}
+
 std::uint64_t stub_calls_total() {
     return g_total.load(std::memory_order_relaxed);
 }

@@ -68,6 +68,7 @@ class Assembler {
 
     // Appends `path` (source string `id`); false when an include failed (out_.error set).
     bool add(const fs::path& path, const std::string& defines, bool entry) {
+        if (entry) entry_dir_ = path.parent_path();
         std::string text;
         if (!read_file(path, text)) {
             out_.error = display_path(path) + ": cannot read the shader file";
@@ -77,6 +78,8 @@ class Assembler {
         out_.files.push_back(display_path(path));
         included_.insert(fs::weakly_canonical(path));
         if (!entry) out_.text += line_directive(1, id);
+        // The student's files are those found in the include folders, not beside the entry.
+        const bool student = !entry && path.parent_path() != entry_dir_;
         std::istringstream lines(text);
         std::string line, function;
         std::vector<std::string> guard;  // the names of the #ifdef or #if defined(..) || .. above
@@ -120,6 +123,7 @@ class Assembler {
                 derived_.insert(m[1].str());
             guard = guard_names(line);
             if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
+            if (student) line = guard_while_loop(line, function, id, number);
             if (!trim_left(line).starts_with("//") && std::regex_search(line, m, stub_re)) {
                 const int k = int(out_.stubs.size());
                 out_.stubs.push_back({function, out_.files[std::size_t(id)], number, m[1].str()});
@@ -132,6 +136,29 @@ class Assembler {
     }
 
   private:
+    // `while (COND)` at the start of a line -> `for (int rt_loop_K = 0; rt_loop_guard(rt_loop_K++,
+    // K) && (COND);)`, the loop's stub entry K added. Left alone: a head that does not close on
+    // its line, and do-while's `while (COND);`.
+    std::string guard_while_loop(const std::string& line, const std::string& function, int id,
+                                 int number) {
+        static const std::regex while_re(R"(^(\s*)while\s*\()");
+        std::smatch m;
+        if (!std::regex_search(line, m, while_re)) return line;
+        const std::size_t open = std::size_t(m.length(0)) - 1;
+        int depth = 0;
+        std::size_t close = open;
+        for (; close < line.size(); ++close) {
+            depth += line[close] == '(' ? 1 : line[close] == ')' ? -1 : 0;
+            if (depth == 0) break;
+        }
+        if (close >= line.size() || trim_left(line.substr(close + 1)).starts_with(";")) return line;
+        const std::string k = std::to_string(out_.stubs.size());
+        out_.stubs.push_back({function, out_.files[std::size_t(id)], number,
+                              "stages/09-gpu/README.md#what-changes-on-a-gpu", true});
+        return m[1].str() + "for (int rt_loop_" + k + " = 0; rt_loop_guard(rt_loop_" + k + "++, " +
+               k + ") && " + line.substr(open, close + 1 - open) + ";)" + line.substr(close + 1);
+    }
+
     // Whether a guard (guard_names) holds: one of its names is defined by the host's `defines`
     // or by a #define of the shader seen so far. No guard: true.
     bool wanted(const std::vector<std::string>& guard, const std::string& defines) const {
@@ -151,6 +178,7 @@ class Assembler {
     AssembledShader& out_;
     std::set<fs::path> included_;
     std::set<std::string> derived_;  // names the shader #defines itself
+    fs::path entry_dir_;             // the framework's shaders/ (beside the entry file)
 };
 
 }  // namespace

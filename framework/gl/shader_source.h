@@ -22,7 +22,16 @@ struct ShaderStub {
     std::string function, file;  // file as shown in messages
     int line = 0;
     std::string handout;
+    // Not a stub but a student's `while` loop, guarded: it reports when it runs kLoopLimit times
+    // in one invocation (llvmpipe would end it silently and go on with wrong values).
+    bool loop = false;
 };
+
+// Iterations of one student while loop, in one invocation, that the guard allows (the GLSL's
+// rt_loop_guard says it too). llvmpipe ends a loop after at most 65,535 iterations, fewer when it
+// is nested: the BVH traversal inside the tracer's loops was cut between 16,000 and 30,000
+// (measured). A BVH traversal of this course's scenes takes a few hundred.
+constexpr int kLoopLimit = 10000;
 
 struct AssembledShader {
     std::string text;
@@ -37,6 +46,9 @@ struct AssembledShader {
 // on the line right after `#ifdef NAME` is expanded only when `defines` defines NAME (so a file
 // of one feature, such as stage 10's sampling.glsl, and its stubs are in only the shaders of
 // scenes with that feature); other conditionals are left to the GLSL preprocessor.
+// In the files found in `include_dirs` (the student's), each `while (COND)` loop whose head is on
+// one line becomes a for loop with a counter, `rt_loop_guard(count++, k) && (COND)`, k its entry
+// in `stubs` (loop = true): an endless loop ends with a report instead of a silent wrong picture.
 AssembledShader assemble_shader(const std::filesystem::path& entry,
                                 const std::vector<std::filesystem::path>& include_dirs,
                                 const std::string& defines);

@@ -173,16 +173,19 @@ void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4
             if (!slot) slot = std::make_unique<std::atomic<bool>>(false);
             once = slot.get();
         }
-        report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
-                               *once);
+        if (s.loop)
+            report_endless_loop(s.file.c_str(), s.line, kLoopLimit, *once);
+        else
+            report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
+                                   *once);
     }
     // Every pixel runs the whole shader, so an early stub (a camera ray) hides the later ones
     // (shading, reflection) from the flags: name the rest of this shader's stubs too, once each,
     // so a student sees the whole to-do list of the scene, not one function a run.
     const bool any = flags[0] || flags[1] || flags[2] || flags[3];
     for (std::size_t k = 0; any && k < shader.stubs.size() && k < 128; ++k) {
-        if (flags[k / 32] & (1u << (k % 32))) continue;
         const ShaderStub& s = shader.stubs[k];
+        if ((flags[k / 32] & (1u << (k % 32))) || s.loop) continue;
         {
             static std::set<std::string> named;
             std::lock_guard lock(mutex);

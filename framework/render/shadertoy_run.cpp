@@ -91,8 +91,11 @@ void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::u
         const ShaderStub& s = shader.stubs[rgba[i]];
         auto& once = reported[s.file + ":" + std::to_string(s.line)];
         if (!once) once = std::make_unique<std::atomic<bool>>(false);
-        report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
-                               *once);
+        if (s.loop)
+            report_endless_loop(s.file.c_str(), s.line, kLoopLimit, *once);
+        else
+            report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
+                                   *once);
     }
 }
 

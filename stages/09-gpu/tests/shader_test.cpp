@@ -270,6 +270,47 @@ int insert_in_intersect_plane(const fs::path& file, const std::string& code) {
     return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
 }
 
+// A while loop that never ends is stopped by its guard (gl/shader_source.h) and reported with its
+// file and line, as a stub is, instead of llvmpipe ending it silently with wrong values.
+TEST(GpuShader, EndlessLoopIsStoppedAndNamed) {
+    StudentCopy copy("loop");
+    const fs::path file = copy.dir() / "intersect.glsl";
+    const int line = 1 + insert_in_intersect_plane(
+                             file, "    int spin = 1;\n    while (spin > 0) { spin = spin | 1; }");
+    GpuRenderOptions options;
+    options.student_dir = copy.dir();
+    const std::uint64_t before = stub_calls_total();
+    ::testing::internal::CaptureStderr();
+    render_gpu(small_scene("02-intersections/scenes/plane_depth.json"), RenderMode::Normals,
+               options);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_GT(stub_calls_total(), before) << "an endless loop must fail the test that ran it";
+    const std::string where = display_path(file) + ":" + std::to_string(line) + ": this loop ran " +
+                              std::to_string(kLoopLimit) + " times for one pixel and was stopped";
+    EXPECT_NE(err.find(where), std::string::npos) << "expected " << where << " in\n" << err;
+}
+
+// The same in the BVH traversal, a loop inside the tracer's own loops, where llvmpipe's silent
+// cut comes sooner (the guard must come sooner still).
+TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
+    StudentCopy copy("bvh-loop");
+    const fs::path file = copy.dir() / "bvh.glsl";
+    std::string text = read(file);
+    const std::size_t at = text.find("    while (top > 0) {\n");
+    ASSERT_NE(at, std::string::npos) << "bvh.glsl has no `while (top > 0) {` line";
+    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+    text.insert(at + std::string("    while (top > 0) {\n").size(),
+                "        if (top > 0) continue;  // never pops\n");
+    write(file, text);
+    GpuRenderOptions options;
+    options.student_dir = copy.dir();
+    ::testing::internal::CaptureStderr();
+    render_gpu(small_scene("06-bvh/scenes/large_icosphere.json"), RenderMode::Shaded, options);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    const std::string where = display_path(file) + ":" + std::to_string(line) + ": this loop ran";
+    EXPECT_NE(err.find(where), std::string::npos) << "expected " << where << " in\n" << err;
+}
+
 // Shadertoy's GLSL ES takes `const` on a local only with a constant initialiser, so the export
 // drops it from every local declaration, also one in the middle of a line.
 TEST(GpuShader, ShadertoyExportDropsLocalConstAnywhereOnTheLine) {
