@@ -12,6 +12,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "core/not_implemented.h"
 #include "gl/shader_source.h"
@@ -73,31 +74,36 @@ Scene small_scene(const std::string& relative) {
     return scene;
 }
 
+// A syntax error, an undeclared name and a type error each name the student's file and line first.
 TEST(GpuShader, CompileErrorNamesTheStudentFileAndLine) {
-    StudentCopy copy("broken");
-    const fs::path file = copy.dir() / "intersect.glsl";
-    std::string text = read(file);
-    // Break the first line of intersect_plane's body (the same line in a starter tree).
-    const std::size_t function = text.find("bool intersect_plane(");
-    ASSERT_NE(function, std::string::npos);
-    const std::size_t at = text.find("{\n", function) + 2;
-    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
-    text.insert(at, "    float broken = undeclared_thing;\n");
-    write(file, text);
-    GpuRenderOptions options;
-    options.student_dir = copy.dir();
-    try {
-        render_gpu(small_scene("02-intersections/scenes/spheres_normals.json"), RenderMode::Normals,
-                   options);
-        FAIL() << "a shader with an undeclared name compiled";
-    } catch (const GpuError& e) {
-        const std::string message = e.what();
-        const std::string where = display_path(file) + ":" + std::to_string(line) + ":";
-        EXPECT_EQ(message.rfind(where, 0), 0u)
-            << "expected the message to start with " << where << "\n"
-            << message;
-        EXPECT_NE(message.find("error"), std::string::npos) << message;
-        EXPECT_NE(message.find("undeclared_thing"), std::string::npos) << message;
+    const std::pair<const char*, const char*> mistakes[] = {
+        {"    float broken = ;", "syntax error"},
+        {"    float broken = undeclared_thing;", "undeclared_thing"},
+        {"    vec3 broken = 1.0 + ivec2(1);", "vec3"}};
+    for (const auto& [code, says] : mistakes) {
+        SCOPED_TRACE(code);
+        StudentCopy copy("broken");
+        const fs::path file = copy.dir() / "intersect.glsl";
+        std::string text = read(file);
+        // Break the first line of intersect_plane's body (the same line in a starter tree).
+        const std::size_t at = text.find("{\n", text.find("bool intersect_plane(")) + 2;
+        const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+        write(file, text.insert(at, std::string(code) + "\n"));
+        GpuRenderOptions options;
+        options.student_dir = copy.dir();
+        try {
+            render_gpu(small_scene("02-intersections/scenes/spheres_normals.json"),
+                       RenderMode::Normals, options);
+            ADD_FAILURE() << "a shader with this line compiled";
+        } catch (const GpuError& e) {
+            const std::string message = e.what();
+            const std::string where = display_path(file) + ":" + std::to_string(line) + ":";
+            EXPECT_EQ(message.rfind(where, 0), 0u)
+                << "expected the message to start with " << where << "\n"
+                << message;
+            EXPECT_NE(message.find("error"), std::string::npos) << message;
+            EXPECT_NE(message.find(says), std::string::npos) << message;
+        }
     }
 }
 
