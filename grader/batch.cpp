@@ -96,6 +96,7 @@ int run_package(const fs::path& source, const fs::path& out, const std::vector<i
     // The whole instructor tree (hidden tests and references included: the zip stays with the
     // course staff), without build trees.
     const fs::path src = stage / "source";
+    fs::create_directories(src);  // a top-level file may come before any folder
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(source, ec);
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
