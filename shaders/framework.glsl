@@ -161,3 +161,11 @@ vec3 shading_normal(int triangle, vec2 uv) {
     n /= len;
     return dot(n, geometric) < 0.0 ? -n : n;
 }
+
+#ifndef HAS_DEBUG_PIXEL
+// rt_debug(value) prints a value of the --debug-pixel pixel (shaders/debug_pixel.glsl); without
+// --debug-pixel it and the framework's notes are nothing.
+#define rt_debug(value)
+#define rt_debug_note(kind, where, value)
+#define rt_debug_note_typed(kind, where, type, value)
+#endif

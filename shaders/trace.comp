@@ -12,31 +12,52 @@
 //   MAX_LIGHTS (>= 1), MAX_DEPTH (0..64)                                fixed array sizes
 //   MAX_AREA_LIGHTS, MAX_MOVING_SPHERES (>= 1), MAX_SPHERES (motion blur) stage 10's array sizes
 // rt render --gpu --uber defines them all (scene_has() then decides at run time).
+// HAS_DEBUG_PIXEL: rt render --gpu --debug-pixel X,Y (debug_pixel.glsl).
 // The tracer itself is trace.glsl (rt export-shadertoy shares it); this file binds it to the
 // storage buffers and uniforms of framework/render/gpu_render.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "scene_layout.glsl"
 #include "compute_io.glsl"
+#ifdef HAS_DEBUG_PIXEL
+#include "debug_pixel.glsl"
+#endif
 #include "trace.glsl"
 
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x >= image_size.x || pixel.y >= image_size.y) return;
     const int i = pixel.y * image_size.x + pixel.x;
+#ifdef HAS_DEBUG_PIXEL
+    const bool debug_pixel = pixel == debug_pixel_at;
+#endif
 #ifdef HAS_SAMPLING
     if (render_mode == 4 && scene_has(kFeatureSampled)) {
         // Stage 10: add this dispatch's camera samples to the pixel's sum.
         vec4 sum = sample_first == 0 ? vec4(0) : pixels[i];
-        for (int s = sample_first; s < sample_first + sample_count; ++s)
+        for (int s = sample_first; s < sample_first + sample_count; ++s) {
+#ifdef HAS_DEBUG_PIXEL
+            rt_debugging = debug_pixel && s == 0;  // the first camera sample's values
+#endif
             sum.rgb += sample_pixel(pixel, s);
+        }
         if (rt_stub_reached) sum.a = -2.0;
         pixels[i] = sum;
+#ifdef HAS_DEBUG_PIXEL
+        rt_debugging = debug_pixel && sample_first == 0;
+        rt_debug_finish();
+#endif
         return;
     }
 #endif
 #ifdef HAS_MOTION_BLUR
     for (int k = 0; k < primitive_counts.x && k < MAX_SPHERES; ++k) spheres[k] = spheres_at_rest[k];
 #endif
+#ifdef HAS_DEBUG_PIXEL
+    rt_debugging = debug_pixel;
+#endif
     pixels[i] = trace_pixel(vec2(pixel) + 0.5);
+#ifdef HAS_DEBUG_PIXEL
+    rt_debug_finish();
+#endif
 }

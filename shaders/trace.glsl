@@ -189,6 +189,8 @@ vec3 local_light(PreparedHit p) {
 #endif
         visibility[i] = light_transmittance(p.at, s);
     }
+    for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i)
+        rt_debug_note(kDebugShadow, i, vec4(visibility[i], 0));
 #endif
     vec3 colour = direct_light(material, p.at.point, p.lighting_normal, p.to_viewer, visibility);
 #ifdef HAS_SAMPLING
@@ -205,6 +207,19 @@ vec3 incoming_radiance(Ray ray) {
 }
 #endif
 
+// --debug-pixel's notes of a ray and of its hit (debug_pixel.glsl); nothing without it.
+void note_ray(int depth, Ray ray, int branch) {
+    rt_debug_note(kDebugRay, depth, vec4(ray.origin, float(branch)));
+    rt_debug_note(kDebugDirection, depth, vec4(ray.direction, 0));
+}
+void note_hit(int depth, Hit hit, vec3 point, vec3 normal) {
+    rt_debug_note_typed(kDebugHit, depth, hit.front_face ? 1 : 0,
+                        vec4(hit.t, float(primitive_kind(hit.primitive)),
+                             float(primitive_index(hit.primitive)), float(hit.material)));
+    rt_debug_note(kDebugPoint, depth, vec4(point, 0));
+    rt_debug_note(kDebugNormal, depth, vec4(normal, 0));
+}
+
 // A frame's own work, as start_frame in render/shade.cpp: nearest hit, its local light, and the
 // secondary rays when the material reflects or transmits.
 void start_frame(inout Frame f) {
@@ -212,9 +227,11 @@ void start_frame(inout Frame f) {
     f.recurse = false;
     if (!nearest_hit(f.ray, Interval(0.0, kInfinity), hit)) {
         f.colour = background(f.ray.direction);
+        rt_debug_note(kDebugMiss, f.depth, vec4(f.colour, 0));
         return;
     }
     const PreparedHit p = prepare_hit(f.ray, hit);
+    note_hit(f.depth, hit, p.at.point, p.lighting_normal);
     f.colour = local_light(p);
 #ifdef HAS_INDIRECT
     if (scene_has(kFeatureIndirect))
@@ -228,7 +245,10 @@ void start_frame(inout Frame f) {
     bounces = bounces || nonzero(p.material.transmissive_ior.rgb);
 #endif
     f.recurse = f.depth < max_depth && bounces;
-    if (!f.recurse) return;
+    if (!f.recurse) {
+        rt_debug_note(kDebugLocal, f.depth, vec4(f.colour, 0));
+        return;
+    }
     f.branches = secondary_rays(f.ray, p.at, p.material, fresnel);
 #ifdef HAS_GLOSSY
     // Stage 10: the mirror ray turned by the material's fuzz; into the surface it is absorbed.
@@ -243,6 +263,11 @@ void start_frame(inout Frame f) {
             f.branches.reflected.ray = Ray(offset_ray_origin(p.at.point, p.at.error, p.at.normal, d), d);
     }
 #endif
+    rt_debug_note(kDebugLocal, f.depth, vec4(f.colour, 0));
+    rt_debug_note(kDebugReflected, f.depth,
+                  vec4(f.branches.reflected.weight, f.branches.reflected.valid ? 1 : 0));
+    rt_debug_note(kDebugRefracted, f.depth,
+                  vec4(f.branches.refracted.weight, f.branches.refracted.valid ? 1 : 0));
 }
 
 // render/shade.cpp's trace: a loop over a fixed stack instead of recursion. Level k of the stack
@@ -260,8 +285,10 @@ vec3 trace(Ray ray) {
     int top = 0;
     Frame f;
     f.ray = ray;
+    int branch = 0;  // what f.ray is, for --debug-pixel: 0 the camera's, 1 reflected, 2 refracted
     for (;;) {
         f.depth = top;
+        note_ray(top, f.ray, branch);
         start_frame(f);
         colour[top] = f.colour;
         next[top] = 0, end[top] = 0;
@@ -283,6 +310,7 @@ vec3 trace(Ray ray) {
         }
         // Descend into that branch, as a recursive call would.
         f.ray = Ray(origin[2 * top + next[top]], direction[2 * top + next[top]]);
+        branch = next[top] + 1;
         ++top;
     }
 }
@@ -305,6 +333,7 @@ vec3 primitive_colour(int id) {
 vec4 trace_pixel(vec2 pixel) {
     const Ray ray = camera_ray(pixel);
     vec4 result = vec4(0, 0, 0, -1);
+    if (render_mode != 4) note_ray(0, ray, 0);
     if (render_mode == 0) {
         if (!any(isinf(ray.direction)) && !any(isnan(ray.direction)))
             result.rgb = 0.5 * (ray.direction + 1.0);
@@ -319,12 +348,16 @@ vec4 trace_pixel(vec2 pixel) {
     } else {
         Hit hit = no_hit();
         if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {
+            note_hit(0, hit, hit.point, hit.normal);
             result.rgb = render_mode == 3 ? primitive_colour(hit.primitive)
                                           : 0.5 * (hit.normal + 1.0);
             result.a = hit.t;
+        } else {
+            rt_debug_note(kDebugMiss, 0, vec4(0));
         }
     }
     if (rt_stub_reached) result = vec4(1, 0, 1, -2);
+    rt_debug_note(kDebugPixel, 0, result);
     return result;
 }
 
@@ -352,6 +385,7 @@ vec3 sample_pixel(ivec2 pixel, int sample_index) {
     const vec2 offset = sampling.spp_filter_indirect.y == 1 ? tent_filter_offset(jitter)
                                                             : box_filter_offset(jitter);
     Ray ray = camera_ray(vec2(pixel) + 0.5 + offset);
+    rt_debug_note(kDebugSample, sample_index, vec4(vec2(pixel) + 0.5 + offset, 0, 0));
 #ifdef HAS_DEPTH_OF_FIELD
     if (scene_has(kFeatureDepthOfField))
         ray = thin_lens_ray(ray, sampling.lens_shutter.x, sampling.lens_shutter.y, rng_next2());
@@ -359,6 +393,8 @@ vec3 sample_pixel(ivec2 pixel, int sample_index) {
 #ifdef HAS_MOTION_BLUR
     move_spheres(shutter_time(sampling.lens_shutter.z, sampling.lens_shutter.w, rng_next()));
 #endif
-    return trace(ray);
+    const vec3 colour = trace(ray);
+    rt_debug_note(kDebugPixel, 0, vec4(colour, 0));
+    return colour;
 }
 #endif

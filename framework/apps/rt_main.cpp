@@ -1,6 +1,7 @@
 // rt: the renderer students and lecturers run. It links the stage code (the student files).
 //   rt render SCENE.json -o OUT.png [--mode M] [--width W --height H] [--threads N]
 //   rt render SCENE.json --debug-pixel X,Y [--debug-format text|json]   the ray tree of a pixel
+//   rt render SCENE.json --gpu --debug-pixel X,Y     what stage 09's shader computed there
 //   rt render SCENE.json -o OUT.png --overlay-pixel X,Y                 ... drawn onto the image
 //   rt render SCENE.json -o OUT.png --shadows off --max-depth 1         the viewer's toggles
 //   rt gallery [--out DIR]       every scene of every stage, in its own mode, and DIR/index.html
@@ -31,6 +32,7 @@
 #include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
+#include "render/gpu_debug_pixel.h"
 #include "render/gpu_render.h"
 #include "render/oiio_textures.h"
 #include "render/progress.h"
@@ -100,6 +102,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// --debug-pixel: the CPU's ray tree (text or JSON), or with --gpu what the shader computed.
+std::string debug_pixel_text(const RenderArgs& args, const Scene& scene, RenderMode mode,
+                             const GpuRenderOptions& gpu, int x, int y) {
+    if (args.gpu) {
+        if (args.debug_format == "json")
+            throw std::runtime_error(
+                "rt: error: --debug-format json is the CPU ray tree's; with --gpu the values "
+                "print as text (drop --debug-format)");
+        return gpu_pixel_text(scene, debug_pixel_gpu(scene, mode, x, y, gpu));
+    }
+    const PixelTree tree = debug_pixel(scene, x, y);
+    return args.debug_format == "json" ? ray_tree_json(scene, tree) + "\n"
+                                       : ray_tree_text(scene, tree);
+}
+
 int run_render(const RenderArgs& args) {
     if (args.uber && !args.gpu)
         throw std::runtime_error("rt: error: --uber chooses the GPU shader; add --gpu");
@@ -126,12 +143,13 @@ int run_render(const RenderArgs& args) {
     if (accel.built && !args.quiet)
         std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n",
                     accel.primitives, accel.nodes, accel.depth, accel.build_ms);
+    GpuRenderOptions gpu;
+    gpu.context = *parse_gl_kind(args.gl);
+    gpu.log = args.quiet ? nullptr : &std::cout;
+    gpu.uber = args.uber;
     if (!args.debug_pixel.empty()) {
         const auto [x, y] = parse_pixel(args.debug_pixel, "--debug-pixel", scene);
-        const PixelTree tree = debug_pixel(scene, x, y);
-        const std::string text = args.debug_format == "json" ? ray_tree_json(scene, tree) + "\n"
-                                                             : ray_tree_text(scene, tree);
-        std::fputs(text.c_str(), stdout);
+        std::fputs(debug_pixel_text(args, scene, mode, gpu, x, y).c_str(), stdout);
         if (args.output.empty()) return 0;
     }
     if (args.output.empty())
@@ -143,10 +161,6 @@ int run_render(const RenderArgs& args) {
     RenderOptions options;
     options.threads = args.threads;
     options.show_progress = !args.quiet && stdout_is_terminal();
-    GpuRenderOptions gpu;
-    gpu.context = *parse_gl_kind(args.gl);
-    gpu.log = args.quiet ? nullptr : &std::cout;
-    gpu.uber = args.uber;
     Image image = args.gpu ? render_gpu(scene, mode, gpu) : render(scene, mode, options);
     if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
@@ -328,7 +342,8 @@ int main(int argc, char** argv) {
     render_cmd->add_option("scene", render_args.scene, "scene file (.json)")->required();
     render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)");
     render_cmd->add_option("--debug-pixel", render_args.debug_pixel,
-                           "print the ray tree of pixel X,Y (shaded mode; -o optional)");
+                           "print the ray tree of pixel X,Y (shaded mode; -o optional); with --gpu "
+                           "what the shader computed there, and each rt_debug(value)");
     render_cmd->add_option("--debug-format", render_args.debug_format, "text (default) or json")
         ->check(CLI::IsMember({"text", "json"}));
     render_cmd->add_option("--overlay-pixel", render_args.overlay_pixel,

@@ -198,15 +198,19 @@ std::string display_path(const fs::path& path) {
     return absolute.generic_string();
 }
 
+ShaderLocation shader_location(long line, const std::vector<std::string>& files,
+                               std::size_t source_string) {
+    const std::size_t i = line >= kFileLines ? std::size_t(line / kFileLines) : source_string;
+    return {i < files.size() ? files[i] : "source " + std::to_string(i), int(line % kFileLines)};
+}
+
 std::string map_compile_log(const std::string& log, const std::vector<std::string>& files) {
     static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\): (.*)$)");
     static const std::regex glslang(R"(^(ERROR|WARNING): (\d+):(\d+): (.*)$)");
     // "file:line" of a (source string, line) pair; the line number carries the file.
     auto where = [&](const std::string& k, const std::string& l) {
-        const long line = std::stol(l);
-        const std::size_t i = line >= kFileLines ? std::size_t(line / kFileLines) : std::stoul(k);
-        const std::string name = i < files.size() ? files[i] : "source " + std::to_string(i);
-        return name + ":" + std::to_string(line % kFileLines);
+        const ShaderLocation at = shader_location(std::stol(l), files, std::stoul(k));
+        return at.file + ":" + std::to_string(at.line);
     };
     std::istringstream lines(log);
     std::string line, out;

@@ -56,6 +56,16 @@ AssembledShader assemble_shader(const std::filesystem::path& entry,
 // A path as messages show it: relative to the course tree when inside it.
 std::string display_path(const std::filesystem::path& path);
 
+// Where line `line` of an assembled shader's numbering (its #line directives', hence __LINE__'s)
+// is: the file (as `files` names it) and its line. Lines below the first file's code are in
+// source string `source_string`.
+struct ShaderLocation {
+    std::string file;
+    int line = 0;
+};
+ShaderLocation shader_location(long line, const std::vector<std::string>& files,
+                               std::size_t source_string = 0);
+
 // A compiler log (Mesa's "K:L(C): error: msg" or glslang's "ERROR: K:L: msg") with each source
 // string K replaced by its file: "file:L:C: error: msg". Lines it does not recognise are kept.
 std::string map_compile_log(const std::string& log, const std::vector<std::string>& files);

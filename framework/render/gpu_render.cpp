@@ -17,6 +17,7 @@
 #include "gl/compute_program.h"
 #include "gpu/gpu_scene.h"
 #include "image/image.h"
+#include "render/gpu_debug_pixel.h"
 #include "render/render.h"
 
 namespace fs = std::filesystem;
@@ -247,14 +248,27 @@ std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
     return d;
 }
 
-AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
-                                      const fs::path& student_dir, bool uber,
-                                      const fs::path& sampling_dir) {
+namespace {
+
+AssembledShader assemble_trace(const std::string& defines, const fs::path& student_dir,
+                               const fs::path& sampling_dir) {
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
     // sampling.glsl is looked up after stage 09's folder: only a stage 10 scene includes it.
-    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling},
-                           gpu_defines(scene, mode, uber));
+    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling}, defines);
+}
+
+// The program's #defines: the scene's, and the --debug-pixel notes when asked for.
+std::string program_defines(const Scene& scene, RenderMode mode, bool uber, bool probe) {
+    return gpu_defines(scene, mode, uber) + (probe ? "#define HAS_DEBUG_PIXEL\n" : "");
+}
+
+}  // namespace
+
+AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
+                                      const fs::path& student_dir, bool uber,
+                                      const fs::path& sampling_dir) {
+    return assemble_trace(gpu_defines(scene, mode, uber), student_dir, sampling_dir);
 }
 
 struct GpuRenderer::Program {
@@ -277,14 +291,12 @@ std::string GpuRenderer::describe() const {
     return context_->describe();
 }
 
-const GpuRenderer::Program& GpuRenderer::program_for(const Scene& scene, RenderMode mode,
+const GpuRenderer::Program& GpuRenderer::program_for(const std::string& defines,
                                                      GpuTimings& timings) {
-    const std::string defines = gpu_defines(scene, mode, options_.uber);
     if (const auto it = programs_.find(defines); it != programs_.end()) return *it->second;
     const auto start = std::chrono::steady_clock::now();
     auto program = std::make_unique<Program>();
-    program->shader = assemble_trace_shader(scene, mode, options_.student_dir, options_.uber,
-                                            options_.sampling_dir);
+    program->shader = assemble_trace(defines, options_.student_dir, options_.sampling_dir);
     std::string error;
     program->id = build_compute_program(context_->gl(), program->shader, error);
     if (!program->id) throw GpuError(error);
@@ -293,11 +305,13 @@ const GpuRenderer::Program& GpuRenderer::program_for(const Scene& scene, RenderM
     return *(programs_[defines] = std::move(program));
 }
 
-Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out) {
+Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out,
+                          GpuPixelProbe* probe) {
     check_gpu_supported(scene, mode);
     GpuTimings timings;
-    const bool fresh = programs_.find(gpu_defines(scene, mode, options_.uber)) == programs_.end();
-    const Program& program = program_for(scene, mode, timings);
+    const std::string defines = program_defines(scene, mode, options_.uber, probe != nullptr);
+    const bool fresh = programs_.find(defines) == programs_.end();
+    const Program& program = program_for(defines, timings);
     const GlApi& gl = context_->gl();
     auto start = std::chrono::steady_clock::now();
     // Milliseconds since `start`, which moves on to now.
@@ -336,14 +350,17 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     gl.BufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
     gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, uniform_block);
     buffers.push_back(uniform_block);
-    // The output: 4 words of stub flags, then one vec4 a pixel (stage 10: sums of samples).
+    // The output: 4 words of stub flags, then one vec4 a pixel (stage 10: sums of samples), then
+    // --debug-pixel's notes.
     const int width = scene.image.width, height = scene.image.height;
     const std::size_t pixel_count = std::size_t(width) * std::size_t(height);
-    std::vector<glm::vec4> output(pixel_count + 1, glm::vec4(0));
+    std::vector<glm::vec4> output(pixel_count + 1 + (probe ? gpu_probe_vec4s() : 0), glm::vec4(0));
     buffers.push_back(upload(gl, 15, output));
 
     gl.UseProgram(program.id);
     set_uniforms(gl, program.id, scene, mode);
+    if (probe)
+        gl.Uniform2i(gl.GetUniformLocation(program.id, "debug_pixel_at"), probe->x, probe->y);
     gl.Finish();  // the uploads are not the trace's time
     lap();
     if (timings_out && fresh) {
@@ -387,6 +404,7 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     std::uint32_t flags[4];
     std::memcpy(flags, &output[0], sizeof flags);
     report_gpu_stubs(program.shader, flags);
+    if (probe) read_gpu_probe(output, pixel_count, program.shader, *probe);
 
     if (cancelled) throw GpuError("gpu: render cancelled");
     // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.

@@ -22,6 +22,8 @@
 
 namespace rt {
 
+struct GpuPixelProbe;  // render/gpu_debug_pixel.h
+
 // Where a GPU render's time went (rt-bench gpu): milliseconds of wall-clock time.
 struct GpuTimings {
     double context_ms = 0;  // creating the OpenGL context
@@ -75,14 +77,16 @@ class GpuRenderer {
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
     // As render_gpu below; `timings`, when set, gets this render's figures (compile_ms is 0
-    // when the program came from the cache).
-    Image render(const Scene& scene, RenderMode mode, GpuTimings* timings = nullptr);
+    // when the program came from the cache); `probe`, when set, gets what the shader computed
+    // for its pixel (render/gpu_debug_pixel.h).
+    Image render(const Scene& scene, RenderMode mode, GpuTimings* timings = nullptr,
+                 GpuPixelProbe* probe = nullptr);
     std::string describe() const;  // the context, as --gpu logs it
     std::size_t cached_programs() const { return programs_.size(); }
 
   private:
     struct Program;
-    const Program& program_for(const Scene& scene, RenderMode mode, GpuTimings& timings);
+    const Program& program_for(const std::string& defines, GpuTimings& timings);
 
     GpuRenderOptions options_;
     std::unique_ptr<GlContext> context_;

@@ -30,20 +30,6 @@ const char* kind_name(Scene::Kind kind) {
     return "?";
 }
 
-std::string primitive_name(const Scene& scene, int id) {
-    if (!scene.is_primitive(id)) return "none";
-    std::size_t index = 0;
-    const Scene::Kind kind = scene.primitive_kind(id, index);
-    return std::string(kind_name(kind)) + " " + std::to_string(index) + " (id " +
-           std::to_string(id) + ")";
-}
-
-std::string material_name(const Scene& scene, int m) {
-    if (m < 0 || std::size_t(m) >= scene.materials.size()) return "?";
-    const std::string& name = scene.material_name(m);
-    return name.empty() ? "#" + std::to_string(m) : "\"" + name + "\"";
-}
-
 template <typename V>
 json array3(const V& v) {
     return json::array({double(v[0]), double(v[1]), double(v[2])});
@@ -196,6 +182,20 @@ void draw_node(const Scene& scene, const RayNode& n, Real far, Image& image) {
 }
 
 }  // namespace
+
+std::string primitive_name(const Scene& scene, int id) {
+    if (!scene.is_primitive(id)) return "none";
+    std::size_t index = 0;
+    const Scene::Kind kind = scene.primitive_kind(id, index);
+    return std::string(kind_name(kind)) + " " + std::to_string(index) + " (id " +
+           std::to_string(id) + ")";
+}
+
+std::string material_name(const Scene& scene, int m) {
+    if (m < 0 || std::size_t(m) >= scene.materials.size()) return "?";
+    const std::string& name = scene.material_name(m);
+    return name.empty() ? "#" + std::to_string(m) : "\"" + name + "\"";
+}
 
 PixelTree debug_pixel(const Scene& scene, int x, int y) {
     PixelTree tree;

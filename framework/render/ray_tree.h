@@ -16,6 +16,11 @@ struct PixelTree {
     RayNode root;
 };
 
+// "sphere 1 (id 1)", "none"; a material's name in quotes, or "#M" when it has none: as the
+// tree names them (the GPU's --debug-pixel too).
+std::string primitive_name(const Scene& scene, int id);
+std::string material_name(const Scene& scene, int m);
+
 // Traces pixel (x, y) of the shaded render, recording every ray.
 PixelTree debug_pixel(const Scene& scene, int x, int y);
 

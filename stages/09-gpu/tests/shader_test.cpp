@@ -22,6 +22,7 @@
 #include "render/shadertoy_export.h"
 #include "render/shadertoy_run.h"
 #include "scene/scene_loader.h"
+#include "student_copy.h"
 #include "testing/stage_test.h"
 
 namespace fs = std::filesystem;
@@ -29,43 +30,7 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-const char* const kStudentFiles[] = {"camera.glsl",     "intersect.glsl", "bvh.glsl",
-                                     "shade.glsl",      "recursion.glsl", "textures.glsl",
-                                     "environment.glsl"};
-
-std::string read(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
-
-// A fresh copy of stages/09-gpu's GLSL in a temporary folder.
-class StudentCopy {
-  public:
-    explicit StudentCopy(const std::string& name)
-        : dir_(fs::temp_directory_path() /
-               ("rt-stage09-" + name + "-" + std::to_string(getpid()))) {
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-        for (const char* f : kStudentFiles)
-            fs::copy_file(::rt::testing::source_dir() / "stages/09-gpu" / f, dir_ / f);
-    }
-    ~StudentCopy() { fs::remove_all(dir_); }
-    const fs::path& dir() const { return dir_; }
-
-  private:
-    fs::path dir_;
-};
-
-// The release tool's own stripping (grader/markers.cpp): solutions out, stubs un-commented.
-std::string strip_solutions(const std::string& text) {
-    return grader::process_markers(text, grader::RegionMode::Strip).text;
-}
+using namespace gpu_test;
 
 Scene small_scene(const std::string& relative) {
     Scene scene = load_scene(::rt::testing::source_dir() / "stages" / relative);
@@ -167,7 +132,8 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         "#define HAS_VERTEX_UVS\n#define HAS_TEXTURES\n#define HAS_NORMAL_MAPS\n"
         "#define HAS_IMAGE_TEXTURES\n#define HAS_CHECKER_TEXTURES\n#define HAS_NOISE_TEXTURES\n";
     const std::string variants[] = {
-        all, all + "#define HAS_REFRACTION\n", all + maps + "#define HAS_ENVIRONMENT\n",
+        all, all + "#define HAS_REFRACTION\n#define HAS_DEBUG_PIXEL\n",
+        all + maps + "#define HAS_ENVIRONMENT\n",
         "#define HAS_SPHERES\n#define HAS_CHECKER_TEXTURES\n#define HAS_TEXTURES\n"
         "#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
         "#define HAS_ENVIRONMENT\n#define MAX_LIGHTS 1\n#define MAX_DEPTH 2\n",
@@ -178,7 +144,7 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
             "#define HAS_AREA_LIGHTS\n#define HAS_DEPTH_OF_FIELD\n#define HAS_GLOSSY\n"
             "#define HAS_OCCLUSION\n#define HAS_INDIRECT\n#define HAS_MOTION_BLUR\n"
             "#define MAX_SPHERES 8\n#define MAX_AREA_LIGHTS 64\n"
-            "#define MAX_MOVING_SPHERES 64\n",
+            "#define MAX_MOVING_SPHERES 64\n#define HAS_DEBUG_PIXEL\n",
         // ... and a few scenes' own: pixel samples only, soft shadows, indirect light, motion.
         "#define HAS_SPHERES\n#define HAS_SAMPLING\n#define MAX_LIGHTS 1\n#define MAX_DEPTH 0\n",
         "#define HAS_SPHERES\n#define HAS_PLANES\n#define HAS_BOXES\n#define HAS_SAMPLING\n"
