@@ -75,16 +75,6 @@ struct RenderArgs {
     bool uber = false;       // --gpu with every feature compiled in
 };
 
-// Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal.
-void turn_camera(Camera& camera, double degrees) {
-    const Real a = Real(degrees * 3.14159265358979323846 / 180.0);
-    const Real c = std::cos(a), s = std::sin(a);
-    const Vec3 u = c * camera.u + s * camera.w;
-    const Vec3 w = c * camera.w - s * camera.u;
-    camera.u = u;
-    camera.w = w;
-}
-
 // "X,Y" inside the image, or a usage error.
 std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
     int x = -1, y = -1;
