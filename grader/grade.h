@@ -8,47 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "course/manifest.h"
 #include "image/compare.h"
 #include "image/image.h"
 
 namespace rt::grader {
 
-// stages/NN-name/grading.json
-struct ImageThresholds {
-    int tolerance = 2;          // 8-bit steps a channel may differ
-    double pass_percent = 0.1;  // failing pixels at or below this: full points
-    double fail_percent = 2.0;  // at or above this: no points; linear in between
-    bool neighbourhood = true;  // forgive anti-aliased edges (3x3 reference neighbourhood)
-    int block = 0;  // > 0: compare means over block x block squares (Monte Carlo renders)
-};
-struct SceneSpec {
-    std::string name;    // <folder>/scenes/<name>.json, reference_images/<folder's name>/<name>.png
-    std::string folder;  // stages/NN-name: the grading stage's own, or another's ("from")
-    double points = 1;
-    std::string visibility = "visible";
-    ImageThresholds thresholds;
-};
-struct UnitGroup {
-    std::string binary;                     // a GoogleTest target of the instructor's build
-    std::vector<std::string> include{"*"};  // gtest-style patterns over Suite.Test
-    std::vector<std::string> exclude;
-    std::vector<std::string> hidden_sources;  // relative to the stage folder; never released
-    double points = 1;                        // each test
-    std::string visibility = "visible";
-};
-struct StageSpec {
-    int number = 0;
-    std::string folder;  // stages/NN-name
-    std::string title;
-    std::vector<std::string> student_files;  // relative to the folder
-    std::vector<UnitGroup> groups;
-    std::vector<SceneSpec> scenes;
-    double test_seconds = 10;
-    double render_seconds = 30;
-    // "renderer": "gpu" (stage 09): the student files are GLSL, loaded by the test binaries and
-    // `rt render --gpu` at run time (RT_GPU_STUDENT_DIR), never compiled into objects.
-    bool gpu = false;
-};
+// The stages' manifests (stage.json, grading.json): ImageThresholds, SceneSpec, UnitGroup,
+// StageSpec and load_stage_specs are course/manifest.h's.
 
 // A student file compiled into the stage objects (C++), as opposed to GLSL read at run time.
 bool is_compiled_student_file(const std::string& key);
@@ -63,9 +30,6 @@ inline std::string judge_target(const std::string& binary) {
 inline bool is_judge_target(const std::string& target) {
     return target.ends_with("_judge");
 }
-
-// Every stage that has a grading.json, in order. Throws std::runtime_error naming the file.
-std::vector<StageSpec> load_stage_specs(const std::filesystem::path& source);
 
 struct GradeOptions {
     std::filesystem::path source;      // the instructor's tree

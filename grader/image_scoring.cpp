@@ -36,12 +36,7 @@ bool read_render(const fs::path& file, Image& image, std::string& why) {
 
 ImageScore score_image(const Image8& actual, const Image8& reference, const ImageThresholds& th) {
     ImageScore score;
-    CompareOptions co;
-    co.tolerance = th.tolerance;
-    co.max_failing_percent = th.pass_percent;
-    co.neighbourhood = th.neighbourhood;
-    co.block = th.block;
-    score.compare = compare_images(actual, reference, co);
+    score.compare = compare_images(actual, reference, th.compare_options());
     if (!score.compare.size_matches) {
         score.metrics = "the image is " + std::to_string(actual.width) + "x" +
                         std::to_string(actual.height) + ", the reference " +

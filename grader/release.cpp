@@ -2,13 +2,13 @@
 // marker logic it applies to each student file is in markers.cpp.
 #include "release.h"
 
+#include "course/manifest.h"
+
 #include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
 #include <system_error>
-
-#include <nlohmann/json.hpp>
 
 #include "util.h"
 
@@ -104,39 +104,6 @@ std::optional<FileList> list_source_files(const ReleaseOptions& options, std::os
     return list;
 }
 
-struct StageInfo {
-    std::string title;
-    std::set<std::string> student_files;
-    std::string problem;  // why stage.json is unusable, empty if fine
-};
-
-StageInfo load_stage_json(const fs::path& path) {
-    StageInfo info;
-    std::string text;
-    if (!read_text_if(path, text)) {
-        info.problem = "missing or unreadable";
-        return info;
-    }
-    try {
-        const nlohmann::json json = nlohmann::json::parse(text);
-        if (json.contains("title") && json["title"].is_string()) info.title = json["title"];
-        if (!json.contains("student_files") || !json["student_files"].is_array()) {
-            info.problem = "has no \"student_files\" array";
-            return info;
-        }
-        for (const auto& file : json["student_files"]) {
-            if (!file.is_string()) {
-                info.problem = "lists a \"student_files\" entry that is not a string";
-                return info;
-            }
-            info.student_files.insert(file.get<std::string>());
-        }
-    } catch (const nlohmann::json::exception& e) {
-        info.problem = std::string("is not valid JSON (") + e.what() + ")";
-    }
-    return info;
-}
-
 // A stage file whose regions were rewritten, held until every file has been validated.
 struct Rewritten {
     std::string relative;
@@ -198,7 +165,7 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
     auto stage_info = [&](const std::string& folder) -> StageInfo& {
         auto it = stages.find(folder);
         if (it == stages.end())
-            it = stages.emplace(folder, load_stage_json(options.source / folder / "stage.json"))
+            it = stages.emplace(folder, read_stage_info(options.source / folder / "stage.json"))
                      .first;
         return it->second;
     };
@@ -245,7 +212,8 @@ int run_release(const ReleaseOptions& options_in, std::ostream& log, std::ostrea
                     {where.line, "error: " + stage->folder + "/stage.json " + info.problem +
                                      "; give the stage a stage.json listing its "
                                      "\"student_files\""}));
-            } else if (!info.student_files.contains(stage->relative)) {
+            } else if (std::find(info.student_files.begin(), info.student_files.end(),
+                                 stage->relative) == info.student_files.end()) {
                 problems.push_back(format_error(
                     relative,
                     {where.line, "error: file has solution markers but is not listed in " +

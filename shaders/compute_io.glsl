@@ -26,8 +26,8 @@ uniform int sample_count;
 Sphere spheres[MAX_SPHERES];
 #endif
 
-// Binding 15: the stub flags (one bit per stub, the host reports each once), then the pixels.
-layout(std430, binding = 15) buffer Output {
+// RT_BINDING_OUTPUT: the stub flags (one bit per stub, the host reports each once), then the pixels.
+layout(std430, binding = RT_BINDING_OUTPUT) buffer Output {
     uint stub_flags[4];
     vec4 pixels[];  // rgb colour (stage 10: the sum of the samples so far); a: depth (-1 miss),
                     // -2 when the pixel reached a stub

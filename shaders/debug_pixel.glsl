@@ -7,24 +7,10 @@
 // Records: two vec4 each, a tag (kind, where, type, 0) and a value. Integers go as floats, exact
 // below 2^24 (bit patterns would be denormals, which llvmpipe may flush to zero).
 uniform ivec2 debug_pixel_at;
-const int kDebugCapacity = 512;  // records kept; the rest are counted (gpu_debug_pixel.h)
+// kDebugCapacity (the notes kept) and the notes' kinds kDebug*: the prelude's
+// (framework/gpu/shader_constants.h).
 bool rt_debugging = false;       // this invocation is the pixel's (stage 10: its first sample)
 int rt_debug_count = 0;
-
-// What the framework notes (the kinds gpu_debug_pixel.cpp prints) and a student's rt_debug.
-const int kDebugValue = 0;      // where: the __LINE__ of rt_debug; type: float vec2 vec3 vec4 int bool
-const int kDebugRay = 1;        // where: depth; value: origin, w the branch (0 camera 1 refl. 2 refr.)
-const int kDebugDirection = 2;  // where: depth
-const int kDebugHit = 3;        // value: t, kind, index, material; type: 1 on the front face
-const int kDebugPoint = 4;
-const int kDebugNormal = 5;     // the lighting normal
-const int kDebugMiss = 6;       // value: the background
-const int kDebugShadow = 7;     // where: the light; value: its visibility
-const int kDebugLocal = 8;      // the local light (direct light, stage 10's sampled terms)
-const int kDebugReflected = 9;  // value: weight, w 1 when the ray is traced
-const int kDebugRefracted = 10;
-const int kDebugPixel = 11;     // value: trace_pixel's result or the sample's colour
-const int kDebugSample = 12;    // where: the camera sample; value: its image point
 
 void rt_debug_put(int kind, int where, int type, vec4 value) {
     if (!rt_debugging) return;

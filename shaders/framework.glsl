@@ -29,19 +29,14 @@ void set_face_normal(inout Hit hit, Ray ray, vec3 outward_normal) {
     hit.normal = hit.front_face ? outward_normal : -outward_normal;
 }
 
-const int kSphere = 0, kPlane = 1, kTriangle = 2, kBox = 3;
-const int kKindShift = 28;
+// kSphere, kPlane, kTriangle, kBox and kKindShift are the prelude's (framework/gpu/shader_constants.h).
 int primitive_id(int kind, int index) { return (kind << kKindShift) | index; }
 int primitive_kind(int id) { return id >> kKindShift; }
 int primitive_index(int id) { return id & ((1 << kKindShift) - 1); }
 
 // What the scene uses when the shader has it compiled in (scene_features: compute_io.glsl, or
 // the constants of an export); the --uber shader tests these bits at run time.
-const int kFeatureBvh = 1, kFeatureShadows = 2, kFeatureVertexNormals = 4, kFeatureVertexUvs = 8,
-          kFeatureRefraction = 16;
-// Stage 10 (Features::sampled() and its parts; motion blur is compiled in only when a sphere moves).
-const int kFeatureSampled = 32, kFeatureAreaLights = 64, kFeatureDepthOfField = 128,
-          kFeatureGlossy = 256, kFeatureOcclusion = 512, kFeatureIndirect = 1024;
+// kFeatureBvh ... kFeatureIndirect: the prelude's (framework/gpu/shader_constants.h).
 bool scene_has(int feature) { return (scene_features & feature) != 0; }
 
 // Stage 06's BvhStats::nodes_visited, without pointers: bvh_intersect_nearest adds each node whose

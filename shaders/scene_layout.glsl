@@ -40,31 +40,31 @@ struct Sampling {
 };
 // The camera (set as the uniform `camera`, or baked in as a constant by rt export-shadertoy).
 struct Camera {
-    int projection;  // 0 perspective, 1 orthographic
+    int projection;  // kProjectionPerspective or kProjectionOrthographic
     vec3 eye, u, v, w;  // u right, v up, the camera looks along -w
     float vertical_fov_degrees;
     float view_height;
 };
 
 #ifdef HAS_MOTION_BLUR
-layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres_at_rest[]; };
+layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres_at_rest[]; };
 #else
-layout(std430, binding = 0) readonly buffer Spheres { Sphere spheres[]; };
+layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres[]; };
 #endif
-layout(std430, binding = 1) readonly buffer Planes { Plane planes[]; };
-layout(std430, binding = 2) readonly buffer Boxes { Box boxes[]; };
-layout(std430, binding = 3) readonly buffer Triangles { Triangle triangles[]; };
-layout(std430, binding = 4) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = 5) readonly buffer Normals { vec4 normals[]; };
-layout(std430, binding = 6) readonly buffer Uvs { vec2 uvs[]; };
-layout(std430, binding = 7) readonly buffer Materials { Material materials[]; };
-layout(std430, binding = 8) readonly buffer Lights { Light lights[]; };
-layout(std430, binding = 9) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
-layout(std430, binding = 10) readonly buffer BvhPrimitives { uint bvh_primitives[]; };
-layout(std430, binding = 11) readonly buffer Textures { Texture textures[]; };
-layout(std430, binding = 12) readonly buffer TextureImages { TextureImage texture_images[]; };
-layout(std430, binding = 13) readonly buffer Texels { vec4 texels[]; };
-layout(std430, binding = 14) readonly buffer Environments { Environment environment[]; };
+layout(std430, binding = RT_BINDING_PLANES) readonly buffer Planes { Plane planes[]; };
+layout(std430, binding = RT_BINDING_BOXES) readonly buffer Boxes { Box boxes[]; };
+layout(std430, binding = RT_BINDING_TRIANGLES) readonly buffer Triangles { Triangle triangles[]; };
+layout(std430, binding = RT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = RT_BINDING_NORMALS) readonly buffer Normals { vec4 normals[]; };
+layout(std430, binding = RT_BINDING_UVS) readonly buffer Uvs { vec2 uvs[]; };
+layout(std430, binding = RT_BINDING_MATERIALS) readonly buffer Materials { Material materials[]; };
+layout(std430, binding = RT_BINDING_LIGHTS) readonly buffer Lights { Light lights[]; };
+layout(std430, binding = RT_BINDING_BVH_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+layout(std430, binding = RT_BINDING_BVH_PRIMITIVES) readonly buffer BvhPrimitives { uint bvh_primitives[]; };
+layout(std430, binding = RT_BINDING_TEXTURES) readonly buffer Textures { Texture textures[]; };
+layout(std430, binding = RT_BINDING_TEXTURE_IMAGES) readonly buffer TextureImages { TextureImage texture_images[]; };
+layout(std430, binding = RT_BINDING_TEXELS) readonly buffer Texels { vec4 texels[]; };
+layout(std430, binding = RT_BINDING_ENVIRONMENT) readonly buffer Environments { Environment environment[]; };
 // Stage 10's data is a uniform block (std140, the same offsets as std430 here: vec4s only): the
 // compute stage has 16 storage blocks and the uber shader uses them all. Sized by the host's
 // defines; the defaults serve the layout test and shaders without sampling.
@@ -74,4 +74,4 @@ layout(std430, binding = 14) readonly buffer Environments { Environment environm
 #ifndef MAX_MOVING_SPHERES
 #define MAX_MOVING_SPHERES 2
 #endif
-layout(std140, binding = 0) uniform SampledScene { Sampling sampling; AreaLight area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };
+layout(std140, binding = RT_BINDING_SAMPLED_SCENE) uniform SampledScene { Sampling sampling; AreaLight area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };

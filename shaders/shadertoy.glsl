@@ -34,6 +34,6 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     // Shadertoy's fragCoord has y up; the camera's image points have y down.
     vec4 result = trace_pixel(vec2(fragCoord.x, iResolution.y - fragCoord.y));
     vec3 c = result.rgb;
-    if (render_mode == 4) c = vec3(rt_encode_srgb(c.r), rt_encode_srgb(c.g), rt_encode_srgb(c.b));
+    if (render_mode == kModeShaded) c = vec3(rt_encode_srgb(c.r), rt_encode_srgb(c.g), rt_encode_srgb(c.b));
     fragColor = vec4(c, 1.0);  // the debug modes' values are display values already
 }

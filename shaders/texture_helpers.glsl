@@ -3,10 +3,7 @@
 // the plane frame, the noise gradients, and the numbers of the scene's enums.
 
 // scene/texture.h's TextureWrap, TextureFilter, TextureKind; scene/environment.h's kinds.
-const int kWrapRepeat = 0, kWrapClamp = 1, kWrapMirror = 2;
-const int kFilterNearest = 0, kFilterBilinear = 1;
-const int kTextureImage = 0, kTextureChecker2D = 1, kTextureChecker3D = 2, kTextureMarble = 3;
-const int kEnvironmentNone = 0, kEnvironmentLatLong = 1, kEnvironmentCubeMap = 2;
+// kWrap*, kFilter*, kTexture* and kEnvironment* are the prelude's (framework/gpu/shader_constants.h).
 
 // One image of the texture table (scene/texture.h's TextureView): texels[first ...], row 0 at
 // the top; srgb: the stored values are sRGB-encoded (decode before filtering).

@@ -78,8 +78,8 @@ vec3 evaluate_slot(int slot_texture, vec4 transform, vec2 uv, vec3 point) {
             if (t.kind_image_filter_wrap.y < 0) return vec3(1);
             const TextureView view = texture_view(t.kind_image_filter_wrap.y, t.a_srgb.w != 0.0);
             int image_filter = t.kind_image_filter_wrap.z;
-            if (texture_lookup == 1) image_filter = kFilterNearest;
-            if (texture_lookup == 2) image_filter = kFilterBilinear;
+            if (texture_lookup == kLookupNearest) image_filter = kFilterNearest;
+            if (texture_lookup == kLookupBilinear) image_filter = kFilterBilinear;
             const int wrap = t.kind_image_filter_wrap.w;
             return image_filter == kFilterNearest ? sample_nearest(view, mapped, wrap)
                                             : sample_bilinear(view, mapped, wrap);

@@ -32,7 +32,7 @@ void main() {
     const bool debug_pixel = pixel == debug_pixel_at;
 #endif
 #ifdef HAS_SAMPLING
-    if (render_mode == 4 && scene_has(kFeatureSampled)) {
+    if (render_mode == kModeShaded && scene_has(kFeatureSampled)) {
         // Stage 10: add this dispatch's camera samples to the pixel's sum.
         vec4 sum = sample_first == 0 ? vec4(0) : pixels[i];
         for (int s = sample_first; s < sample_first + sample_count; ++s) {

@@ -67,7 +67,7 @@ bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
 }
 
 Ray camera_ray(vec2 pixel) {
-    return camera.projection == 0 ? perspective_ray(pixel) : orthographic_ray(pixel);
+    return camera.projection == kProjectionPerspective ? perspective_ray(pixel) : orthographic_ray(pixel);
 }
 
 // One ray's own work (render/shade.cpp's Frame): start_frame fills the last three.
@@ -333,13 +333,13 @@ vec3 primitive_colour(int id) {
 vec4 trace_pixel(vec2 pixel) {
     const Ray ray = camera_ray(pixel);
     vec4 result = vec4(0, 0, 0, -1);
-    if (render_mode != 4) note_ray(0, ray, 0);
-    if (render_mode == 0) {
+    if (render_mode != kModeShaded) note_ray(0, ray, 0);
+    if (render_mode == kModeDirections) {
         if (!any(isinf(ray.direction)) && !any(isnan(ray.direction)))
             result.rgb = 0.5 * (ray.direction + 1.0);
-    } else if (render_mode == 4) {
+    } else if (render_mode == kModeShaded) {
         result.rgb = trace(ray);
-    } else if (render_mode == 5) {  // bvh_visits: the count goes through a, mapped on the host
+    } else if (render_mode == kModeBvhVisits) {  // the count goes through a, mapped on the host
 #ifdef HAS_BVH
         Hit hit = no_hit();
         bvh_intersect_nearest(ray, Interval(0.0, kInfinity), hit);
@@ -349,7 +349,7 @@ vec4 trace_pixel(vec2 pixel) {
         Hit hit = no_hit();
         if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {
             note_hit(0, hit, hit.point, hit.normal);
-            result.rgb = render_mode == 3 ? primitive_colour(hit.primitive)
+            result.rgb = render_mode == kModePrimitiveId ? primitive_colour(hit.primitive)
                                           : 0.5 * (hit.normal + 1.0);
             result.a = hit.t;
         } else {
@@ -382,7 +382,7 @@ vec3 sample_pixel(ivec2 pixel, int sample_index) {
     rng_start(uint(pixel.y * image_size.x + pixel.x), uint(sample_index));
     const vec2 jitter =
         stratified_sample(sample_index, sampling.spp_filter_indirect.x, rng_next2());
-    const vec2 offset = sampling.spp_filter_indirect.y == 1 ? tent_filter_offset(jitter)
+    const vec2 offset = sampling.spp_filter_indirect.y == kPixelFilterTent ? tent_filter_offset(jitter)
                                                             : box_filter_offset(jitter);
     Ray ray = camera_ray(vec2(pixel) + 0.5 + offset);
     rt_debug_note(kDebugSample, sample_index, vec4(vec2(pixel) + 0.5 + offset, 0, 0));

@@ -1,7 +1,5 @@
 #include "apps/gallery_page.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,7 +15,6 @@ namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 std::string html(const std::string& text) {
     std::string out;
@@ -41,20 +38,19 @@ std::string relative_link(const fs::path& target, const fs::path& from) {
     return fs::relative(fs::weakly_canonical(target), fs::weakly_canonical(from)).generic_string();
 }
 
-json read_json(const fs::path& file) {
-    std::ifstream in(file);
-    if (!in) return json::object();
-    return json::parse(in, nullptr, /*allow_exceptions=*/false);
+}  // namespace
+
+// The comparison a scene gets, as data-compare (cmake/check_gallery_page.cmake reads it back).
+std::string GalleryPage::compare_text(const Entry& e) {
+    // 17 significant digits: how CMake's JSON reader prints a number back.
+    char text[200];
+    std::snprintf(text, sizeof text, "tolerance=%d pass=%.17g fail=%.17g neighbourhood=%d block=%d",
+                  e.options.tolerance, e.options.max_failing_percent, e.fail_percent,
+                  e.options.neighbourhood ? 1 : 0, e.options.block);
+    return text;
 }
 
-// The grader's thresholds (grader/stage_specs.cpp): image_defaults, then the scene's own keys.
-void read_thresholds(const json& j, CompareOptions& options, double& fail_percent) {
-    if (!j.is_object()) return;
-    options.tolerance = j.value("tolerance", options.tolerance);
-    options.max_failing_percent = j.value("pass_percent", options.max_failing_percent);
-    options.neighbourhood = j.value("neighbourhood", options.neighbourhood);
-    fail_percent = j.value("fail_percent", fail_percent);
-}
+namespace {
 
 const char* const kStyle = R"(<style>
 body { font: 14px system-ui, sans-serif; margin: 1.5em; background: #1d1f21; color: #ddd; }
@@ -80,21 +76,11 @@ const GalleryPage::Stage& GalleryPage::stage_info(const fs::path& stage) {
     const std::string key = stage.filename().string();
     if (auto it = stages_.find(key); it != stages_.end()) return it->second;
     Stage s;
-    const json meta = read_json(stage / "stage.json");
-    s.title = meta.is_object() ? meta.value("title", key) : key;
+    // The grader's reader (course/manifest.h): a graded scene is compared as rt-grade compares it.
+    if (fs::exists(stage / "grading.json")) s.spec = load_stage_spec(source_, stage);
+    const std::string title = s.spec ? s.spec->title : read_stage_info(stage / "stage.json").title;
+    s.title = title.empty() ? key : title;
     s.handout = relative_link(stage / "README.md", out_);
-    const json grading = read_json(stage / "grading.json");
-    if (grading.is_object()) {
-        read_thresholds(grading.value("image_defaults", json::object()), s.options, s.fail_percent);
-        for (const json& scene : grading.value("scenes", json::array())) {
-            const std::string name = scene.value("name", "");
-            s.graded.push_back(name);
-            CompareOptions options = s.options;
-            double ignored = s.fail_percent;
-            read_thresholds(scene, options, ignored);
-            s.scene_options[name] = options;
-        }
-    }
     return stages_.emplace(key, std::move(s)).first->second;
 }
 
@@ -104,9 +90,13 @@ void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const f
     Entry e;
     e.stage = stage.filename().string();
     e.name = scene_file.stem().string();
-    e.graded = std::find(s.graded.begin(), s.graded.end(), e.name) != s.graded.end();
-    e.options = e.graded ? s.scene_options.at(e.name) : s.options;
-    e.fail_percent = s.fail_percent;
+    const SceneSpec* graded = s.spec ? s.spec->scene(e.name) : nullptr;
+    e.graded = graded != nullptr;
+    const ImageThresholds thresholds = graded   ? graded->thresholds
+                                       : s.spec ? s.spec->image_defaults
+                                                : ImageThresholds{};
+    e.options = thresholds.compare_options();
+    e.fail_percent = thresholds.fail_percent;
     e.image = relative_link(image_file, out_);
     const fs::path reference = source_ / "reference_images" / e.stage / (e.name + ".png");
     if (fs::exists(reference)) {
@@ -177,8 +167,9 @@ fs::path GalleryPage::write() const {
         if (!e.graded) badge += " (not graded)";
         page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
              << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
-             << (e.graded ? "true" : "false") << "\">\n<b>" << html(e.name)
-             << "</b> <span class=\"badge\">" << html(badge) << "</span>\n<div class=\"cols\">\n";
+             << (e.graded ? "true" : "false") << "\" data-compare=\"" << compare_text(e)
+             << "\">\n<b>" << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
+             << "</span>\n<div class=\"cols\">\n";
         const auto column = [&](const std::string& file, const char* label) {
             if (file.empty()) return;
             page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
@@ -190,8 +181,11 @@ fs::path GalleryPage::write() const {
         page << "</div>\n";
         if (e.compared)
             page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
-                 << e.options.tolerance << ", pass up to " << e.options.max_failing_percent
-                 << "%)</div>\n";
+                 << e.options.tolerance << ", pass up to " << e.options.max_failing_percent << "%"
+                 << (e.options.block > 0 ? ", " + std::to_string(e.options.block) + "x" +
+                                               std::to_string(e.options.block) + "-block means"
+                                         : "")
+                 << ")</div>\n";
         page << "</div>\n";
     }
     if (!stage.empty()) page << "</section>\n";

@@ -5,9 +5,11 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "course/manifest.h"
 #include "image/compare.h"
 #include "image/image.h"
 
@@ -39,13 +41,11 @@ class GalleryPage {
         CompareResult result;
     };
     struct Stage {
-        std::string title, handout;  // handout: relative link from out/ into the source tree
-        std::vector<std::string> graded;
-        CompareOptions options;
-        double fail_percent = 2.0;
-        std::map<std::string, CompareOptions> scene_options;
+        std::string title, handout;     // handout: relative link from out/ into the source tree
+        std::optional<StageSpec> spec;  // its manifest, when it has a grading.json
     };
     const Stage& stage_info(const std::filesystem::path& stage);
+    static std::string compare_text(const Entry& e);
 
     std::filesystem::path source_, out_;
     std::map<std::string, Stage> stages_;

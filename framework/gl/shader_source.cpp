@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/source_dir.h"
+#include "gpu/shader_constants.h"
 
 namespace fs = std::filesystem;
 
@@ -91,7 +92,7 @@ class Assembler {
             ++number;
             std::smatch m;
             if (entry && number == 1 && line.starts_with("#version")) {
-                out_.text += line + "\n" + defines;
+                out_.text += line + "\n" + gpu::shader_prelude() + defines;
                 out_.text += line_directive(number + 1, id);
                 continue;
             }

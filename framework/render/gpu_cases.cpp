@@ -10,6 +10,7 @@
 #include "gl/compute_program.h"
 #include "gl/gl_context.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/shader_constants.h"
 #include "render/gpu_render.h"
 
 namespace rt {
@@ -38,11 +39,12 @@ bool run_gpu_cases(const std::vector<gpu_cases::GpuRayCase>& cases,
                                                    {root / "shaders", gpu_student_dir()}, "");
     const GLuint program = build_compute_program(gl, shader, error);
     if (program == 0) return false;
-    // Binding 15 (compute_io.glsl's Output): 4 words of stub flags, then the answers.
+    // The output binding (compute_io.glsl's Output): 4 words of stub flags, then the answers.
     std::vector<glm::vec4> output(1 + 4 * cases.size(), glm::vec4(0));
     const GLuint buffers[2] = {
         case_buffer(gl, gpu::kTexels, GLsizeiptr(cases.size() * sizeof(GpuRayCase)), cases.data()),
-        case_buffer(gl, 15, GLsizeiptr(output.size() * sizeof(glm::vec4)), output.data())};
+        case_buffer(gl, gpu::kOutputBinding, GLsizeiptr(output.size() * sizeof(glm::vec4)),
+                    output.data())};
     gl.UseProgram(program);
     gl.Uniform1i(gl.GetUniformLocation(program, "case_count"), int(cases.size()));
     gl.DispatchCompute(GLuint((cases.size() + 63) / 64), 1, 1);

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "core/source_dir.h"
+#include "gpu/shader_constants.h"
 #include "render/ray_tree.h"
 
 namespace fs = std::filesystem;
@@ -11,22 +12,7 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-// debug_pixel.glsl's kinds.
-enum Kind {
-    kValue = 0,
-    kRay = 1,
-    kDirection = 2,
-    kHit = 3,
-    kPoint = 4,
-    kNormal = 5,
-    kMiss = 6,
-    kShadow = 7,
-    kLocal = 8,
-    kReflected = 9,
-    kRefracted = 10,
-    kPixel = 11,
-    kSample = 12,
-};
+using namespace gpu;  // the notes' kinds, kDebug* (gpu/shader_constants.h)
 
 std::string fmt(double v) {
     char buf[32];
@@ -75,49 +61,49 @@ std::string note_line(const Scene& scene, const GpuDebugRecord& r, const GpuDebu
     static const char* const kRayNames[] = {"camera", "reflection", "refraction"};
     const int n3 = 3;
     switch (r.kind) {
-        case kRay: {
+        case kDebugRay: {
             const int branch = int(r.value.w);
             std::string line = std::string(kRayNames[branch >= 0 && branch < 3 ? branch : 0]) +
                                " ray (depth " + std::to_string(r.where) + ") from " +
                                fmt(r.value, n3);
-            if (next && next->kind == kDirection) line += " dir " + fmt(next->value, n3);
+            if (next && next->kind == kDebugDirection) line += " dir " + fmt(next->value, n3);
             return line;
         }
-        case kHit: {
+        case kDebugHit: {
             const int id = (int(r.value.y) << 28) | int(r.value.z);
             std::string line = "hit t = " + fmt(double(r.value.x));
-            if (next && next->kind == kPoint) line += " at " + fmt(next->value, n3);
+            if (next && next->kind == kDebugPoint) line += " at " + fmt(next->value, n3);
             return line + " on " + primitive_name(scene, id) + ", material " +
                    material_name(scene, int(r.value.w)) + (r.type == 1 ? ", outside" : ", inside");
         }
-        case kNormal:
+        case kDebugNormal:
             return "lighting normal " + fmt(r.value, n3);
-        case kMiss:
+        case kDebugMiss:
             return "miss: background " + fmt(r.value, n3);
-        case kShadow:
+        case kDebugShadow:
             return "shadow ray to light " + std::to_string(r.where) + ": visibility " +
                    fmt(r.value, n3);
-        case kLocal:
+        case kDebugLocal:
             return "local light " + fmt(r.value, n3);
-        case kReflected:
-        case kRefracted:
+        case kDebugReflected:
+        case kDebugRefracted:
             if (r.value.w == 0 && r.value.x == 0 && r.value.y == 0 && r.value.z == 0) return "";
-            return std::string(r.kind == kReflected ? "reflection" : "refraction") + " weight " +
-                   fmt(r.value, n3) + (r.value.w != 0 ? "" : " (not traced)");
-        case kSample:
+            return std::string(r.kind == kDebugReflected ? "reflection" : "refraction") +
+                   " weight " + fmt(r.value, n3) + (r.value.w != 0 ? "" : " (not traced)");
+        case kDebugSample:
             return "camera sample " + std::to_string(r.where) + " at image point " +
                    fmt(r.value, 2);
-        case kPixel:
+        case kDebugPixel:
             return "pixel value " + fmt(r.value, r.value.w == -2 ? 4 : 3) +
                    (r.value.w == -2 ? " (a stub was reached: magenta)" : "");
     }
-    return "";  // kDirection and kPoint are part of the line before them
+    return "";  // kDebugDirection and kDebugPoint are part of the line before them
 }
 
 // A ray at depth d is indented 4d, what happened to it 4d + 2, as in the CPU's tree.
 int indent(int kind, int depth) {
-    if (kind == kPixel || kind == kSample || depth < 0) return 0;
-    return 4 * depth + (kind == kRay ? 0 : 2);
+    if (kind == kDebugPixel || kind == kDebugSample || depth < 0) return 0;
+    return 4 * depth + (kind == kDebugRay ? 0 : 2);
 }
 
 }  // namespace
@@ -128,7 +114,7 @@ void read_gpu_probe(const std::vector<glm::vec4>& output, std::size_t pixel_coun
     const std::size_t header = pixel_count + 1;
     probe.made = int(output[header].x);
     probe.records.clear();
-    for (int k = 0; k < probe.made && k < kGpuDebugCapacity; ++k) {
+    for (int k = 0; k < probe.made && k < kDebugCapacity; ++k) {
         const glm::vec4 tag = output[header + 1 + 2 * std::size_t(k)];
         probe.records.push_back(
             {int(tag.x), int(tag.y), int(tag.z), output[header + 2 + 2 * std::size_t(k)]});
@@ -152,16 +138,16 @@ std::string gpu_pixel_text(const Scene& scene, const GpuPixelProbe& probe) {
     const auto& records = probe.records;
     for (std::size_t i = 0; i < records.size(); ++i) {
         const GpuDebugRecord& r = records[i];
-        if (r.kind == kRay) depth = r.where;
+        if (r.kind == kDebugRay) depth = r.where;
         const GpuDebugRecord* next = i + 1 < records.size() ? &records[i + 1] : nullptr;
         const std::string line =
-            r.kind == kValue ? value_line(r, probe.shader) : note_line(scene, r, next);
+            r.kind == kDebugValue ? value_line(r, probe.shader) : note_line(scene, r, next);
         if (line.empty()) continue;
         text += std::string(std::size_t(indent(r.kind, depth)), ' ') + line + "\n";
     }
-    if (probe.made > kGpuDebugCapacity)
-        text += "(" + std::to_string(probe.made - kGpuDebugCapacity) +
-                " more notes were made; the first " + std::to_string(kGpuDebugCapacity) +
+    if (probe.made > kDebugCapacity)
+        text += "(" + std::to_string(probe.made - kDebugCapacity) +
+                " more notes were made; the first " + std::to_string(kDebugCapacity) +
                 " are shown)\n";
     if (probe.made == 0) text += "(no notes: the shader did not reach this pixel)\n";
     return text;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl/shader_source.h"
+#include "gpu/shader_constants.h"
 #include "render/gpu_render.h"
 #include "scene/scene.h"
 
@@ -19,7 +20,7 @@ namespace rt {
 
 // One note, as debug_pixel.glsl's rt_debug_put made it.
 struct GpuDebugRecord {
-    int kind = 0, where = 0, type = 0;  // debug_pixel.glsl's kDebug* constants
+    int kind = 0, where = 0, type = 0;  // kind: gpu::DebugNote (gpu/shader_constants.h)
     glm::vec4 value{0};
 };
 
@@ -27,7 +28,7 @@ struct GpuDebugRecord {
 struct GpuPixelProbe {
     int x = 0, y = 0;
     std::vector<GpuDebugRecord> records;  // in the order the shader made them ...
-    int made = 0;                         // ... of this many (the buffer keeps kGpuDebugCapacity)
+    int made = 0;                         // ... of this many (the buffer keeps gpu::kDebugCapacity)
     AssembledShader shader;               // for rt_debug's file and line
 };
 

@@ -16,6 +16,7 @@
 #include "core/source_dir.h"
 #include "gl/compute_program.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/shader_constants.h"
 #include "image/image.h"
 #include "render/gpu_debug_pixel.h"
 #include "render/render.h"
@@ -77,7 +78,7 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
         gl.Uniform3f(at(name), float(v.x), float(v.y), float(v.z));
     };
     const Camera& c = scene.camera;
-    gl.Uniform1i(at("camera.projection"), c.projection == Projection::Perspective ? 0 : 1);
+    gl.Uniform1i(at("camera.projection"), int(c.projection));
     vec3("camera.eye", c.eye), vec3("camera.u", c.u), vec3("camera.v", c.v);
     vec3("camera.w", c.w);
     gl.Uniform1f(at("camera.vertical_fov_degrees"), float(c.vertical_fov_degrees));
@@ -109,20 +110,25 @@ int gpu_trace_depth(const Scene& scene, RenderMode mode) {
 
 int gpu_feature_bits(const Scene& scene, RenderMode mode) {
     const bool shaded = mode == RenderMode::Shaded;
-    return (scene.accelerator == Accelerator::Bvh && scene.bvh.built() ? 1 : 0) |
-           (shaded && scene.features.shadows ? 2 : 0) | (!scene.normals.empty() ? 4 : 0) |
-           (!scene.uvs.empty() ? 8 : 0) | (shaded && scene.features.refraction ? 16 : 0) |
-           (gpu_sampled(scene, mode) ? 32 : 0) | (shaded && scene.features.area_lights ? 64 : 0) |
-           (shaded && scene.features.depth_of_field ? 128 : 0) |
-           (shaded && scene.features.glossy ? 256 : 0) |
-           (shaded && scene.features.ambient_occlusion ? 512 : 0) |
-           (shaded && scene.features.indirect_diffuse ? 1024 : 0);
+    const Features& f = scene.features;
+    auto bit = [](bool on, gpu::FeatureBit b) { return on ? int(b) : 0; };
+    return bit(scene.accelerator == Accelerator::Bvh && scene.bvh.built(), gpu::kFeatureBvh) |
+           bit(shaded && f.shadows, gpu::kFeatureShadows) |
+           bit(!scene.normals.empty(), gpu::kFeatureVertexNormals) |
+           bit(!scene.uvs.empty(), gpu::kFeatureVertexUvs) |
+           bit(shaded && f.refraction, gpu::kFeatureRefraction) |
+           bit(gpu_sampled(scene, mode), gpu::kFeatureSampled) |
+           bit(shaded && f.area_lights, gpu::kFeatureAreaLights) |
+           bit(shaded && f.depth_of_field, gpu::kFeatureDepthOfField) |
+           bit(shaded && f.glossy, gpu::kFeatureGlossy) |
+           bit(shaded && f.ambient_occlusion, gpu::kFeatureOcclusion) |
+           bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect);
 }
 
 int gpu_texture_lookup(const Scene& scene) {
-    return scene.texture_lookup == TextureLookup::Nearest    ? 1
-           : scene.texture_lookup == TextureLookup::Bilinear ? 2
-                                                             : 0;
+    return scene.texture_lookup == TextureLookup::Nearest    ? gpu::kLookupNearest
+           : scene.texture_lookup == TextureLookup::Bilinear ? gpu::kLookupBilinear
+                                                             : gpu::kLookupPerTexture;
 }
 
 void check_gpu_supported(const Scene& scene, RenderMode mode) {
@@ -305,23 +311,26 @@ const GpuRenderer::Program& GpuRenderer::program_for(const std::string& defines,
     return *(programs_[defines] = std::move(program));
 }
 
-Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out,
-                          GpuPixelProbe* probe) {
-    check_gpu_supported(scene, mode);
-    GpuTimings timings;
-    const std::string defines = program_defines(scene, mode, options_.uber, probe != nullptr);
-    const bool fresh = programs_.find(defines) == programs_.end();
-    const Program& program = program_for(defines, timings);
-    const GlApi& gl = context_->gl();
-    auto start = std::chrono::steady_clock::now();
-    // Milliseconds since `start`, which moves on to now.
-    auto lap = [&start] {
+namespace {
+
+// Milliseconds between laps.
+class Stopwatch {
+  public:
+    double lap() {
         const auto now = std::chrono::steady_clock::now();
-        const double ms = std::chrono::duration<double, std::milli>(now - start).count();
-        start = now;
+        const double ms = std::chrono::duration<double, std::milli>(now - start_).count();
+        start_ = now;
         return ms;
-    };
-    const gpu::GpuScene packed = gpu::pack_scene(scene);
+    }
+
+  private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The packed scene's storage buffers, and stage 10's uniform block sized as the program's
+// defines say; the caller deletes them.
+std::vector<GLuint> upload_scene(const GlApi& gl, const gpu::GpuScene& packed,
+                                 const SampledSlots& slots) {
     std::vector<GLuint> buffers = {
         upload(gl, gpu::kSpheres, packed.spheres),
         upload(gl, gpu::kPlanes, packed.planes),
@@ -339,84 +348,49 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
         upload(gl, gpu::kTexels, packed.texels),
         upload(gl, gpu::kEnvironment, packed.environment),
     };
-    // Stage 10's uniform block (binding 0), sized as the program's defines say.
-    const bool sampled = gpu_sampled(scene, mode);
-    const SampledSlots slots = sampled_slots(scene, mode, options_.uber);
     const std::vector<unsigned char> block =
         gpu::sampled_block(packed, slots.area_lights, slots.moving_spheres);
     GLuint uniform_block = 0;
     gl.GenBuffers(1, &uniform_block);
     gl.BindBuffer(GL_UNIFORM_BUFFER, uniform_block);
     gl.BufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, uniform_block);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, gpu::kSampledSceneBinding, uniform_block);
     buffers.push_back(uniform_block);
-    // The output: 4 words of stub flags, then one vec4 a pixel (stage 10: sums of samples), then
-    // --debug-pixel's notes.
-    const int width = scene.image.width, height = scene.image.height;
-    const std::size_t pixel_count = std::size_t(width) * std::size_t(height);
-    std::vector<glm::vec4> output(pixel_count + 1 + (probe ? gpu_probe_vec4s() : 0), glm::vec4(0));
-    buffers.push_back(upload(gl, 15, output));
+    return buffers;
+}
 
-    gl.UseProgram(program.id);
-    set_uniforms(gl, program.id, scene, mode);
-    if (probe)
-        gl.Uniform2i(gl.GetUniformLocation(program.id, "debug_pixel_at"), probe->x, probe->y);
-    gl.Finish();  // the uploads are not the trace's time
-    lap();
-    if (timings_out && fresh) {
-        // llvmpipe compiles the shader to machine code at its first dispatch: one work group
-        // (its pixels are written again below) moves that into compile_ms.
-        gl.DispatchCompute(1, 1, 1);
-        gl.Finish();
-        timings.compile_ms += lap();
-    }
-    // Stage 10: batches of camera samples, each dispatch adding to the sums the last one left.
-    const int samples = sampled ? std::max(1, scene.sampling.samples_per_pixel) : 1;
+// The dispatches of one render: one, or for a stage 10 scene batches of camera samples, each
+// adding to the sums the last one left. False when `cancel` stopped it between batches.
+bool dispatch(const GlApi& gl, GLuint program, const Scene& scene, int samples,
+              const GpuRenderOptions& options) {
     const int batch =
-        sampled ? std::max(1, options_.samples_per_dispatch > 0 ? options_.samples_per_dispatch
-                                                                : kDefaultSamplesPerDispatch)
-                : 1;
-    const GLint first_at = gl.GetUniformLocation(program.id, "sample_first");
-    const GLint count_at = gl.GetUniformLocation(program.id, "sample_count");
-    bool cancelled = false;
+        samples == 1 ? 1
+                     : std::max(1, options.samples_per_dispatch > 0 ? options.samples_per_dispatch
+                                                                    : kDefaultSamplesPerDispatch);
+    const GLint first_at = gl.GetUniformLocation(program, "sample_first");
+    const GLint count_at = gl.GetUniformLocation(program, "sample_count");
     for (int first = 0; first < samples; first += batch) {
-        if (first > 0 && options_.cancel && options_.cancel->load()) {
-            cancelled = true;
-            break;
-        }
+        if (first > 0 && options.cancel && options.cancel->load()) return false;
         gl.Uniform1i(first_at, first);
         gl.Uniform1i(count_at, std::min(batch, samples - first));
-        gl.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+        gl.DispatchCompute(GLuint((scene.image.width + 7) / 8),
+                           GLuint((scene.image.height + 7) / 8), 1);
         gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        if (sampled) gl.Finish();  // one batch at a time: a long queue would not cancel
+        if (samples > 1) gl.Finish();  // one batch at a time: a long queue would not cancel
     }
-    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
-                        output.data());
-    timings.trace_ms = lap();
-    if (timings_out) *timings_out = timings;
-    const GLenum status = gl.GetError();
-    gl.DeleteBuffers(GLsizei(buffers.size()), buffers.data());
-    if (status != GL_NO_ERROR)
-        throw GpuError("gpu: OpenGL error " + std::to_string(status) +
-                       " while rendering; rerun with --gl osmesa, or without --gpu");
+    return true;
+}
 
-    std::uint32_t flags[4];
-    std::memcpy(flags, &output[0], sizeof flags);
-    report_gpu_stubs(program.shader, flags);
-    if (probe) read_gpu_probe(output, pixel_count, program.shader, *probe);
-
-    if (cancelled) throw GpuError("gpu: render cancelled");
-    // a: the hit distance (depth) or the node count (bvh_visits); -2 a stub, -1 nothing.
-    // Stage 10: rgb the sum of the samples, divided here (the CPU's mean, in float).
-    if (sampled)
-        for (std::size_t i = 1; i <= pixel_count; ++i)
-            if (output[i].a != -2.0f)
-                output[i] = glm::vec4(glm::vec3(output[i]) / float(samples), 0);
-    Image image(width, height);
-    std::vector<Real> values(pixel_count);
-    for (std::size_t i = 0; i < pixel_count; ++i) {
-        const glm::vec4 p = output[i + 1];
+// The pixels of the output buffer (after its stub flags) as an image. a: the hit distance
+// (depth) or the node count (bvh_visits); -2 a stub, -1 nothing. Stage 10: rgb the sum of
+// `samples` samples, divided here (the CPU's mean, in float).
+Image output_image(const std::vector<glm::vec4>& output, const Scene& scene, RenderMode mode,
+                   int samples) {
+    Image image(scene.image.width, scene.image.height);
+    std::vector<Real> values(image.pixels.size());
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        glm::vec4 p = output[i + 1];
+        if (samples > 1 && p.a != -2.0f) p = glm::vec4(glm::vec3(p) / float(samples), 0);
         values[i] = Real(p.a);
         const Color rgb(p.r, p.g, p.b);
         image.pixels[i] = p.a == -2.0f                 ? kStubColor
@@ -426,6 +400,59 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     if (mode == RenderMode::Depth) map_depth(values, image);
     if (mode == RenderMode::BvhVisits) map_visits(values, image);
     return image;
+}
+
+}  // namespace
+
+Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out,
+                          GpuPixelProbe* probe) {
+    check_gpu_supported(scene, mode);
+    GpuTimings timings;
+    const std::string defines = program_defines(scene, mode, options_.uber, probe != nullptr);
+    const bool fresh = programs_.find(defines) == programs_.end();
+    const Program& program = program_for(defines, timings);
+    const GlApi& gl = context_->gl();
+    Stopwatch stopwatch;
+    std::vector<GLuint> buffers =
+        upload_scene(gl, gpu::pack_scene(scene), sampled_slots(scene, mode, options_.uber));
+    // The output: 4 words of stub flags, then one vec4 a pixel (stage 10: sums of samples), then
+    // --debug-pixel's notes.
+    const std::size_t pixel_count =
+        std::size_t(scene.image.width) * std::size_t(scene.image.height);
+    std::vector<glm::vec4> output(pixel_count + 1 + (probe ? gpu_probe_vec4s() : 0), glm::vec4(0));
+    buffers.push_back(upload(gl, gpu::kOutputBinding, output));
+    gl.UseProgram(program.id);
+    set_uniforms(gl, program.id, scene, mode);
+    if (probe)
+        gl.Uniform2i(gl.GetUniformLocation(program.id, "debug_pixel_at"), probe->x, probe->y);
+    gl.Finish();  // the uploads are not the trace's time
+    stopwatch.lap();
+    if (timings_out && fresh) {
+        // llvmpipe compiles the shader to machine code at its first dispatch: one work group
+        // (its pixels are written again below) moves that into compile_ms.
+        gl.DispatchCompute(1, 1, 1);
+        gl.Finish();
+        timings.compile_ms += stopwatch.lap();
+    }
+    const int samples =
+        gpu_sampled(scene, mode) ? std::max(1, scene.sampling.samples_per_pixel) : 1;
+    const bool finished = dispatch(gl, program.id, scene, samples, options_);
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(glm::vec4)),
+                        output.data());
+    timings.trace_ms = stopwatch.lap();
+    if (timings_out) *timings_out = timings;
+    const GLenum status = gl.GetError();
+    gl.DeleteBuffers(GLsizei(buffers.size()), buffers.data());
+    if (status != GL_NO_ERROR)
+        throw GpuError("gpu: OpenGL error " + std::to_string(status) +
+                       " while rendering; rerun with --gl osmesa, or without --gpu");
+    std::uint32_t flags[4];
+    std::memcpy(flags, &output[0], sizeof flags);
+    report_gpu_stubs(program.shader, flags);
+    if (probe) read_gpu_probe(output, pixel_count, program.shader, *probe);
+    if (!finished) throw GpuError("gpu: render cancelled");
+    return output_image(output, scene, mode, samples);
 }
 
 Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {

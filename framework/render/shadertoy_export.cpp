@@ -267,7 +267,7 @@ ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::
                ", exported by `rt export-shadertoy` (stages/09-gpu/README.md#publish-on-shadertoy)"
                ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "
                "field of view; the image takes the canvas's shape.\n\n" +
-               gpu_defines(scene, mode) + "\n" + scene_structs() + "\n" +
+               gpu_defines(scene, mode) + "\n" + gpu::shader_prelude() + scene_structs() + "\n" +
                scene_constants(scene, mode) + "\n";
     out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
     for_shadertoy(shader, out.text, out.line_origins);

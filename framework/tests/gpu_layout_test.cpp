@@ -7,14 +7,18 @@
 
 #include <cstddef>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/source_dir.h"
 #include "gl/egl_context.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/shader_constants.h"
 
 namespace rt::gpu {
 namespace {
@@ -122,9 +126,10 @@ std::string read_file(const std::string& path) {
 
 // Compiles and links the layout into a compute shader; "" on success, else the driver's log.
 std::string build_program(GLuint& program) {
-    std::string source = "#version 430\nlayout(local_size_x = 1) in;\n" +
+    std::string source = "#version 430\n" + shader_prelude() + "layout(local_size_x = 1) in;\n" +
                          read_file(source_dir() / "shaders/scene_layout.glsl") +
-                         "layout(std430, binding = 15) writeonly buffer Out { vec4 result; };\n"
+                         "layout(std430, binding = RT_BINDING_OUTPUT) writeonly buffer Out { vec4 "
+                         "result; };\n"
                          "void main() {\n    vec4 acc = vec4(0);\n";
     for (const Member& m : members()) source += std::string("    ") + m.use + "\n";
     for (const Member& m : block_members()) source += std::string("    ") + m.use + "\n";
@@ -195,7 +200,60 @@ TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
         EXPECT_EQ(std::size_t(offset_of(second) - offset), m.stride)
             << m.name << ": GLSL's array stride differs from sizeof in C++ (" << m.stride << ")";
     }
+    // Each storage block and the uniform block at the binding the host binds its buffer to.
+    const std::pair<GLenum, std::pair<const char*, int>> blocks[] = {
+        {GL_SHADER_STORAGE_BLOCK, {"Spheres", kSpheres}},
+        {GL_SHADER_STORAGE_BLOCK, {"Planes", kPlanes}},
+        {GL_SHADER_STORAGE_BLOCK, {"Boxes", kBoxes}},
+        {GL_SHADER_STORAGE_BLOCK, {"Triangles", kTriangles}},
+        {GL_SHADER_STORAGE_BLOCK, {"Positions", kPositions}},
+        {GL_SHADER_STORAGE_BLOCK, {"Normals", kNormals}},
+        {GL_SHADER_STORAGE_BLOCK, {"Uvs", kUvs}},
+        {GL_SHADER_STORAGE_BLOCK, {"Materials", kMaterials}},
+        {GL_SHADER_STORAGE_BLOCK, {"Lights", kLights}},
+        {GL_SHADER_STORAGE_BLOCK, {"BvhNodes", kBvhNodes}},
+        {GL_SHADER_STORAGE_BLOCK, {"BvhPrimitives", kBvhPrimitives}},
+        {GL_SHADER_STORAGE_BLOCK, {"Textures", kTextures}},
+        {GL_SHADER_STORAGE_BLOCK, {"TextureImages", kTextureImages}},
+        {GL_SHADER_STORAGE_BLOCK, {"Texels", kTexels}},
+        {GL_SHADER_STORAGE_BLOCK, {"Environments", kEnvironment}},
+        {GL_SHADER_STORAGE_BLOCK, {"Out", kOutputBinding}},
+        {GL_UNIFORM_BLOCK, {"SampledScene", kSampledSceneBinding}}};
+    for (const auto& [interface, block] : blocks) {
+        const GLuint index = glGetProgramResourceIndex(program, interface, block.first);
+        ASSERT_NE(index, GL_INVALID_INDEX) << block.first << " is not an active block";
+        const GLenum property = GL_BUFFER_BINDING;
+        GLint binding = -1;
+        glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &binding);
+        EXPECT_EQ(binding, block.second) << block.first << " is at binding " << binding
+                                         << "; the host binds its buffer at " << block.second;
+    }
     glDeleteProgram(program);
+}
+
+// The numbers C++ and GLSL share are written into the shaders by gpu/shader_constants.cpp: no
+// GLSL file of the framework or of a stage declares one of them again, or binds a block by a
+// number of its own.
+TEST(GpuLayout, SharedNumbersHaveOneHome) {
+    const std::string prelude = shader_prelude();
+    const std::regex constant(R"(const\s+int\s+(k[A-Za-z0-9]+)\s*=)");
+    const std::regex binding(R"(binding\s*=\s*[0-9])");
+    int files = 0;
+    for (const char* folder : {"shaders", "stages/09-gpu", "stages/10-sampling"})
+        for (const auto& entry : std::filesystem::directory_iterator(source_dir() / folder)) {
+            const std::string ext = entry.path().extension().string();
+            if (ext != ".glsl" && ext != ".comp") continue;
+            ++files;
+            const std::string text = read_file(entry.path());
+            EXPECT_FALSE(std::regex_search(text, binding))
+                << entry.path() << " binds a block by number: use RT_BINDING_* (the prelude's)";
+            for (auto it = std::sregex_iterator(text.begin(), text.end(), constant);
+                 it != std::sregex_iterator(); ++it)
+                EXPECT_EQ(prelude.find(" " + (*it)[1].str() + " = "), std::string::npos)
+                    << entry.path() << " declares " << (*it)[1]
+                    << ", which gpu/shader_constants.cpp already writes into every shader";
+        }
+    EXPECT_GT(files, 10);
 }
 
 TEST(GpuLayout, PackKeepsEveryValue) {

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "gl/shader_source.h"
+#include "gpu/shader_constants.h"
 #include "temp_dir.h"
 
 namespace fs = std::filesystem;
@@ -37,7 +38,10 @@ TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreNumbered) {
         assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "#define A\n");
     ASSERT_EQ(s.error, "");
     ASSERT_EQ(s.files.size(), 2u);  // a.glsl once, however often it is included
-    EXPECT_EQ(s.text.rfind("#version 430\n#define A\n#line 2 0\n", 0), 0u) << s.text;
+    // After #version: the constants C++ and GLSL share, the host's defines, then line 2 of main.
+    EXPECT_EQ(s.text.rfind("#version 430\n" + gpu::shader_prelude() + "#define A\n#line 2 0\n", 0),
+              0u)
+        << s.text;
     EXPECT_NE(s.text.find("#line 100001 1\nfloat f"), std::string::npos) << s.text;
     EXPECT_NE(s.text.find("    rt_not_implemented(0);\n"), std::string::npos) << s.text;
     EXPECT_NE(s.text.find("#line 4 0\nvoid main"), std::string::npos) << s.text;

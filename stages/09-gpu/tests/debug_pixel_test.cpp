@@ -59,13 +59,14 @@ TEST(GpuDebugPixel, LeavesTheImageAsItWas) {
 TEST(GpuDebugPixel, FollowsTheCpuRayTree) {
     const Scene scene = whitted();
     const GpuPixelProbe probe = debug_pixel_gpu(scene, RenderMode::Shaded, 100, 80);
-    const std::vector<GpuDebugRecord> pixel = notes(probe, 11);
+    const std::vector<GpuDebugRecord> pixel = notes(probe, gpu::kDebugPixel);
     ASSERT_EQ(pixel.size(), 1u) << gpu_pixel_text(scene, probe);
     if (pixel[0].value.w == -2)
         GTEST_SKIP() << "a stub was reached: the course tree runs this test";
     const PixelTree tree = debug_pixel(scene, 100, 80);
-    EXPECT_EQ(int(notes(probe, 1).size()), count_rays(tree.root)) << gpu_pixel_text(scene, probe);
-    const std::vector<GpuDebugRecord> hits = notes(probe, 3);
+    EXPECT_EQ(int(notes(probe, gpu::kDebugRay).size()), count_rays(tree.root))
+        << gpu_pixel_text(scene, probe);
+    const std::vector<GpuDebugRecord> hits = notes(probe, gpu::kDebugHit);
     ASSERT_FALSE(hits.empty());
     ASSERT_TRUE(tree.root.hit);
     EXPECT_EQ((int(hits[0].value.y) << 28) | int(hits[0].value.z), tree.root.hit_record.primitive);
@@ -101,7 +102,7 @@ TEST(GpuDebugPixel, StudentValuesNameTheirFileAndLine) {
     EXPECT_NE(text.find("`: (7.5, 3.5)\n"), std::string::npos) << text.substr(0, 2000);
     EXPECT_NE(text.find("`: -70000\n"), std::string::npos) << text.substr(0, 2000);
     EXPECT_NE(text.find("`: true\n"), std::string::npos) << text.substr(0, 2000);
-    EXPECT_GT(probe.made, kGpuDebugCapacity);
+    EXPECT_GT(probe.made, gpu::kDebugCapacity);
     EXPECT_NE(text.find("more notes were made; the first 512 are shown"), std::string::npos);
 }
 
