@@ -2,8 +2,6 @@
 // (grading.h); the build and run phases are in grade_build.cpp and grade_run.cpp.
 #include "grade.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -246,13 +244,8 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     if (!o.results.empty()) write_results_json(g.to_report(), o.results);  // the placeholder
 
     // Gradings share the workspace read-only; `prepare` takes this lock exclusively.
-    const int lock = open((g.w.cache / "workspace.lock").c_str(),
-                          O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
-    flock(lock, LOCK_SH);
-    struct Unlock {
-        int fd;
-        ~Unlock() { close(fd); }
-    } unlock{lock};
+    WorkspaceLock lock(g.w.cache);
+    lock.shared();
     g.plan = load_build_plan(g.w);
 
     prepare_scratch(g);

@@ -94,25 +94,26 @@ bool extract_zip(const fs::path& zip, const fs::path& dir, std::string& error) {
 
 }  // namespace
 
-Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
-               const std::vector<StageSpec>& all, const fs::path& ws_src) {
-    Intake in;
+namespace {
+
+// The submission's folder: a .zip extracted into a temporary folder (in.temp), and a zip or
+// folder of one folder looked inside. Empty with in.error set when there is none.
+fs::path open_submission(const GradeOptions& o, Intake& in) {
     fs::path sub = o.submission;
     std::error_code ec;
     if (fs::is_regular_file(sub) && sub.extension() == ".zip") {
         char tmpl[] = "/tmp/rt-grade-zip-XXXXXX";
         if (!mkdtemp(tmpl)) {
             in.error = "cannot create a temporary folder";
-            return in;
+            return {};
         }
         in.temp = tmpl;
-        if (!extract_zip(sub, in.temp, in.error)) return in;
+        if (!extract_zip(sub, in.temp, in.error)) return {};
         sub = in.temp;
     } else if (!fs::is_directory(sub)) {
         in.error = "the submission is neither a folder nor a .zip";
-        return in;
+        return {};
     }
-    // A zip of one folder: look inside it.
     for (int depth = 0; depth < 3; ++depth) {
         std::vector<fs::path> entries;
         for (const auto& e : fs::directory_iterator(sub, ec))
@@ -122,10 +123,16 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
         else
             break;
     }
-    in.root = sub;
+    return sub;
+}
 
-    // Where each graded student file may be: a whole tree, a stage folder, or loose files.
+// Each graded student file where it may be: a whole tree, a stage folder, or loose files. Taken
+// into in.files (or in.rejected with the reason); returns the paths it claimed.
+std::set<std::string> claim_student_files(Intake& in, const fs::path& sub,
+                                          const std::vector<StageSpec>& graded,
+                                          const fs::path& ws_src) {
     std::set<std::string> claimed;
+    std::error_code ec;
     for (const auto& s : graded) {
         const std::string stage_name = fs::path(s.folder).filename().string();
         for (const auto& f : s.student_files) {
@@ -150,17 +157,21 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
                 }
                 const std::string text = read_text(p);
                 const std::string problem = check_source(text, ws_src, s.folder);
-                if (!problem.empty()) {
+                if (!problem.empty())
                     in.rejected[key] = problem;
-                } else {
+                else
                     in.files[key] = text;
-                }
                 break;
             }
         }
     }
-    // Files of the stages not graded in this run, by every name they may be submitted under.
-    std::map<std::string, int> other_stage_files;
+    return claimed;
+}
+
+// Files of the stages not graded in this run, by every name they may be submitted under.
+std::map<std::string, int> other_stage_files(const std::vector<StageSpec>& graded,
+                                             const std::vector<StageSpec>& all) {
+    std::map<std::string, int> others;
     for (const auto& s : all) {
         if (std::any_of(graded.begin(), graded.end(),
                         [&](const StageSpec& g) { return g.number == s.number; }))
@@ -168,10 +179,42 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
         const std::string stage_name = fs::path(s.folder).filename().string();
         for (const auto& f : s.student_files)
             for (const std::string& candidate : {s.folder + "/" + f, stage_name + "/" + f, f})
-                other_stage_files.emplace(candidate, s.number);
+                others.emplace(candidate, s.number);
     }
-    // Everything else is listed as ignored.
+    return others;
+}
+
+// Why a file nobody claimed is ignored; "" when it is expected and not worth a line (another
+// stage's file inside a whole tree, an unchanged file of the course).
+std::string ignored_reason(const GradeOptions& o, const fs::directory_entry& entry,
+                           const std::string& rel, const std::map<std::string, int>& others) {
+    const auto st = entry.symlink_status();
+    const std::string name = entry.path().filename().string();
+    if (fs::is_symlink(st)) return "symbolic link";
+    if (odd_name(name)) return "odd file name";
+    if (!fs::is_regular_file(st)) return "not a regular file";
+    if (const auto other = others.find(rel); other != others.end()) {
+        // In a whole tree, other stages' files are expected; loose ones are worth a word.
+        if (rel.starts_with("stages/")) return "";
+        const int n = other->second;
+        return "the student file of stage " + std::string(n < 10 ? "0" : "") + std::to_string(n) +
+               ", which this run does not grade (see --stages)";
+    }
+    // A copy of the course tree: unchanged files are expected and not worth listing.
+    const fs::path theirs = o.source / rel;
+    std::error_code ec;
+    if (!fs::is_regular_file(theirs, ec)) return "not a student file of the graded stages";
+    if (fs::file_size(theirs, ec) == fs::file_size(entry.path(), ec) &&
+        read_text(theirs) == read_text(entry.path()))
+        return "";
+    return "edited course file: ignored, the instructor's copy is used";
+}
+
+// Everything else in the submission, listed as ignored (the first 30; the rest counted).
+void list_ignored(const GradeOptions& o, Intake& in, const fs::path& sub,
+                  const std::set<std::string>& claimed, const std::map<std::string, int>& others) {
     int listed = 0;
+    std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(sub, ec);
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         const std::string rel = it->path().lexically_relative(sub).string();
@@ -180,34 +223,11 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
             it.disable_recursion_pending();
             continue;
         }
-        const auto st = it->symlink_status();
-        if (fs::is_directory(st)) continue;
-        if (claimed.count(rel)) continue;
-        std::string reason = fs::is_symlink(st)         ? "symbolic link"
-                             : odd_name(name)           ? "odd file name"
-                             : !fs::is_regular_file(st) ? "not a regular file"
-                                                        : "not a student file of the graded stages";
-        if (reason.starts_with("not a student") && other_stage_files.count(rel)) {
-            // In a whole tree, other stages' files are expected; loose ones are worth a word.
-            if (rel.starts_with("stages/")) {
-                ++in.unchanged;
-                continue;
-            }
-            const int n = other_stage_files[rel];
-            reason = "the student file of stage " + std::string(n < 10 ? "0" : "") +
-                     std::to_string(n) + ", which this run does not grade (see --stages)";
-        } else if (reason.starts_with("not a student")) {
-            // A copy of the course tree: unchanged files are expected and not worth listing.
-            const fs::path theirs = o.source / rel;
-            std::error_code e2;
-            if (fs::is_regular_file(theirs, e2)) {
-                if (fs::file_size(theirs, e2) == fs::file_size(it->path(), e2) &&
-                    read_text(theirs) == read_text(it->path())) {
-                    ++in.unchanged;
-                    continue;
-                }
-                reason = "edited course file: ignored, the instructor's copy is used";
-            }
+        if (fs::is_directory(it->symlink_status()) || claimed.count(rel)) continue;
+        const std::string reason = ignored_reason(o, *it, rel, others);
+        if (reason.empty()) {
+            ++in.unchanged;
+            continue;
         }
         if (listed >= 30) {
             ++in.ignored_other;
@@ -217,6 +237,18 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
         in.ignored.push_back({clean_output(rel), reason});
         if (in.ignored.size() > 200) break;
     }
+}
+
+}  // namespace
+
+Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
+               const std::vector<StageSpec>& all, const fs::path& ws_src) {
+    Intake in;
+    const fs::path sub = open_submission(o, in);
+    if (sub.empty()) return in;
+    in.root = sub;
+    const std::set<std::string> claimed = claim_student_files(in, sub, graded, ws_src);
+    list_ignored(o, in, sub, claimed, other_stage_files(graded, all));
     return in;
 }
 

@@ -72,102 +72,135 @@ Marker classify_marker(std::string_view line) {
     return Marker::None;
 }
 
-MarkerResult process_markers(std::string_view text, RegionMode mode) {
-    MarkerResult result;
-    result.text.reserve(text.size());
-    enum class State { Outside, Solution, Stub } state = State::Outside;
-    int begin_line = 0;
-    int stub_line = 0;
-    auto error = [&](int line, std::string message) {
-        result.errors.push_back({line, "error: " + std::move(message)});
-    };
-    auto emit = [&](std::string_view content, std::string_view ending) {
-        result.text += content;
-        result.text += ending;
-    };
+namespace {
 
+// The marker state machine over one file: each line either a marker, which moves the state (or is
+// an error), or content, which is kept, dropped or un-commented as the state and mode say.
+class MarkerScanner {
+  public:
+    explicit MarkerScanner(RegionMode mode) : mode_(mode) {}
+
+    void begin(int number) {
+        if (state_ != State::Outside) {
+            // Stay in the outer region: its END will close it, so one mistake gives one error.
+            error(number, quote(kBegin) + " inside the region opened at line " +
+                              std::to_string(begin_line_) +
+                              " (regions cannot nest); close that region with " + quote(kEnd) +
+                              " before opening another");
+            return;
+        }
+        state_ = State::Solution;
+        begin_line_ = number;
+        stub_line_ = 0;
+    }
+
+    void stub(int number) {
+        if (state_ == State::Outside)
+            error(number, quote(kStub) + " without " + quote(kBegin) + "; add " + quote(kBegin) +
+                              " above the solution lines, or delete this line");
+        else if (state_ == State::Stub)
+            error(number, "second " + quote(kStub) + " in the region opened at line " +
+                              std::to_string(begin_line_) + " (first at line " +
+                              std::to_string(stub_line_) + "); keep only one");
+        else
+            state_ = State::Stub, stub_line_ = number;
+    }
+
+    void end(int number) {
+        if (state_ == State::Outside) {
+            error(number, quote(kEnd) + " without " + quote(kBegin) + "; add " + quote(kBegin) +
+                              " where the solution starts, or delete this line");
+            return;
+        }
+        if (state_ == State::Solution)
+            error(number, "the region opened at line " + std::to_string(begin_line_) + " has no " +
+                              quote(kStub) + " section; add " + quote(kStub) +
+                              " followed by the commented stub (RT_NOT_IMPLEMENTED and a "
+                              "return) before " +
+                              quote(kEnd));
+        else
+            ++result_.regions;
+        state_ = State::Outside;
+    }
+
+    void content(int number, const Line& line) {
+        const std::string_view text = trim(line.content);
+        if (state_ == State::Outside) {
+            emit(line.content, line.ending);
+        } else if (state_ == State::Solution) {
+            if (mode_ == RegionMode::Keep) emit(line.content, line.ending);
+        } else if (text.empty()) {
+            if (mode_ == RegionMode::Strip) emit({}, line.ending);  // spacing inside the stub
+        } else if (!text.starts_with("//")) {
+            error(number, "stub line is not a comment (in the region opened at line " +
+                              std::to_string(begin_line_) + "); write it as '// " +
+                              std::string(text) +
+                              "' so the solved tree compiles -- release un-comments it");
+        } else if (mode_ == RegionMode::Strip) {
+            emit(uncomment(line.content), line.ending);
+        }
+    }
+
+    // The result, with a region left open reported and the errors in line order.
+    MarkerResult finish(std::size_t line_count) {
+        if (state_ != State::Outside)
+            error(begin_line_,
+                  "the region opened here is still open at the end of the file (line " +
+                      std::to_string(line_count) + "); add " + quote(kEnd) + " after its stub");
+        std::stable_sort(
+            result_.errors.begin(), result_.errors.end(),
+            [](const MarkerError& a, const MarkerError& b) { return a.line < b.line; });
+        return std::move(result_);
+    }
+
+    MarkerResult& result() { return result_; }
+
+  private:
+    enum class State { Outside, Solution, Stub };
+    void error(int line, std::string message) {
+        result_.errors.push_back({line, "error: " + std::move(message)});
+    }
+    void emit(std::string_view content, std::string_view ending) {
+        result_.text += content;
+        result_.text += ending;
+    }
+
+    RegionMode mode_;
+    State state_ = State::Outside;
+    int begin_line_ = 0, stub_line_ = 0;
+    MarkerResult result_;
+};
+
+}  // namespace
+
+MarkerResult process_markers(std::string_view text, RegionMode mode) {
+    MarkerScanner scanner(mode);
+    scanner.result().text.reserve(text.size());
     const std::vector<Line> lines = split_lines(text);
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const int number = static_cast<int>(i) + 1;
-        const Line& line = lines[i];
-        const Marker marker = classify_marker(line.content);
+        const Marker marker = classify_marker(lines[i].content);
         if (marker != Marker::None) {
-            result.has_markers = true;
-            if (result.first_marker_line == 0) result.first_marker_line = number;
+            scanner.result().has_markers = true;
+            if (scanner.result().first_marker_line == 0)
+                scanner.result().first_marker_line = number;
         }
         switch (marker) {
             case Marker::Begin:
-                if (state != State::Outside) {
-                    // Stay in the outer region: its END will close it, so one mistake gives one
-                    // error.
-                    error(number, quote(kBegin) + " inside the region opened at line " +
-                                      std::to_string(begin_line) +
-                                      " (regions cannot nest); close that region with " +
-                                      quote(kEnd) + " before opening another");
-                } else {
-                    state = State::Solution;
-                    begin_line = number;
-                    stub_line = 0;
-                }
+                scanner.begin(number);
                 break;
             case Marker::Stub:
-                if (state == State::Outside) {
-                    error(number, quote(kStub) + " without " + quote(kBegin) + "; add " +
-                                      quote(kBegin) +
-                                      " above the solution lines, or delete this line");
-                } else if (state == State::Stub) {
-                    error(number, "second " + quote(kStub) + " in the region opened at line " +
-                                      std::to_string(begin_line) + " (first at line " +
-                                      std::to_string(stub_line) + "); keep only one");
-                } else {
-                    state = State::Stub;
-                    stub_line = number;
-                }
+                scanner.stub(number);
                 break;
             case Marker::End:
-                if (state == State::Outside) {
-                    error(number, quote(kEnd) + " without " + quote(kBegin) + "; add " +
-                                      quote(kBegin) +
-                                      " where the solution starts, or delete this line");
-                } else if (state == State::Solution) {
-                    error(number, "the region opened at line " + std::to_string(begin_line) +
-                                      " has no " + quote(kStub) + " section; add " + quote(kStub) +
-                                      " followed by the commented stub (RT_NOT_IMPLEMENTED and a "
-                                      "return) before " +
-                                      quote(kEnd));
-                    state = State::Outside;
-                } else {
-                    ++result.regions;
-                    state = State::Outside;
-                }
+                scanner.end(number);
                 break;
             case Marker::None:
-                if (state == State::Outside) {
-                    emit(line.content, line.ending);
-                } else if (state == State::Solution) {
-                    if (mode == RegionMode::Keep) emit(line.content, line.ending);
-                } else if (trim(line.content).empty()) {
-                    if (mode == RegionMode::Strip)
-                        emit({}, line.ending);  // spacing inside the stub
-                } else if (!trim(line.content).starts_with("//")) {
-                    error(number, "stub line is not a comment (in the region opened at line " +
-                                      std::to_string(begin_line) + "); write it as '// " +
-                                      std::string(trim(line.content)) +
-                                      "' so the solved tree compiles -- release un-comments it");
-                } else if (mode == RegionMode::Strip) {
-                    emit(uncomment(line.content), line.ending);
-                }
+                scanner.content(number, lines[i]);
                 break;
         }
     }
-    if (state != State::Outside) {
-        error(begin_line, "the region opened here is still open at the end of the file (line " +
-                              std::to_string(lines.size()) + "); add " + quote(kEnd) +
-                              " after its stub");
-    }
-    std::stable_sort(result.errors.begin(), result.errors.end(),
-                     [](const MarkerError& a, const MarkerError& b) { return a.line < b.line; });
-    return result;
+    return scanner.finish(lines.size());
 }
 
 std::string format_error(const std::string& path, const MarkerError& error) {

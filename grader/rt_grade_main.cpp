@@ -34,24 +34,20 @@ bool parse_stages(const std::string& list, std::vector<int>& stages) {
     return true;
 }
 
-}  // namespace
-
 namespace fs = std::filesystem;
 
-int main(int argc, char** argv) {
-    // Not dumpable: a child running as the same user (no user namespace, no uid drop) cannot
-    // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
-    prctl(PR_SET_DUMPABLE, 0);
-    CLI::App app{"rt-grade: grade submissions and release starter trees"};
-    app.footer(
-        "Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
-        "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
-
+// What the command line says besides the subcommands' own options.
+struct GradeArgs {
     rt::grader::GradeOptions grade;
-    grade.source = rt::source_dir();
     std::string submission, stages, cache;
-    app.add_option("submission", submission, "folder or .zip to grade ('.' : the working tree)");
-    app.add_option("--stages", stages,
+};
+
+// The options of grading one submission (they also work after a subcommand's name).
+void add_grade_options(CLI::App& app, GradeArgs& a) {
+    rt::grader::GradeOptions& grade = a.grade;
+    grade.source = rt::source_dir();
+    app.add_option("submission", a.submission, "folder or .zip to grade ('.' : the working tree)");
+    app.add_option("--stages", a.stages,
                    "comma-separated stage numbers (default: every graded stage; for '.', the "
                    "stages you have started)");
     app.add_option("--results", grade.results, "write Gradescope's results.json here");
@@ -59,8 +55,8 @@ int main(int argc, char** argv) {
                    "write the HTML report here (default for '.': report.html)");
     app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
         ->check(CLI::ExistingDirectory);
-    if (const char* c = std::getenv("RT_GRADE_CACHE")) cache = c;
-    app.add_option("--cache", cache,
+    if (const char* c = std::getenv("RT_GRADE_CACHE")) a.cache = c;
+    app.add_option("--cache", a.cache,
                    "grading workspaces (default: $RT_GRADE_CACHE, else SOURCE/build/grader-cache)");
     app.add_option("--jobs", grade.jobs, "test processes at a time (default: all cores)");
     app.add_flag("--quiet", grade.quiet, "no terminal summary");
@@ -68,16 +64,21 @@ int main(int argc, char** argv) {
         "--time-limit", grade.time_limit,
         "seconds for every test and render, overriding grading.json (tests of the grader)");
     app.add_flag("--reveal-hidden", grade.reveal_hidden, "summary also lists non-visible tests");
+}
 
+struct ReleaseArgs {
     rt::grader::ReleaseOptions release;
-    std::string out;
-    std::string source = rt::source_dir().string();
+    std::string out, source = rt::source_dir().string();
+};
+
+CLI::App* add_release_command(CLI::App& app, ReleaseArgs& a) {
+    rt::grader::ReleaseOptions& release = a.release;
     CLI::App* release_cmd = app.add_subcommand(
         "release",
         "Write a student starter tree: the source tree with solutions replaced by stubs");
-    release_cmd->add_option("--out", out, "Directory to write the starter tree to")->required();
+    release_cmd->add_option("--out", a.out, "Directory to write the starter tree to")->required();
     release_cmd
-        ->add_option("--source", source,
+        ->add_option("--source", a.source,
                      "Course source tree (default: the tree rt-grade was built from)")
         ->check(CLI::ExistingDirectory)
         ->capture_default_str();
@@ -90,29 +91,27 @@ int main(int argc, char** argv) {
     release_cmd->add_flag(
         "--include-untracked", release.include_untracked,
         "Git checkout: also copy untracked files that .gitignore does not exclude");
+    return release_cmd;
+}
 
-    CLI::App* prepare_cmd = app.add_subcommand(
-        "prepare", "Build the grading workspace now (otherwise the first grading does it)");
-    int slots = 1;  // accepted for old scripts: one workspace now serves every job
-    prepare_cmd->add_option("--slots", slots, "ignored (one workspace serves every batch job)");
+struct BatchArgs {
+    std::string dir, out = "grades";
+    int jobs = 1;
+};
 
-    std::string batch_dir, batch_out = "grades";
-    int batch_jobs = 1;
+CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
     CLI::App* batch_cmd =
         app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
-    batch_cmd->add_option("dir", batch_dir, "folder of submissions")
+    batch_cmd->add_option("dir", a.dir, "folder of submissions")
         ->required()
         ->check(CLI::ExistingDirectory);
-    batch_cmd->add_option("--out", batch_out, "where scores.csv and the reports go");
-    batch_cmd->add_option("--jobs", batch_jobs, "submissions graded at a time")
+    batch_cmd->add_option("--out", a.out, "where scores.csv and the reports go");
+    batch_cmd->add_option("--jobs", a.jobs, "submissions graded at a time")
         ->check(CLI::Range(1, 64));
+    return batch_cmd;
+}
 
-    std::string package_out = "autograder.zip";
-    CLI::App* package_cmd = app.add_subcommand(
-        "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
-    package_cmd->add_option("--out", package_out, "the zip to write");
-
-    rt::grader::CompareRequest compare;
+CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare) {
     CLI::App* compare_cmd = app.add_subcommand(
         "compare",
         "Score images with the grader's comparison (calibration): every graded scene "
@@ -122,30 +121,76 @@ int main(int argc, char** argv) {
     compare_cmd->add_option("--image", compare.image, "an image: .exr linear, .png display values");
     compare_cmd->add_option("--scene", compare.scene,
                             "the graded scene the image is, NN-name/scene");
+    return compare_cmd;
+}
 
+// `rt-grade SUBMISSION`: the workspace, then the grading; self-grading (the tree rt-grade grades
+// from) takes the started stages and writes a report.
+int grade_one(rt::grader::GradeOptions& grade, const std::string& submission) {
+    grade.submission = submission;
+    std::error_code ec;
+    const bool self = fs::weakly_canonical(fs::absolute(submission), ec) ==
+                      fs::weakly_canonical(fs::absolute(grade.source), ec);
+    if (self) {
+        grade.started_only = grade.stages.empty();
+        if (grade.html.empty()) grade.html = "report.html";
+    }
+    if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
+    rt::grader::grade_submission(grade, std::cout);
+    if (!grade.html.empty() && !grade.quiet)
+        std::cout << "Report: " << fs::absolute(grade.html).lexically_normal().string()
+                  << " (failures first; open it in a browser)\n";
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Not dumpable: a child running as the same user (no user namespace, no uid drop) cannot
+    // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
+    prctl(PR_SET_DUMPABLE, 0);
+    CLI::App app{"rt-grade: grade submissions and release starter trees"};
+    app.footer(
+        "Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
+        "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
+    GradeArgs args;
+    add_grade_options(app, args);
+    rt::grader::GradeOptions& grade = args.grade;
+    ReleaseArgs release;
+    CLI::App* release_cmd = add_release_command(app, release);
+    CLI::App* prepare_cmd = app.add_subcommand(
+        "prepare", "Build the grading workspace now (otherwise the first grading does it)");
+    int slots = 1;  // accepted for old scripts: one workspace now serves every job
+    prepare_cmd->add_option("--slots", slots, "ignored (one workspace serves every batch job)");
+    BatchArgs batch;
+    CLI::App* batch_cmd = add_batch_command(app, batch);
+    std::string package_out = "autograder.zip";
+    CLI::App* package_cmd = app.add_subcommand(
+        "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
+    package_cmd->add_option("--out", package_out, "the zip to write");
+    rt::grader::CompareRequest compare;
+    CLI::App* compare_cmd = add_compare_command(app, compare);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
     for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
-    grade.cache = cache;
-    if (!parse_stages(stages, grade.stages)) {
-        std::cerr << "rt-grade: error: --stages \"" << stages
+    grade.cache = args.cache;
+    if (!parse_stages(args.stages, grade.stages)) {
+        std::cerr << "rt-grade: error: --stages \"" << args.stages
                   << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
         return 2;
     }
 
     try {
         if (*release_cmd) {
-            release.out = out;
-            release.source = source;
-            return rt::grader::run_release(release, std::cout, std::cerr);
+            release.release.out = release.out;
+            release.release.source = release.source;
+            return rt::grader::run_release(release.release, std::cout, std::cerr);
         }
-        if (*prepare_cmd) {
-            return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
-        }
+        if (*prepare_cmd) return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
         if (*batch_cmd)
-            return rt::grader::run_batch(grade, batch_dir, batch_out, batch_jobs, std::cout);
+            return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, std::cout);
         if (*compare_cmd) {
             compare.source = grade.source;
             compare.stages = grade.stages;
@@ -153,25 +198,11 @@ int main(int argc, char** argv) {
         }
         if (*package_cmd)
             return rt::grader::run_package(grade.source, package_out, grade.stages, std::cout);
-        if (submission.empty()) {
+        if (args.submission.empty()) {
             std::cerr << app.help();
             return 2;
         }
-        grade.submission = submission;
-        // Self-grading (the tree rt-grade grades from): the started stages, and a report.
-        std::error_code ec;
-        const bool self = fs::weakly_canonical(fs::absolute(submission), ec) ==
-                          fs::weakly_canonical(fs::absolute(grade.source), ec);
-        if (self) {
-            grade.started_only = grade.stages.empty();
-            if (grade.html.empty()) grade.html = "report.html";
-        }
-        if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
-        rt::grader::grade_submission(grade, std::cout);
-        if (!grade.html.empty() && !grade.quiet)
-            std::cout << "Report: " << fs::absolute(grade.html).lexically_normal().string()
-                      << " (failures first; open it in a browser)\n";
-        return 0;
+        return grade_one(grade, args.submission);
     } catch (const std::exception& e) {
         std::cerr << "rt-grade: error: " << e.what() << "\n";
         return 1;

@@ -33,6 +33,22 @@ struct Workspace {
 };
 Workspace workspace_paths(const GradeOptions& options);
 
+// The workspace's lock (CACHE/workspace.lock): gradings hold it shared while they read the
+// workspace, a preparation exclusively while it rebuilds. Released when it goes out of scope.
+// Throws std::runtime_error when the lock file cannot be opened.
+class WorkspaceLock {
+  public:
+    explicit WorkspaceLock(const std::filesystem::path& cache);
+    ~WorkspaceLock();
+    WorkspaceLock(const WorkspaceLock&) = delete;
+    WorkspaceLock& operator=(const WorkspaceLock&) = delete;
+    void shared();     // waits for a preparation to finish
+    void exclusive();  // waits for every grading to finish
+
+  private:
+    int fd_ = -1;
+};
+
 // What prepare saved: commands with @OUT@ (and @STAGES@ for the stage archive).
 struct BuildPlan {
     std::map<std::string, std::vector<std::string>> compile;  // "stages/NN/f.cpp" -> argv
@@ -73,6 +89,9 @@ bool link_stage(const Workspace& w, const BuildPlan& plan,
                 const std::vector<std::filesystem::path>& objects,
                 const std::vector<std::string>& targets, const std::filesystem::path& bin,
                 std::string& log);
+
+// The name of student file `key`'s objects in the private folder.
+std::string object_name(const std::string& key);
 
 // Pristine objects of every student file, compiled at prepare time.
 std::filesystem::path solution_object(const Workspace& w, const std::string& key);

@@ -121,6 +121,41 @@ int GalleryPage::failing() const {
     }));
 }
 
+// One scene's card: its badge, the render, reference and difference, and the metric.
+void GalleryPage::write_scene(std::ostream& page, const Entry& e) {
+    std::string status = "none", badge = "no reference";
+    if (e.compared && !e.result.size_matches) {
+        status = "fail", badge = "wrong size";
+    } else if (e.compared) {
+        const double p = e.result.failing_percent;
+        status = e.result.passed ? "pass" : p < e.fail_percent ? "partial" : "fail";
+        badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
+    }
+    if (!e.graded) badge += " (not graded)";
+    page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
+         << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
+         << (e.graded ? "true" : "false") << "\" data-compare=\"" << compare_text(e) << "\">\n<b>"
+         << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
+         << "</span>\n<div class=\"cols\">\n";
+    const auto column = [&](const std::string& file, const char* label) {
+        if (file.empty()) return;
+        page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
+             << label << "\"></a><br>" << label << "</div>\n";
+    };
+    column(e.image, "render");
+    column(e.reference, "reference");
+    column(e.difference, "difference");
+    page << "</div>\n";
+    if (e.compared)
+        page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
+             << e.options.tolerance << ", pass up to " << e.options.max_failing_percent << "%"
+             << (e.options.block > 0 ? ", " + std::to_string(e.options.block) + "x" +
+                                           std::to_string(e.options.block) + "-block means"
+                                     : "")
+             << ")</div>\n";
+    page << "</div>\n";
+}
+
 fs::path GalleryPage::write() const {
     std::ostringstream page;
     int passed = 0, graded = 0;
@@ -156,37 +191,7 @@ fs::path GalleryPage::write() const {
                  << html(s.title) << " <small>(<a href=\"" << html(s.handout)
                  << "\">handout</a>)</small></h2>\n";
         }
-        std::string status = "none", badge = "no reference";
-        if (e.compared && !e.result.size_matches) {
-            status = "fail", badge = "wrong size";
-        } else if (e.compared) {
-            const double p = e.result.failing_percent;
-            status = e.result.passed ? "pass" : p < e.fail_percent ? "partial" : "fail";
-            badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
-        }
-        if (!e.graded) badge += " (not graded)";
-        page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
-             << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
-             << (e.graded ? "true" : "false") << "\" data-compare=\"" << compare_text(e)
-             << "\">\n<b>" << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
-             << "</span>\n<div class=\"cols\">\n";
-        const auto column = [&](const std::string& file, const char* label) {
-            if (file.empty()) return;
-            page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
-                 << label << "\"></a><br>" << label << "</div>\n";
-        };
-        column(e.image, "render");
-        column(e.reference, "reference");
-        column(e.difference, "difference");
-        page << "</div>\n";
-        if (e.compared)
-            page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
-                 << e.options.tolerance << ", pass up to " << e.options.max_failing_percent << "%"
-                 << (e.options.block > 0 ? ", " + std::to_string(e.options.block) + "x" +
-                                               std::to_string(e.options.block) + "-block means"
-                                         : "")
-                 << ")</div>\n";
-        page << "</div>\n";
+        write_scene(page, e);
     }
     if (!stage.empty()) page << "</section>\n";
     // Once loaded, the page records how many of its images the browser could decode, so a

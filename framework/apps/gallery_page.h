@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ class GalleryPage {
     };
     const Stage& stage_info(const std::filesystem::path& stage);
     static std::string compare_text(const Entry& e);
+    static void write_scene(std::ostream& page, const Entry& e);
 
     std::filesystem::path source_, out_;
     std::map<std::string, Stage> stages_;

@@ -27,6 +27,7 @@
 
 #include "apps/cli_parse.h"
 #include "apps/gallery_page.h"
+#include "apps/rt_commands.h"
 #include "core/source_dir.h"
 #include "gl/headless_context.h"
 #include "image/compare.h"
@@ -54,26 +55,6 @@ const std::map<std::string, RenderMode> kModes = {
     {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
     {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
     {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
-
-struct RenderArgs {
-    std::string scene;
-    std::string output;
-    std::optional<RenderMode> mode;
-    int width = 0, height = 0, threads = 0;
-    bool quiet = false;
-    std::string debug_pixel, overlay_pixel;  // "X,Y"
-    std::string debug_format = "text";
-    std::string accelerator;     // "", "none" or "bvh": overrides the scene's
-    std::string texture_filter;  // "", nearest, bilinear, oiio, oiio-aniso: for every image
-    double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
-    std::string shadows;         // "", on or off: overrides the scene's (the viewer's toggle)
-    int max_depth = -1;          // >= 0: overrides the scene's
-    int spp = 0;                 // > 0: overrides the scene's samples_per_pixel (stage 10)
-    std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
-    bool gpu = false;        // stage 09: a compute shader renders it (render/gpu_render.h)
-    std::string gl = "egl";  // the context --gpu uses: egl, osmesa or window
-    bool uber = false;       // --gpu with every feature compiled in
-};
 
 // "X,Y" inside the image, or a usage error.
 std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
@@ -296,11 +277,7 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
     return status;
 }
 
-// `rt view`'s arguments, declared whether or not the viewer is built.
-struct ViewArgsForCli {
-    std::string scene, script, out = ".";
-    int threads = 0, width = 0, height = 0;
-};
+// `rt view` (its arguments are declared whether or not the viewer is built).
 
 int run_view_command(const ViewArgsForCli& args) {
 #ifdef RT_HAVE_VIEW
@@ -325,163 +302,46 @@ int run_view_command(const ViewArgsForCli& args) {
 int main(int argc, char** argv) {
     CLI::App app{"rt: the course ray tracer (docs/conventions.md, docs/scene-format.md)"};
     app.require_subcommand(1);
-
     RenderArgs render_args;
-    std::string mode_name;
-    auto* render_cmd = app.add_subcommand("render", "render one scene file to an image");
-    render_cmd->add_option("scene", render_args.scene, "scene file (.json)")->required();
-    render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)");
-    render_cmd->add_option("--debug-pixel", render_args.debug_pixel,
-                           "print the ray tree of pixel X,Y (shaded mode; -o optional); with --gpu "
-                           "what the shader computed there, and each rt_debug(value)");
-    render_cmd->add_option("--debug-format", render_args.debug_format, "text (default) or json")
-        ->check(CLI::IsMember({"text", "json"}));
-    render_cmd->add_option("--overlay-pixel", render_args.overlay_pixel,
-                           "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
-                           "magenta, reflection blue, refraction yellow");
-    render_cmd->add_option("--mode", mode_name, "override the scene's mode")
-        ->check(
-            CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
-    render_cmd
-        ->add_option("--accelerator", render_args.accelerator,
-                     "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
-        ->check(CLI::IsMember({"none", "bvh"}));
-    render_cmd
-        ->add_option("--texture-filter", render_args.texture_filter,
-                     "filter every image texture nearest or bilinear (stage 07), whatever the "
-                     "scene says; or oiio (OpenImageIO's TextureSystem, mip-mapped, trilinear) "
-                     "or oiio-aniso (anisotropic): footprints from camera-ray differentials, "
-                     "none (bilinear) for reflected and refracted rays")
-        ->check(CLI::IsMember({"nearest", "bilinear", "oiio", "oiio-aniso"}));
-    render_cmd->add_option("--width", render_args.width, "override the image width")
-        ->check(CLI::Range(1, 16384));
-    render_cmd->add_option("--height", render_args.height, "override the image height")
-        ->check(CLI::Range(1, 16384));
-    render_cmd->add_option("--threads", render_args.threads, "threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
-    render_cmd
-        ->add_option("--yaw", render_args.yaw_degrees,
-                     "turn the camera about its up axis by DEGREES (positive: to the right)")
-        ->check(CLI::Range(-45.0, 45.0));
-    render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
-    render_cmd->add_option("--shadows", render_args.shadows, "override the scene's shadows")
-        ->check(CLI::IsMember({"on", "off"}));
-    render_cmd
-        ->add_option("--max-depth", render_args.max_depth,
-                     "override the scene's bounces of reflected/refracted rays")
-        ->check(CLI::Range(0, 64));
-    render_cmd
-        ->add_option("--spp", render_args.spp,
-                     "override the scene's samples per pixel (stage 10: any value > 1 samples)")
-        ->check(CLI::Range(1, 65536));
-    render_cmd
-        ->add_option("--seed", render_args.seed,
-                     "override the scene's random seed (stage 10; 0 to 2^53)")
-        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 53));
-    render_cmd->add_flag("--gpu", render_args.gpu,
-                         "render with the compute shader of stage 09 (shaders/trace.comp and "
-                         "stages/09-gpu/*.glsl; a stage 10 scene also "
-                         "stages/10-sampling/sampling.glsl)");
-    render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
-        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
-    render_cmd->add_flag("--uber", render_args.uber,
-                         "with --gpu: compile every feature into the shader instead of only what "
-                         "the scene uses (rt-bench gpu compares the two)");
-
-    fs::path gallery_out = "gallery";
-    fs::path source = source_dir();
-    int gallery_threads = 0;
-    auto* gallery_cmd = app.add_subcommand("gallery", "render every scene of every stage");
-    gallery_cmd->add_option("--out", gallery_out, "output folder (default: ./gallery)");
-    gallery_cmd->add_option("--source", source, "source tree holding stages/")
-        ->check(CLI::ExistingDirectory);
-    gallery_cmd->add_option("--threads", gallery_threads, "threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
-
-    std::string compare_actual, compare_reference;
-    int compare_tolerance = 2;
-    bool compare_neighbourhood = false;
-    int compare_block = 0;
-    auto* compare_cmd = app.add_subcommand(
-        "compare", "compare two images by the grader's metric (framework/image/compare.h)");
-    compare_cmd->add_option("actual", compare_actual, "image (.png or .exr)")->required();
-    compare_cmd->add_option("reference", compare_reference, "reference image")->required();
-    compare_cmd->add_option("--tolerance", compare_tolerance, "8-bit steps a channel may differ")
-        ->check(CLI::Range(0, 255));
-    compare_cmd->add_flag("--neighbourhood", compare_neighbourhood,
-                          "forgive anti-aliased edges (3x3), as the graders do");
-    compare_cmd
-        ->add_option("--block", compare_block,
-                     "compare the means of NxN blocks (Monte Carlo images, stage 10)")
-        ->check(CLI::Range(0, 256));
-
+    CLI::App* render_cmd = add_render_command(app, render_args);
+    add_render_overrides(render_cmd, render_args);
+    add_render_gpu_options(render_cmd, render_args);
+    GalleryArgs gallery;
+    CLI::App* gallery_cmd = add_gallery_command(app, gallery);
+    CompareArgs compare;
+    CLI::App* compare_cmd = add_compare_command(app, compare);
     ViewArgsForCli view_args;
-    auto* view_cmd = app.add_subcommand(
-        "view",
-        "the lecture-demo viewer: progressive render, toggles, ray trees (needs a display)");
-    view_cmd->add_option("scene", view_args.scene, "scene file (.json)")->required();
-    view_cmd->add_option("--script", view_args.script,
-                         "replay a session and exit (commands: framework/view/view_script.h)");
-    view_cmd->add_option("--out", view_args.out, "folder for screenshots (default: .)");
-    view_cmd->add_option("--threads", view_args.threads, "render threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
-    view_cmd->add_option("--width", view_args.width, "override the image width")
-        ->check(CLI::Range(1, 4096));
-    view_cmd->add_option("--height", view_args.height, "override the image height")
-        ->check(CLI::Range(1, 4096));
-
+    CLI::App* view_cmd = add_view_command(app, view_args);
     std::string info_scene;
     auto* info_cmd = app.add_subcommand("info", "describe a scene file");
     info_cmd->add_option("scene", info_scene, "scene file (.json)")->required();
-
-    bool gl_window = false;
-    auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
-    gl_cmd->add_flag("--window", gl_window, "use a GLFW window instead of headless OSMesa");
-    std::string gl_kind;
-    gl_cmd
-        ->add_option("--gl", gl_kind, "create the GPU stage's context instead and print its limits")
-        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
-
-    std::string export_scene, export_mode;
-    fs::path export_output;
-    auto* export_cmd = app.add_subcommand(
-        "export-shadertoy",
-        "write the scene and stages/09-gpu's GLSL as one self-contained Shadertoy shader "
-        "(stages/09-gpu/README.md#publish-on-shadertoy)");
-    export_cmd->add_option("scene", export_scene, "scene file (.json)")->required();
-    export_cmd->add_option("-o,--output", export_output, "the shader to write (.glsl)")->required();
-    export_cmd->add_option("--mode", export_mode, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
-
-    std::vector<std::string> fmt_files;
-    bool fmt_check = false;
-    auto* fmt_cmd = app.add_subcommand(
-        "fmt", "rewrite scene files in canonical form (docs/scene-format.md#canonical-form)");
-    fmt_cmd->add_option("scenes", fmt_files, "scene files (.json)")->required();
-    fmt_cmd->add_flag("--check", fmt_check,
-                      "change nothing; name each file not in canonical form and exit 1 if any");
-
+    GlInfoArgs gl;
+    CLI::App* gl_cmd = add_gl_info_command(app, gl);
+    ExportArgs exporting;
+    CLI::App* export_cmd = add_export_command(app, exporting);
+    FmtArgs fmt;
+    CLI::App* fmt_cmd = add_fmt_command(app, fmt);
     if (const auto stop =
             parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
         return *stop;
 
     try {
         if (*render_cmd) {
-            if (!mode_name.empty()) render_args.mode = kModes.at(mode_name);
+            if (!render_args.mode_name.empty()) render_args.mode = kModes.at(render_args.mode_name);
             return run_render(render_args);
         }
-        if (*gallery_cmd) return run_gallery(source, gallery_out, gallery_threads);
+        if (*gallery_cmd) return run_gallery(gallery.source, gallery.out, gallery.threads);
         if (*info_cmd) return run_info(info_scene);
         if (*compare_cmd)
-            return run_compare(compare_actual, compare_reference, compare_tolerance,
-                               compare_neighbourhood, compare_block);
+            return run_compare(compare.actual, compare.reference, compare.tolerance,
+                               compare.neighbourhood, compare.block);
         if (*view_cmd) return run_view_command(view_args);
-        if (*gl_cmd) return gl_kind.empty() ? run_gl_info(gl_window) : run_gl_context_info(gl_kind);
-        if (*fmt_cmd) return run_fmt(fmt_files, fmt_check);
+        if (*gl_cmd) return gl.kind.empty() ? run_gl_info(gl.window) : run_gl_context_info(gl.kind);
+        if (*fmt_cmd) return run_fmt(fmt.files, fmt.check);
         if (*export_cmd)
             return run_export_shadertoy(
-                export_scene, export_output,
-                export_mode.empty() ? std::nullopt : std::optional(kModes.at(export_mode)));
+                exporting.scene, exporting.output,
+                exporting.mode.empty() ? std::nullopt : std::optional(kModes.at(exporting.mode)));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

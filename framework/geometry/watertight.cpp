@@ -46,13 +46,17 @@ Real difference_of_products_exact_sign(Real a, Real b, Real c, Real d) {
 
 }  // namespace
 
-bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
-                                   Interval t_range, Hit& hit) {
-    const Vec3& dir = ray.direction;
-    // A zero, NaN or infinite direction hits nothing. Checked first so that nothing below divides
-    // by zero or propagates NaN into a "hit".
-    if (!all_finite(dir)) return false;
+namespace {
 
+// Steps 1 and 2: the axes relabelled so that the direction's dominant axis is z, and the shear
+// that maps the direction to (0, 0, 1).
+struct Shear {
+    int kx = 0, ky = 0, kz = 0;
+    Real Sx = 0, Sy = 0, Sz = 0;
+};
+
+// False for a zero direction.
+bool make_shear(const Vec3& dir, Shear& shear) {
     // 1. The dominant axis kz of the direction becomes the new z axis: dividing by dir[kz] below
     //    is then as well conditioned as it can be (|dir[kz]| >= |dir[i]|, so the shear factors are
     //    in [-1, 1]).
@@ -73,21 +77,25 @@ bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b,
     // 2. Shear constants: the transform (x, y, z) -> (x - Sx z, y - Sy z, Sz z) maps the
     //    direction to (0, 0, 1). Only the first two are needed for the 2D test; Sz is applied to
     //    z afterwards, and only if the 2D test passes.
-    const Real Sx = dir[kx] / dir[kz];
-    const Real Sy = dir[ky] / dir[kz];
-    const Real Sz = Real(1) / dir[kz];
+    shear = {kx, ky, kz, dir[kx] / dir[kz], dir[ky] / dir[kz], Real(1) / dir[kz]};
+    return true;
+}
 
+// Steps 3 to 5: the edge functions U, V, W of the sheared triangle (A, B, C relative to the ray
+// origin), their zeros recomputed with an exact sign.
+struct EdgeFunctions {
+    Real U, V, W;
+};
+
+EdgeFunctions edge_functions(const Shear& s, const Vec3& A, const Vec3& B, const Vec3& C) {
     // 3. Vertices relative to the ray origin, then sheared. Each transformed vertex depends only
     //    on the vertex and the ray, so every triangle sharing it sees the same bits.
-    const Vec3 A = a - ray.origin;
-    const Vec3 B = b - ray.origin;
-    const Vec3 C = c - ray.origin;
-    const Real Ax = A[kx] - Sx * A[kz];
-    const Real Ay = A[ky] - Sy * A[kz];
-    const Real Bx = B[kx] - Sx * B[kz];
-    const Real By = B[ky] - Sy * B[kz];
-    const Real Cx = C[kx] - Sx * C[kz];
-    const Real Cy = C[ky] - Sy * C[kz];
+    const Real Ax = A[s.kx] - s.Sx * A[s.kz];
+    const Real Ay = A[s.ky] - s.Sy * A[s.kz];
+    const Real Bx = B[s.kx] - s.Sx * B[s.kz];
+    const Real By = B[s.ky] - s.Sy * B[s.kz];
+    const Real Cx = C[s.kx] - s.Sx * C[s.kz];
+    const Real Cy = C[s.ky] - s.Sy * C[s.kz];
 
     // 4. Edge functions: twice the signed areas of the 2D triangles (origin, B, C), (origin, C, A)
     //    and (origin, A, B). U belongs to edge BC (it is the unnormalised barycentric weight of
@@ -108,6 +116,24 @@ bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b,
         V = difference_of_products_exact_sign(Ax, Cy, Ay, Cx);
         W = difference_of_products_exact_sign(Bx, Ay, By, Ax);
     }
+    return {U, V, W};
+}
+
+}  // namespace
+
+bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
+                                   Interval t_range, Hit& hit) {
+    const Vec3& dir = ray.direction;
+    // A zero, NaN or infinite direction hits nothing. Checked first so that nothing below divides
+    // by zero or propagates NaN into a "hit".
+    if (!all_finite(dir)) return false;
+    Shear shear;
+    if (!make_shear(dir, shear)) return false;
+    // Steps 3 to 5 (edge_functions) on the vertices relative to the ray origin.
+    const Vec3 A = a - ray.origin;
+    const Vec3 B = b - ray.origin;
+    const Vec3 C = c - ray.origin;
+    const auto [U, V, W] = edge_functions(shear, A, B, C);
 
     // 6. Inside test for both windings (no backface culling): the origin is inside when the
     //    three edge functions do not have mixed signs. Zeros are compatible with either sign, so
@@ -121,9 +147,9 @@ bool intersect_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b,
 
     // 8. Scaled hit distance: T / det is t. Interpolating the sheared z coordinates with the
     //    unnormalised weights avoids a division before we know the hit is in range.
-    const Real Az = Sz * A[kz];
-    const Real Bz = Sz * B[kz];
-    const Real Cz = Sz * C[kz];
+    const Real Az = shear.Sz * A[shear.kz];
+    const Real Bz = shear.Sz * B[shear.kz];
+    const Real Cz = shear.Sz * C[shear.kz];
     Real T = U * Az + V * Bz + W * Cz;
 
     // 9. Range test in the scaled form: t_min < T / det < t_max, multiplied out by det. Making det

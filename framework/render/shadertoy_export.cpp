@@ -81,13 +81,19 @@ std::string const_array(const char* type, const char* name, const std::vector<T>
     return s;
 }
 
-std::string scene_constants(const Scene& scene, RenderMode mode) {
-    const gpu::GpuScene g = gpu::pack_scene(scene);
+std::string vec4_item(const glm::vec4& x) {
+    return v4(x);
+}
+
+// GLSL zeros, for the dummy element of an empty array.
+const std::string kZero4 = "vec4(0.0)", kZeroInt4 = "ivec4(0)";
+
+// What trace.comp takes as uniforms, as constants.
+std::string uniform_constants(const Scene& scene, RenderMode mode) {
     const Camera& c = scene.camera;
     std::string s = "// The scene (" + (scene.source.empty() ? "built in code" : scene.source) +
                     "), as trace.comp reads it from its storage buffers and uniforms.\n";
-    s += "const Camera camera = Camera(" +
-         literal(c.projection == Projection::Perspective ? 0 : 1) + ", " + v3(c.eye) + ", " +
+    s += "const Camera camera = Camera(" + literal(int(c.projection)) + ", " + v3(c.eye) + ", " +
          v3(c.u) + ", " + v3(c.v) + ", " + v3(c.w) + ", " + literal(float(c.vertical_fov_degrees)) +
          ", " + literal(float(c.view_height)) + ");\n";
     s += "const ivec4 primitive_counts = ivec4(" + std::to_string(scene.spheres.size()) + ", " +
@@ -102,25 +108,34 @@ std::string scene_constants(const Scene& scene, RenderMode mode) {
     s += "const int max_depth = " + std::to_string(gpu_trace_depth(scene, mode)) + ";\n";
     s += "const int scene_features = " + std::to_string(gpu_feature_bits(scene, mode)) + ";\n";
     s += "const int texture_lookup = " + std::to_string(gpu_texture_lookup(scene)) + ";\n";
+    return s;
+}
 
-    const std::string z4 = "vec4(0.0)", zi4 = "ivec4(0)";
+// The geometry arrays: spheres, triangles and their vertices.
+std::string geometry_constants(const gpu::GpuScene& g) {
+    std::string s;
     s += const_array(
         "Sphere", "spheres", g.spheres,
         [](const gpu::GpuSphere& x) {
             return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
         },
-        "Sphere(" + z4 + ", " + zi4 + ")");
+        "Sphere(" + kZero4 + ", " + kZeroInt4 + ")");
     s += const_array(
         "Triangle", "triangles", g.triangles,
         [](const gpu::GpuTriangle& x) {
             return "Triangle(" + vec("uvec4", x.vertices_material, 4) + ")";
         },
         "Triangle(uvec4(0u))");
-    auto vec4_item = [](const glm::vec4& x) { return v4(x); };
-    s += const_array("vec4", "positions", g.positions, vec4_item, z4);
-    s += const_array("vec4", "normals", g.normals, vec4_item, z4);
+    s += const_array("vec4", "positions", g.positions, vec4_item, kZero4);
+    s += const_array("vec4", "normals", g.normals, vec4_item, kZero4);
     s += const_array(
         "vec2", "uvs", g.uvs, [](const glm::vec2& x) { return vec("vec2", x, 2); }, "vec2(0.0)");
+    return s;
+}
+
+// Materials, the BVH, textures and the environment.
+std::string material_constants(const gpu::GpuScene& g) {
+    std::string s;
     s += const_array(
         "Material", "materials", g.materials,
         [](const gpu::GpuMaterial& m) {
@@ -131,8 +146,9 @@ std::string scene_constants(const Scene& scene, RenderMode mode) {
             for (int i = 0; i < 4; ++i) t += v4(m.map_transform[i]) + (i < 3 ? ", " : "))");
             return t;
         },
-        "Material(" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ", " + zi4 +
-            ", vec4[4](" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + "))");
+        "Material(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 +
+            ", " + kZero4 + ", " + kZeroInt4 + ", vec4[4](" + kZero4 + ", " + kZero4 + ", " +
+            kZero4 + ", " + kZero4 + "))");
     s += const_array(
         "BvhNode", "bvh_nodes", g.bvh_nodes,
         [](const BvhNode& n) {
@@ -149,42 +165,54 @@ std::string scene_constants(const Scene& scene, RenderMode mode) {
             return "Texture(" + iv4(t.kind_image_filter_wrap) + ", " + v4(t.a_srgb) + ", " +
                    v4(t.b_scale) + ")";
         },
-        "Texture(" + zi4 + ", " + z4 + ", " + z4 + ")");
+        "Texture(" + kZeroInt4 + ", " + kZero4 + ", " + kZero4 + ")");
     s += const_array(
         "TextureImage", "texture_images", g.texture_images,
         [](const gpu::GpuTextureImage& t) {
             return "TextureImage(" + iv4(t.width_height_first) + ")";
         },
-        "TextureImage(" + zi4 + ")");
-    s += const_array("vec4", "texels", g.texels, vec4_item, z4);
+        "TextureImage(" + kZeroInt4 + ")");
+    s += const_array("vec4", "texels", g.texels, vec4_item, kZero4);
     s += const_array(
         "Environment", "environment", g.environment,
         [](const gpu::GpuEnvironment& e) {
             return "Environment(" + iv4(e.kind_image) + ", " + iv4(e.faces_px_nx_py_ny) + ", " +
                    iv4(e.faces_pz_nz) + ", " + v4(e.intensity_rotate_y) + ")";
         },
-        "Environment(" + zi4 + ", " + zi4 + ", " + zi4 + ", " + z4 + ")");
+        "Environment(" + kZeroInt4 + ", " + kZeroInt4 + ", " + kZeroInt4 + ", " + kZero4 + ")");
 
+    return s;
+}
+
+// Planes, boxes and lights (their int fields ride in float bits).
+std::string plane_box_light_constants(const gpu::GpuScene& g) {
+    std::string s;
     s += const_array(
         "Plane", "planes", g.planes,
         [](const gpu::GpuPlane& p) {
             return "Plane(" + v4(p.point_material, true) + ", " + v4(p.normal) + ")";
         },
-        "Plane(" + z4 + ", " + z4 + ")");
+        "Plane(" + kZero4 + ", " + kZero4 + ")");
     s += const_array(
         "Box", "boxes", g.boxes,
         [](const gpu::GpuBox& b) {
             return "Box(" + v4(b.min_material, true) + ", " + v4(b.max) + ")";
         },
-        "Box(" + z4 + ", " + z4 + ")");
+        "Box(" + kZero4 + ", " + kZero4 + ")");
     s += const_array(
         "Light", "lights", g.lights,
         [](const gpu::GpuLight& l) {
             return "Light(" + v4(l.position_kind, true) + ", " + v4(l.direction) + ", " +
                    v4(l.intensity) + ", " + v4(l.attenuation) + ")";
         },
-        "Light(" + z4 + ", " + z4 + ", " + z4 + ", " + z4 + ")");
+        "Light(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ")");
     return s;
+}
+
+std::string scene_constants(const Scene& scene, RenderMode mode) {
+    const gpu::GpuScene g = gpu::pack_scene(scene);
+    return uniform_constants(scene, mode) + geometry_constants(g) + material_constants(g) +
+           plane_box_light_constants(g);
 }
 
 // Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`

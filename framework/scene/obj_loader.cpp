@@ -61,128 +61,159 @@ std::string first_error(const std::string& errors, int line_shift) {
     return first.empty() ? std::string("failed") : first;
 }
 
+// Scene vertices for each distinct (position, normal, uv) the corners use: `first_of_[p]` starts
+// a chain, through `next_`, of the combinations made so far with position p. Without any normals
+// or uvs, scene vertex i is simply OBJ vertex i + 1, used or not.
+class Welder {
+  public:
+    Welder(const tinyobj::attrib_t& attrib, std::vector<tinyobj::shape_t>& shapes,
+           const std::string& name)
+        : attrib_(attrib),
+          name_(name),
+          position_count_(attrib.vertices.size() / 3),
+          normal_count_(attrib.normals.size() / 3),
+          uv_count_(attrib.texcoords.size() / 2),
+          first_of_(position_count_, kNone) {
+        // A file without any "vt" ("vn") line has no uvs (normals), whatever its faces say.
+        for (tinyobj::shape_t& shape : shapes)
+            for (tinyobj::index_t& index : shape.mesh.indices) {
+                if (uv_count_ == 0) index.texcoord_index = -1;
+                if (normal_count_ == 0) index.normal_index = -1;
+                has_normals_ |= index.normal_index >= 0;
+                has_uvs_ |= index.texcoord_index >= 0;
+            }
+        if (!has_normals_ && !has_uvs_)
+            for (std::size_t p = 0; p < position_count_; ++p)
+                combination_.push_back({int(p), -1, -1});
+    }
+
+    // The triangles of every shape, their corners as scene vertices, with their materials.
+    void add_triangles(const std::vector<tinyobj::shape_t>& shapes, std::size_t triangle_count,
+                       ObjMesh& mesh) {
+        mesh.triangles.reserve(triangle_count);
+        mesh.triangle_material.reserve(triangle_count);
+        for (const tinyobj::shape_t& shape : shapes) {
+            std::size_t next_index = 0;
+            for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+                std::size_t corners = shape.mesh.num_face_vertices[face];
+                if (corners != 3 || next_index + 3 > shape.mesh.indices.size())
+                    fail(name_, 0, "tinyobjloader returned a face that is not a triangle",
+                         "triangulate the mesh before exporting it");
+                std::array<std::uint32_t, 3> triangle{};
+                for (std::size_t k = 0; k < 3; ++k)
+                    triangle[k] = vertex_of(shape.mesh.indices[next_index + k]);
+                next_index += 3;
+                int material =
+                    face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
+                if (material < 0 || static_cast<std::size_t>(material) >= mesh.materials.size())
+                    material = -1;
+                mesh.triangles.push_back(triangle);
+                mesh.triangle_material.push_back(material);
+            }
+        }
+        if (mesh.triangles.empty())
+            fail(name_, 0, "contains no triangles", "add faces or use another file");
+    }
+
+    // Numbers the combinations in the order of their positions in the file (and of first use
+    // among those sharing a position), so scene vertices follow the OBJ's vertex list.
+    void renumber_in_file_order(ObjMesh& mesh) {
+        if (!has_normals_ && !has_uvs_) return;
+        std::vector<std::uint32_t> order(combination_.size());
+        for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return combination_[a][0] < combination_[b][0];
+        });
+        std::vector<std::uint32_t> renumber(order.size());
+        std::vector<std::array<int, 3>> sorted(order.size());
+        for (std::uint32_t i = 0; i < order.size(); ++i)
+            renumber[order[i]] = i, sorted[i] = combination_[order[i]];
+        for (auto& triangle : mesh.triangles)
+            for (std::uint32_t& v : triangle) v = renumber[v];
+        combination_ = std::move(sorted);
+    }
+
+    // The scene vertices (with normals and uvs when the file has them); returns each one's OBJ
+    // position index.
+    std::vector<std::size_t> add_vertices(ObjMesh& mesh) const {
+        std::vector<std::size_t> position_of;
+        position_of.reserve(combination_.size());
+        mesh.vertices.reserve(combination_.size());
+        if (has_normals_) mesh.normals.reserve(combination_.size());
+        if (has_uvs_) mesh.uvs.reserve(combination_.size());
+        const auto& a = attrib_;
+        for (const auto& [p, n, t] : combination_) {
+            std::size_t i = std::size_t(p);
+            position_of.push_back(i);
+            mesh.vertices.push_back(Vec3(Real(a.vertices[3 * i]), Real(a.vertices[3 * i + 1]),
+                                         Real(a.vertices[3 * i + 2])));
+            if (has_normals_) {
+                std::size_t k = std::size_t(n);
+                mesh.normals.push_back(n < 0 ? Vec3(0)
+                                             : Vec3(Real(a.normals[3 * k]),
+                                                    Real(a.normals[3 * k + 1]),
+                                                    Real(a.normals[3 * k + 2])));
+            }
+            if (has_uvs_) {
+                std::size_t k = std::size_t(t);
+                // OBJ's vt counts v upwards from the bottom of the image; ours counts rows from
+                // the top (docs/conventions.md#texture-coordinates), so v flips here, once.
+                mesh.uvs.push_back(
+                    t < 0 ? Vec2(0)
+                          : Vec2(Real(a.texcoords[2 * k]), 1 - Real(a.texcoords[2 * k + 1])));
+            }
+        }
+        return position_of;
+    }
+
+  private:
+    static constexpr std::uint32_t kNone = UINT32_MAX;
+
+    std::uint32_t vertex_of(const tinyobj::index_t& index) {
+        int p = index.vertex_index, n = index.normal_index, t = index.texcoord_index;
+        if (p < 0 || std::size_t(p) >= position_count_)
+            fail(name_, 0,
+                 "face index " + std::to_string(p + 1) + " out of range (the file has " +
+                     std::to_string(position_count_) + " vertices)",
+                 "fix the face or the vertex list");
+        if (n >= 0 && std::size_t(n) >= normal_count_)
+            fail(name_, 0, "normal index " + std::to_string(n + 1) + " out of range",
+                 "fix the face");
+        if (t >= 0 && std::size_t(t) >= uv_count_)
+            fail(name_, 0, "texture coordinate index " + std::to_string(t + 1) + " out of range",
+                 "fix the face");
+        if (!has_normals_ && !has_uvs_) return std::uint32_t(p);  // one to one
+        if (!has_normals_) n = -1;
+        if (!has_uvs_) t = -1;
+        for (std::uint32_t v = first_of_[std::size_t(p)]; v != kNone; v = next_[v])
+            if (combination_[v][1] == n && combination_[v][2] == t) return v;
+        if (combination_.size() >= std::size_t(UINT32_MAX))
+            fail(name_, 0, "has too many distinct vertices", "use a smaller mesh");
+        auto v = std::uint32_t(combination_.size());
+        combination_.push_back({p, n, t});
+        next_.push_back(first_of_[std::size_t(p)]);
+        first_of_[std::size_t(p)] = v;
+        return v;
+    }
+
+    const tinyobj::attrib_t& attrib_;
+    const std::string& name_;
+    const std::size_t position_count_, normal_count_, uv_count_;
+    bool has_normals_ = false, has_uvs_ = false;
+    std::vector<std::uint32_t> first_of_, next_;
+    std::vector<std::array<int, 3>> combination_;  // (position, normal, uv) of each scene vertex
+};
+
 // Fills mesh.vertices, normals, uvs, triangles and triangle_material from what tinyobjloader
 // read, one scene vertex per distinct (position, normal, uv) the corners use, not yet placed.
 // Returns the OBJ position (0-based) of each scene vertex.
 std::vector<std::size_t> weld(const tinyobj::attrib_t& attrib,
                               std::vector<tinyobj::shape_t>& shapes, const std::string& name,
                               std::size_t triangle_count, ObjMesh& mesh) {
-    const std::size_t position_count = attrib.vertices.size() / 3;
-    const std::size_t normal_count = attrib.normals.size() / 3;
-    const std::size_t uv_count = attrib.texcoords.size() / 2;
-    bool has_normals = false, has_uvs = false;
-    // A file without any "vt" ("vn") line has no uvs (normals), whatever its faces say.
-    for (tinyobj::shape_t& shape : shapes)
-        for (tinyobj::index_t& index : shape.mesh.indices) {
-            if (uv_count == 0) index.texcoord_index = -1;
-            if (normal_count == 0) index.normal_index = -1;
-            has_normals |= index.normal_index >= 0;
-            has_uvs |= index.texcoord_index >= 0;
-        }
-
-    // Scene vertices for each distinct (position, normal, uv) the corners use: `first_of[p]`
-    // starts a chain, through `next`, of the combinations made so far with position p. Without
-    // any normals or uvs, scene vertex i is simply OBJ vertex i + 1, used or not.
-    constexpr std::uint32_t kNone = UINT32_MAX;
-    std::vector<std::uint32_t> first_of(position_count, kNone), next;
-    std::vector<std::array<int, 3>> combination;  // (position, normal, uv) of each scene vertex
-    if (!has_normals && !has_uvs)
-        for (std::size_t p = 0; p < position_count; ++p) combination.push_back({int(p), -1, -1});
-    auto vertex_of = [&](const tinyobj::index_t& index) -> std::uint32_t {
-        int p = index.vertex_index, n = index.normal_index, t = index.texcoord_index;
-        if (p < 0 || std::size_t(p) >= position_count)
-            fail(name, 0,
-                 "face index " + std::to_string(p + 1) + " out of range (the file has " +
-                     std::to_string(position_count) + " vertices)",
-                 "fix the face or the vertex list");
-        if (n >= 0 && std::size_t(n) >= normal_count)
-            fail(name, 0, "normal index " + std::to_string(n + 1) + " out of range",
-                 "fix the face");
-        if (t >= 0 && std::size_t(t) >= uv_count)
-            fail(name, 0, "texture coordinate index " + std::to_string(t + 1) + " out of range",
-                 "fix the face");
-        if (!has_normals && !has_uvs) return std::uint32_t(p);  // one to one, see below
-        if (!has_normals) n = -1;
-        if (!has_uvs) t = -1;
-        for (std::uint32_t v = first_of[std::size_t(p)]; v != kNone; v = next[v])
-            if (combination[v][1] == n && combination[v][2] == t) return v;
-        if (combination.size() >= std::size_t(UINT32_MAX))
-            fail(name, 0, "has too many distinct vertices", "use a smaller mesh");
-        auto v = std::uint32_t(combination.size());
-        combination.push_back({p, n, t});
-        next.push_back(first_of[std::size_t(p)]);
-        first_of[std::size_t(p)] = v;
-        return v;
-    };
-
-    mesh.triangles.reserve(triangle_count);
-    mesh.triangle_material.reserve(triangle_count);
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t next_index = 0;
-        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-            std::size_t corners = shape.mesh.num_face_vertices[face];
-            if (corners != 3 || next_index + 3 > shape.mesh.indices.size())
-                fail(name, 0, "tinyobjloader returned a face that is not a triangle",
-                     "triangulate the mesh before exporting it");
-            std::array<std::uint32_t, 3> triangle{};
-            for (std::size_t k = 0; k < 3; ++k)
-                triangle[k] = vertex_of(shape.mesh.indices[next_index + k]);
-            next_index += 3;
-            int material =
-                face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
-            if (material < 0 || static_cast<std::size_t>(material) >= mesh.materials.size())
-                material = -1;
-            mesh.triangles.push_back(triangle);
-            mesh.triangle_material.push_back(material);
-        }
-    }
-    if (mesh.triangles.empty())
-        fail(name, 0, "contains no triangles", "add faces or use another file");
-
-    // Number the combinations in the order of their positions in the file (and of first use
-    // among those sharing a position), so scene vertices follow the OBJ's vertex list.
-    if (has_normals || has_uvs) {
-        std::vector<std::uint32_t> order(combination.size());
-        for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return combination[a][0] < combination[b][0];
-        });
-        std::vector<std::uint32_t> renumber(order.size());
-        std::vector<std::array<int, 3>> sorted(order.size());
-        for (std::uint32_t i = 0; i < order.size(); ++i)
-            renumber[order[i]] = i, sorted[i] = combination[order[i]];
-        for (auto& triangle : mesh.triangles)
-            for (std::uint32_t& v : triangle) v = renumber[v];
-        combination = std::move(sorted);
-    }
-
-    std::vector<std::size_t> position_of;
-    position_of.reserve(combination.size());
-    mesh.vertices.reserve(combination.size());
-    if (has_normals) mesh.normals.reserve(combination.size());
-    if (has_uvs) mesh.uvs.reserve(combination.size());
-    for (const auto& [p, n, t] : combination) {
-        std::size_t i = std::size_t(p);
-        position_of.push_back(i);
-        mesh.vertices.push_back(Vec3(Real(attrib.vertices[3 * i]), Real(attrib.vertices[3 * i + 1]),
-                                     Real(attrib.vertices[3 * i + 2])));
-        if (has_normals) {
-            std::size_t k = std::size_t(n);
-            mesh.normals.push_back(n < 0 ? Vec3(0)
-                                         : Vec3(Real(attrib.normals[3 * k]),
-                                                Real(attrib.normals[3 * k + 1]),
-                                                Real(attrib.normals[3 * k + 2])));
-        }
-        if (has_uvs) {
-            std::size_t k = std::size_t(t);
-            // OBJ's vt counts v upwards from the bottom of the image; ours counts rows from the
-            // top (docs/conventions.md#texture-coordinates), so v flips here, once.
-            mesh.uvs.push_back(
-                t < 0 ? Vec2(0)
-                      : Vec2(Real(attrib.texcoords[2 * k]), 1 - Real(attrib.texcoords[2 * k + 1])));
-        }
-    }
-    return position_of;
+    Welder welder(attrib, shapes, name);
+    welder.add_triangles(shapes, triangle_count, mesh);
+    welder.renumber_in_file_order(mesh);
+    return welder.add_vertices(mesh);
 }
 
 }  // namespace

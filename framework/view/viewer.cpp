@@ -293,30 +293,36 @@ bool Viewer::run_command(const ScriptCommand& c) {
         save_png(display_, c.args[0]);
     }
     if (n == "quit") done_ = true;
-    if (n == "mouse-click" || n == "mouse-drag" || n == "mouse-wheel") {
-        // Frames in playing order: hover, press, (move,) release, then one still frame.
-        std::vector<SyntheticMouse> frames;
-        const float x0 = float(number(0)) + 0.5f, y0 = float(number(1)) + 0.5f;
-        frames.push_back({x0, y0});
-        if (n == "mouse-wheel") {
-            frames.push_back({x0, y0, false, false, float(number(2))});
-        } else if (n == "mouse-click") {
-            frames.push_back({x0, y0, true, false});
-        } else {
-            const bool left = c.args[4] == "left";
-            const float x1 = float(number(2)) + 0.5f, y1 = float(number(3)) + 0.5f;
-            for (int i = 0; i <= 10; ++i)
-                frames.push_back(
-                    {x0 + (x1 - x0) * float(i) / 10, y0 + (y1 - y0) * float(i) / 10, left, !left});
-            frames.push_back({x1, y1});
-        }
-        frames.push_back(frames.back());
-        frames.back().left = frames.back().right = false;
-        frames.back().wheel = 0;
-        frames.push_back(frames.back());
-        mouse_.assign(frames.rbegin(), frames.rend());
-    }
+    if (n == "mouse-click" || n == "mouse-drag" || n == "mouse-wheel") queue_mouse(c);
     return true;
+}
+
+// A scripted mouse gesture as frames for the window to play, in playing order: hover, press,
+// (move,) release, then one still frame.
+void Viewer::queue_mouse(const ScriptCommand& c) {
+    const auto number = [&](std::size_t i) {
+        return float(std::strtod(c.args[i].c_str(), nullptr));
+    };
+    std::vector<SyntheticMouse> frames;
+    const float x0 = number(0) + 0.5f, y0 = number(1) + 0.5f;
+    frames.push_back({x0, y0});
+    if (c.name == "mouse-wheel") {
+        frames.push_back({x0, y0, false, false, number(2)});
+    } else if (c.name == "mouse-click") {
+        frames.push_back({x0, y0, true, false});
+    } else {
+        const bool left = c.args[4] == "left";
+        const float x1 = number(2) + 0.5f, y1 = number(3) + 0.5f;
+        for (int i = 0; i <= 10; ++i)
+            frames.push_back(
+                {x0 + (x1 - x0) * float(i) / 10, y0 + (y1 - y0) * float(i) / 10, left, !left});
+        frames.push_back({x1, y1});
+    }
+    frames.push_back(frames.back());
+    frames.back().left = frames.back().right = false;
+    frames.back().wheel = 0;
+    frames.push_back(frames.back());
+    mouse_.assign(frames.rbegin(), frames.rend());
 }
 
 }  // namespace rt::view

@@ -82,6 +82,7 @@ class Viewer {
   private:
     void run_script();
     bool run_command(const ScriptCommand& c);  // false: it waits (run again next frame)
+    void queue_mouse(const ScriptCommand& c);  // mouse-click, mouse-drag, mouse-wheel
     void rebuild_display();
     void save_png(const Image8& image, const std::string& name);
     void fail(const ScriptCommand& c, const std::string& message);

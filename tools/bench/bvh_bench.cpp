@@ -162,208 +162,154 @@ struct Timing {
 // ---------------------------------------------------------------------------------------------
 // The benchmark
 
-int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
-    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    const int all_threads = config.threads > 0 ? config.threads : cores;
-    std::vector<int> thread_counts{1};
-    if (all_threads > 1) thread_counts.push_back(all_threads);
-    const int repeat = std::max(1, config.repeat);
+namespace {
 
-    BenchMesh mesh = load_bench_mesh(config);
-    Scene& scene = mesh.scene;
-    const std::size_t triangles = scene.triangles.size();
-    out << "rt-bench bvh: stage 02 brute force, stage 06 BVH and Embree 3 on the same rays\n";
-    out << "machine: " << cores << " cores (" << cpu_model("unknown processor")
-        << "), load average " << load_average() << " at the start\n";
-    out << "mesh: " << mesh.description << ", " << grouped(triangles) << " triangles, "
-        << grouped(scene.vertices.size()) << " vertices\n";
+// One run of the benchmark: its mesh, back-ends and rays, then the correctness check, the timed
+// runs and the report, in that order (run_bvh_bench).
+class BvhBench {
+  public:
+    BvhBench(const BvhBenchConfig& config, std::ostream& out)
+        : config_(config),
+          out_(out),
+          cores_(int(std::max(1u, std::thread::hardware_concurrency()))),
+          all_threads_(config.threads > 0 ? config.threads : cores_),
+          repeat_(std::max(1, config.repeat)),
+          mesh_(load_bench_mesh(config)),
+          triangles_(mesh_.scene.triangles.size()) {
+        thread_counts_.push_back(1);
+        if (all_threads_ > 1) thread_counts_.push_back(all_threads_);
+    }
 
     // The back-ends. The BVH is built once here (untimed) so that rays can be generated.
-    std::unique_ptr<Backend> bvh = make_bvh_backend(scene);
-    bvh->build();
-    {
+    void set_up() {
+        Scene& scene = mesh_.scene;
+        out_ << "rt-bench bvh: stage 02 brute force, stage 06 BVH and Embree 3 on the same rays\n";
+        out_ << "machine: " << cores_ << " cores (" << cpu_model("unknown processor")
+             << "), load average " << load_average() << " at the start\n";
+        out_ << "mesh: " << mesh_.description << ", " << grouped(triangles_) << " triangles, "
+             << grouped(scene.vertices.size()) << " vertices\n";
+        bvh_ = make_bvh_backend(scene);
+        bvh_->build();
         const std::string problem = validate_bvh(scene.bvh, bvh_primitives(scene));
         if (!problem.empty())
             throw std::runtime_error("build_bvh gave an invalid tree: " + problem +
                                      " (stages/06-bvh/README.md)");
+        if (config_.inject_error_period > 0)
+            bvh_ = make_faulty_backend(std::move(bvh_), config_.inject_error_period);
+        brute_ = make_brute_force_backend(scene);
+        brute_timed_ = triangles_ <= config_.brute_force_max_triangles;
+        brute_rays_ = brute_timed_ ? config_.brute_force_rays
+                                   : std::min<std::size_t>(config_.brute_force_rays, 1024);
+        have_embree_ = embree_built_in();
+        if (have_embree_)
+            for (int t : thread_counts_) embree_.push_back(make_embree_backend(scene, t));
+        if (have_embree_) embree_.back()->build();
+        rays_ = make_bench_rays(scene, config_, all_threads_);
+        out_ << "rays: " << grouped(rays_.batch[0].size()) << " primary (" << config_.width << "x"
+             << config_.height << ", " << grouped(rays_.primary_hits) << " hit the mesh), "
+             << grouped(rays_.batch[1].size()) << " shadow (any-hit, to a point light), "
+             << grouped(rays_.batch[2].size()) << " diffuse (cosine-weighted, seed " << config_.seed
+             << ")\n";
     }
-    if (config.inject_error_period > 0)
-        bvh = make_faulty_backend(std::move(bvh), config.inject_error_period);
-    std::unique_ptr<Backend> brute = make_brute_force_backend(scene);
-    const bool brute_timed = triangles <= config.brute_force_max_triangles;
-    const std::size_t brute_rays = brute_timed
-                                       ? config.brute_force_rays
-                                       : std::min<std::size_t>(config.brute_force_rays, 1024);
-    const bool have_embree = embree_built_in();
-    std::vector<std::unique_ptr<Backend>> embree;  // one device per thread count
-    if (have_embree)
-        for (int t : thread_counts) embree.push_back(make_embree_backend(scene, t));
-    Backend* embree_all = have_embree ? embree.back().get() : nullptr;
-    if (embree_all) embree_all->build();
 
-    const BenchRays rays = make_bench_rays(scene, config, all_threads);
-    out << "rays: " << grouped(rays.batch[0].size()) << " primary (" << config.width << "x"
-        << config.height << ", " << grouped(rays.primary_hits) << " hit the mesh), "
-        << grouped(rays.batch[1].size()) << " shadow (any-hit, to a point light), "
-        << grouped(rays.batch[2].size()) << " diffuse (cosine-weighted, seed " << config.seed
-        << ")\n";
-
-    // Correctness, before anything is timed.
-    out << "\ncorrectness check (untimed): rays on which two back-ends disagree; allowed: "
-        << format("%g%%", 100 * config.max_disagreement) << " of a kind's rays, t within "
-        << format("%g", config.t_tolerance) << " relative\n";
-    out << format("  %-24s %-8s %10s %9s %10s %7s %8s  %s\n", "pair", "rays", "compared",
-                  "hit/miss", "primitive", "t", "total", "verdict");
-    bool failed = false;
-    std::string first_failure;
-    auto report = [&](const std::string& pair, RayKind kind, const Disagreements& d) {
-        const std::size_t allowed = allowed_disagreements(d.rays, config.max_disagreement);
-        const bool ok = d.total() <= allowed;
-        out << format("  %-24s %-8s %10zu %9zu %10zu %7zu %8zu  %s\n", pair.c_str(),
-                      to_string(kind), d.rays, d.hit_miss, d.primitive, d.t, d.total(),
-                      ok ? "ok" : "TOO MANY");
-        if (!ok && !failed) {
-            failed = true;
-            first_failure = pair + " disagree on " + std::to_string(d.total()) + " of " +
-                            std::to_string(d.rays) + " " + to_string(kind) + " rays (" +
-                            format("%.4f%%", 100 * d.fraction()) + ", allowed " +
-                            std::to_string(allowed) + ")";
+    // Correctness, before anything is timed: false (and the reason printed) when two back-ends
+    // disagree on more rays than allowed.
+    bool check() {
+        out_ << "\ncorrectness check (untimed): rays on which two back-ends disagree; allowed: "
+             << format("%g%%", 100 * config_.max_disagreement) << " of a kind's rays, t within "
+             << format("%g", config_.t_tolerance) << " relative\n";
+        out_ << format("  %-24s %-8s %10s %9s %10s %7s %8s  %s\n", "pair", "rays", "compared",
+                       "hit/miss", "primitive", "t", "total", "verdict");
+        Backend* embree_all = have_embree_ ? embree_.back().get() : nullptr;
+        for (const RayBatch& batch : rays_.batch) {
+            const std::vector<RayResult> bvh_results = trace_all(*bvh_, batch, all_threads_);
+            std::vector<RayResult> embree_results;
+            if (embree_all) {
+                embree_results = trace_all(*embree_all, batch, all_threads_);
+                report("bvh vs embree", batch.kind, compare(bvh_results, embree_results, batch));
+            }
+            std::vector<std::size_t> indices;
+            const RayBatch sub = subset(batch, brute_rays_, indices);
+            const std::vector<RayResult> brute_results = trace_all(*brute_, sub, all_threads_);
+            report("brute-force vs bvh", batch.kind,
+                   compare(brute_results, pick(bvh_results, indices), batch));
+            if (embree_all)
+                report("brute-force vs embree", batch.kind,
+                       compare(brute_results, pick(embree_results, indices), batch));
         }
-    };
-    for (const RayBatch& batch : rays.batch) {
-        const std::vector<RayResult> bvh_results = trace_all(*bvh, batch, all_threads);
-        std::vector<RayResult> embree_results;
-        if (embree_all) {
-            embree_results = trace_all(*embree_all, batch, all_threads);
-            report("bvh vs embree", batch.kind,
-                   compare_results(bvh_results, embree_results, batch.any_hit, config.t_tolerance));
+        if (!embree_all)
+            out_
+                << "  (Embree was not built in: nothing to compare the BVH with but brute force)\n";
+        if (first_failure_.empty()) {
+            out_ << bvh_traversal_summary(mesh_.scene, rays_, all_threads_);
+            return true;
         }
-        std::vector<std::size_t> indices;
-        const RayBatch sub = subset(batch, brute_rays, indices);
-        const std::vector<RayResult> brute_results = trace_all(*brute, sub, all_threads);
-        report("brute-force vs bvh", batch.kind,
-               compare_results(brute_results, pick(bvh_results, indices), batch.any_hit,
-                               config.t_tolerance));
-        if (embree_all)
-            report("brute-force vs embree", batch.kind,
-                   compare_results(brute_results, pick(embree_results, indices), batch.any_hit,
-                                   config.t_tolerance));
-    }
-    if (!embree_all)
-        out << "  (Embree was not built in: nothing to compare the BVH with but brute force)\n";
-    if (!failed) out << bvh_traversal_summary(scene, rays, all_threads);
-    if (failed) {
-        out << "\nrt-bench: error: " << first_failure
-            << "; a back-end computes wrong hits, so nothing was timed\n";
-        out.flush();
-        std::fprintf(stderr, "rt-bench: error: %s; nothing was timed\n", first_failure.c_str());
-        return 2;
+        out_ << "\nrt-bench: error: " << first_failure_
+             << "; a back-end computes wrong hits, so nothing was timed\n";
+        out_.flush();
+        std::fprintf(stderr, "rt-bench: error: %s; nothing was timed\n", first_failure_.c_str());
+        return false;
     }
 
     // Timing. Runs of the different back-ends alternate, so that a change in the machine's load
     // disturbs all of them alike; the fastest of `repeat` runs counts.
-    std::vector<Timing> timings;
-    for (std::size_t ti = 0; ti < thread_counts.size(); ++ti) {
-        const int threads = thread_counts[ti];
-        Timing bvh_build{"bvh",     threads,   "build",
-                         triangles, kInfinity, "builder: root's two subtrees on 2 threads"};
-        Timing embree_build{"embree", threads, "build", triangles, kInfinity, ""};
-        for (int r = 0; r < repeat; ++r) {
-            bvh_build.seconds = std::min(bvh_build.seconds, bvh->build() / 1000);
-            if (have_embree)
-                embree_build.seconds = std::min(embree_build.seconds, embree[ti]->build() / 1000);
+    void time_all() {
+        for (std::size_t ti = 0; ti < thread_counts_.size(); ++ti) {
+            time_builds(ti);
+            for (const RayBatch& batch : rays_.batch) time_traces(ti, batch);
         }
-        timings.push_back(bvh_build);
-        if (have_embree) timings.push_back(embree_build);
+    }
 
-        for (const RayBatch& batch : rays.batch) {
-            std::vector<std::size_t> indices;
-            const RayBatch sub = subset(batch, brute_rays, indices);
-            struct Entry {
-                Backend* backend;
-                const RayBatch* rays;
-                Timing timing;
-            };
-            std::vector<Entry> entries;
-            if (brute_timed)
-                entries.push_back(
-                    {brute.get(),
-                     &sub,
-                     {"brute-force", threads, to_string(batch.kind), sub.size(), kInfinity,
-                      sub.size() < batch.size() ? "on a subset of " + grouped(sub.size()) + " rays"
-                                                : ""}});
-            entries.push_back(
-                {bvh.get(),
-                 &batch,
-                 {"bvh", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
-            if (have_embree)
-                entries.push_back(
-                    {embree[ti].get(),
-                     &batch,
-                     {"embree", threads, to_string(batch.kind), batch.size(), kInfinity, ""}});
-            std::vector<RayResult> results(batch.size());
-            for (int r = 0; r < repeat; ++r)
-                for (Entry& e : entries) {
-                    const Run run = time_trace(*e.backend, *e.rays, threads, results);
-                    if (run.seconds < e.timing.seconds) {
-                        e.timing.seconds = run.seconds;
-                        e.timing.cpu_share = run.cpu_share;
-                    }
+    // Throughput and build times, a row per back-end and thread count.
+    void print_table() {
+        out_ << "\nthroughput in Mrays/s (single-ray queries, best of " << repeat_
+             << " runs); build: from the scene's arrays to a traversable structure, in ms\n";
+        out_ << format("  %-12s %7s %10s %10s %10s %10s %9s\n", "back-end", "threads", "build ms",
+                       "primary", "shadow", "diffuse", "cpu share");
+        for (int threads : thread_counts_) {
+            for (const char* backend : {"brute-force", "bvh", "embree"}) {
+                if (std::string(backend) == "embree" && !have_embree_) continue;
+                if (std::string(backend) == "brute-force" && !brute_timed_) continue;
+                std::string line = format("  %-12s %7d", backend, threads);
+                const Timing* b = find(backend, threads, "build");
+                line += b ? format(" %10.1f", b->seconds * 1000) : format(" %10s", "-");
+                double share = kInfinity;
+                for (RayKind kind : kRayKinds) {
+                    const Timing* t = find(backend, threads, to_string(kind));
+                    line += t ? format(" %10.3f", t->mrays()) : format(" %10s", "-");
+                    if (t) share = std::min(share, t->cpu_share);
                 }
-            for (Entry& e : entries) timings.push_back(e.timing);
-        }
-    }
-
-    auto find = [&](const std::string& backend, int threads,
-                    const std::string& measure) -> const Timing* {
-        for (const Timing& t : timings)
-            if (t.backend == backend && t.threads == threads && t.measure == measure) return &t;
-        return nullptr;
-    };
-
-    out << "\nthroughput in Mrays/s (single-ray queries, best of " << repeat
-        << " runs); build: from the scene's arrays to a traversable structure, in ms\n";
-    out << format("  %-12s %7s %10s %10s %10s %10s %9s\n", "back-end", "threads", "build ms",
-                  "primary", "shadow", "diffuse", "cpu share");
-    for (int threads : thread_counts) {
-        for (const char* backend : {"brute-force", "bvh", "embree"}) {
-            if (std::string(backend) == "embree" && !have_embree) continue;
-            if (std::string(backend) == "brute-force" && !brute_timed) continue;
-            std::string line = format("  %-12s %7d", backend, threads);
-            const Timing* b = find(backend, threads, "build");
-            line += b ? format(" %10.1f", b->seconds * 1000) : format(" %10s", "-");
-            double share = kInfinity;
-            for (RayKind kind : kRayKinds) {
-                const Timing* t = find(backend, threads, to_string(kind));
-                line += t ? format(" %10.3f", t->mrays()) : format(" %10s", "-");
-                if (t) share = std::min(share, t->cpu_share);
+                line += share < kInfinity ? format(" %8.0f%%", 100 * share) : format(" %9s", "-");
+                out_ << line << "\n";
             }
-            line += share < kInfinity ? format(" %8.0f%%", 100 * share) : format(" %9s", "-");
-            out << line << "\n";
         }
+        if (!brute_timed_)
+            out_ << "  brute-force: not timed, " << grouped(triangles_) << " triangles > "
+                 << "--brute-force-max-triangles " << config_.brute_force_max_triangles
+                 << " (checked for correctness on " << grouped(brute_rays_)
+                 << " rays of each kind)\n";
+        else if (const Timing* t = find("brute-force", 1, "primary"); t && !t->note.empty())
+            out_ << "  brute-force: timed on at most " << grouped(brute_rays_)
+                 << " rays of each kind (evenly spread; --brute-force-rays)\n";
+        out_ << "  bvh build: bvh_primitives + build_bvh (the reference builder splits the root, "
+                "then "
+                "builds its two "
+                "subtrees on two threads whatever --threads says)";
+        if (have_embree_)
+            out_ << "; embree build: buffers + rtcCommitScene, default quality, on `threads` build "
+                    "threads";
+        out_ << "\n  cpu share: CPU time the process got during the fastest run / (wall time x "
+                "threads),"
+                " lowest of the row; well below 100% means other work on the machine took cores\n";
+        if (!have_embree_)
+            out_ << "  embree: not built in (install libembree-dev, scripts/install-deps.sh, and "
+                    "configure again): no ratios\n";
     }
-    if (!brute_timed)
-        out << "  brute-force: not timed, " << grouped(triangles) << " triangles > "
-            << "--brute-force-max-triangles " << config.brute_force_max_triangles
-            << " (checked for correctness on " << grouped(brute_rays) << " rays of each kind)\n";
-    else if (const Timing* t = find("brute-force", 1, "primary"); t && !t->note.empty())
-        out << "  brute-force: timed on at most " << grouped(brute_rays)
-            << " rays of each kind (evenly spread; --brute-force-rays)\n";
-    out << "  bvh build: bvh_primitives + build_bvh (the reference builder splits the root, then "
-           "builds its two "
-           "subtrees on two threads whatever --threads says)";
-    if (have_embree)
-        out << "; embree build: buffers + rtcCommitScene, default quality, on `threads` build "
-               "threads";
-    out << "\n  cpu share: CPU time the process got during the fastest run / (wall time x threads),"
-           " lowest of the row; well below 100% means other work on the machine took cores\n";
-    if (!have_embree)
-        out << "  embree: not built in (install libembree-dev, scripts/install-deps.sh, and "
-               "configure again): no ratios\n";
 
-    if (have_embree) {
-        out << "\n";
-        for (int threads : thread_counts) {
+    // Against Embree, and the goals set for it; then the load, to judge the figures by.
+    void print_ratios() {
+        if (have_embree_) out_ << "\n";
+        for (int threads : have_embree_ ? thread_counts_ : std::vector<int>{}) {
             auto ratio = [&](const char* measure) {
                 const Timing* a = find("bvh", threads, measure);
                 const Timing* e = find("embree", threads, measure);
@@ -371,44 +317,150 @@ int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
             };
             const double build =
                 find("bvh", threads, "build")->seconds / find("embree", threads, "build")->seconds;
-            out << format(
+            out_ << format(
                 "ratios bvh/embree, %d thread%s: primary %.2fx, shadow %.2fx, diffuse "
                 "%.2fx throughput; build time %.2fx Embree's\n",
                 threads, threads == 1 ? "" : "s", ratio("primary"), ratio("shadow"),
                 ratio("diffuse"), build);
-            if (threads == all_threads) {
+            if (threads == all_threads_) {
                 auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
-                out << format(
+                out_ << format(
                     "goals of issue 5 (set for the Stanford bunny, 1024x768, 2 threads), "
                     "at %d thread%s: primary >= 0.5x %s, diffuse >= 0.4x %s, build <= 2x %s\n",
                     threads, threads == 1 ? "" : "s", verdict(ratio("primary") >= 0.5),
                     verdict(ratio("diffuse") >= 0.4), verdict(build <= 2.0));
             }
         }
+        out_ << "load average " << load_average() << " at the end\n";
     }
-    out << "load average " << load_average() << " at the end\n";
 
-    if (!config.csv.empty()) {
+    // Every timing as CSV (--csv FILE, or - to print it).
+    void write_csv() {
+        if (config_.csv.empty()) return;
         std::string csv =
             "mesh,triangles,backend,threads,measure,rays,best_seconds,mrays_per_s,cpu_share,repeat,"
             "note\n";
-        for (const Timing& t : timings) {
+        for (const Timing& t : timings_) {
             const bool build = t.measure == "build";
-            csv += format("\"%s\",%zu,%s,%d,%s,%zu,%.6f,%s,%s,%d,\"%s\"\n",
-                          mesh.description.c_str(), triangles, t.backend.c_str(), t.threads,
-                          t.measure.c_str(), build ? std::size_t(0) : t.rays, t.seconds,
-                          build ? "" : format("%.4f", t.mrays()).c_str(),
-                          build ? "" : format("%.3f", t.cpu_share).c_str(), repeat, t.note.c_str());
+            csv +=
+                format("\"%s\",%zu,%s,%d,%s,%zu,%.6f,%s,%s,%d,\"%s\"\n", mesh_.description.c_str(),
+                       triangles_, t.backend.c_str(), t.threads, t.measure.c_str(),
+                       build ? std::size_t(0) : t.rays, t.seconds,
+                       build ? "" : format("%.4f", t.mrays()).c_str(),
+                       build ? "" : format("%.3f", t.cpu_share).c_str(), repeat_, t.note.c_str());
         }
-        if (config.csv == "-") {
-            out << "\n" << csv;
+        if (config_.csv == "-") {
+            out_ << "\n" << csv;
         } else {
-            std::ofstream file(config.csv);
-            if (!file) throw std::runtime_error("cannot write " + config.csv);
+            std::ofstream file(config_.csv);
+            if (!file) throw std::runtime_error("cannot write " + config_.csv);
             file << csv;
-            out << "CSV written to " << config.csv << "\n";
+            out_ << "CSV written to " << config_.csv << "\n";
         }
     }
+
+  private:
+    // One timed cell of a trace: a back-end on its rays.
+    struct Entry {
+        Backend* backend;
+        const RayBatch* rays;
+        Timing timing;
+    };
+
+    Disagreements compare(const std::vector<RayResult>& a, const std::vector<RayResult>& b,
+                          const RayBatch& batch) const {
+        return compare_results(a, b, batch.any_hit, config_.t_tolerance);
+    }
+
+    void report(const std::string& pair, RayKind kind, const Disagreements& d) {
+        const std::size_t allowed = allowed_disagreements(d.rays, config_.max_disagreement);
+        const bool ok = d.total() <= allowed;
+        out_ << format("  %-24s %-8s %10zu %9zu %10zu %7zu %8zu  %s\n", pair.c_str(),
+                       to_string(kind), d.rays, d.hit_miss, d.primitive, d.t, d.total(),
+                       ok ? "ok" : "TOO MANY");
+        if (!ok && first_failure_.empty())
+            first_failure_ = pair + " disagree on " + std::to_string(d.total()) + " of " +
+                             std::to_string(d.rays) + " " + to_string(kind) + " rays (" +
+                             format("%.4f%%", 100 * d.fraction()) + ", allowed " +
+                             std::to_string(allowed) + ")";
+    }
+
+    void time_builds(std::size_t ti) {
+        const int threads = thread_counts_[ti];
+        Timing bvh_build{"bvh",      threads,   "build",
+                         triangles_, kInfinity, "builder: root's two subtrees on 2 threads"};
+        Timing embree_build{"embree", threads, "build", triangles_, kInfinity, ""};
+        for (int r = 0; r < repeat_; ++r) {
+            bvh_build.seconds = std::min(bvh_build.seconds, bvh_->build() / 1000);
+            if (have_embree_)
+                embree_build.seconds = std::min(embree_build.seconds, embree_[ti]->build() / 1000);
+        }
+        timings_.push_back(bvh_build);
+        if (have_embree_) timings_.push_back(embree_build);
+    }
+
+    void time_traces(std::size_t ti, const RayBatch& batch) {
+        const int threads = thread_counts_[ti];
+        std::vector<std::size_t> indices;
+        const RayBatch sub = subset(batch, brute_rays_, indices);
+        const std::string kind = to_string(batch.kind);
+        std::vector<Entry> entries;
+        if (brute_timed_)
+            entries.push_back(
+                {brute_.get(),
+                 &sub,
+                 {"brute-force", threads, kind, sub.size(), kInfinity,
+                  sub.size() < batch.size() ? "on a subset of " + grouped(sub.size()) + " rays"
+                                            : ""}});
+        entries.push_back(
+            {bvh_.get(), &batch, {"bvh", threads, kind, batch.size(), kInfinity, ""}});
+        if (have_embree_)
+            entries.push_back({embree_[ti].get(),
+                               &batch,
+                               {"embree", threads, kind, batch.size(), kInfinity, ""}});
+        std::vector<RayResult> results(batch.size());
+        for (int r = 0; r < repeat_; ++r)
+            for (Entry& e : entries) {
+                const Run run = time_trace(*e.backend, *e.rays, threads, results);
+                if (run.seconds < e.timing.seconds) {
+                    e.timing.seconds = run.seconds;
+                    e.timing.cpu_share = run.cpu_share;
+                }
+            }
+        for (Entry& e : entries) timings_.push_back(e.timing);
+    }
+
+    const Timing* find(const std::string& backend, int threads, const std::string& measure) const {
+        for (const Timing& t : timings_)
+            if (t.backend == backend && t.threads == threads && t.measure == measure) return &t;
+        return nullptr;
+    }
+
+    const BvhBenchConfig& config_;
+    std::ostream& out_;
+    const int cores_, all_threads_, repeat_;
+    BenchMesh mesh_;
+    const std::size_t triangles_;
+    std::vector<int> thread_counts_;
+    std::unique_ptr<Backend> bvh_, brute_;
+    std::vector<std::unique_ptr<Backend>> embree_;  // one device per thread count
+    bool brute_timed_ = false, have_embree_ = false;
+    std::size_t brute_rays_ = 0;
+    BenchRays rays_;
+    std::string first_failure_;
+    std::vector<Timing> timings_;
+};
+
+}  // namespace
+
+int run_bvh_bench(const BvhBenchConfig& config, std::ostream& out) {
+    BvhBench bench(config, out);
+    bench.set_up();
+    if (!bench.check()) return 2;
+    bench.time_all();
+    bench.print_table();
+    bench.print_ratios();
+    bench.write_csv();
     return 0;
 }
 

@@ -66,17 +66,9 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
     return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "rt-bench: measurements for the ray-tracing course. Without a subcommand: the "
-        "BVH benchmark (as `rt-bench bvh`)"};
-    app.require_subcommand(0, 1);
-
-    // The BVH benchmark's options belong to the top level, so that they work both without a
-    // subcommand and after `bvh` (which lets unknown options fall through to here).
-    rt::bench::BvhBenchConfig bench;
+// The BVH benchmark's options belong to the top level, so that they work both without a
+// subcommand and after `bvh` (which lets unknown options fall through to here).
+void add_bvh_options(CLI::App& app, rt::bench::BvhBenchConfig& bench) {
     app.add_option("--mesh", bench.mesh_file, "an OBJ mesh (default: a procedural mesh)")
         ->check(CLI::ExistingFile);
     app.add_option("--procedural", bench.procedural,
@@ -117,31 +109,36 @@ int main(int argc, char** argv) {
     // Hidden (empty group): makes the BVH answer wrongly on every N-th hit, for the test that
     // the correctness check fails the run.
     app.add_option("--inject-error", bench.inject_error_period)->group("");
-    CLI::App* bvh = app.add_subcommand("bvh",
-                                       "the BVH benchmark (the default): brute force, "
-                                       "stage 06 BVH and Embree on the same rays");
-    bvh->fallthrough();
+}
 
-    rt::bench::AccuracyConfig cfg;
+struct AccuracyArgs {
+    rt::bench::AccuracyConfig config;
     std::string markdown, svg_dir, csv;
+};
+
+CLI::App* add_accuracy_command(CLI::App& app, AccuracyArgs& a) {
     CLI::App* acc = app.add_subcommand(
         "accuracy",
         "speed against error of the intersection methods, measured against exact arithmetic");
-    acc->add_option("--seed", cfg.seed, "random seed of every scenario")->capture_default_str();
-    acc->add_option("--cases", cfg.cases, "rays per scenario")
+    acc->add_option("--seed", a.config.seed, "random seed of every scenario")
+        ->capture_default_str();
+    acc->add_option("--cases", a.config.cases, "rays per scenario")
         ->capture_default_str()
         ->check(CLI::Range(10, 10000000));
-    acc->add_option("--markdown", markdown, "write the report here (default: print it)");
-    acc->add_option("--svg-dir", svg_dir, "write the plots (SVG) into this folder");
-    acc->add_option("--csv", csv, "write every table row as CSV");
-    acc->add_flag("!--no-render", cfg.rendering, "skip the rendering section");
-    acc->add_flag("!--no-textures", cfg.textures, "skip the texture-filter section");
-    acc->add_flag("!--no-sampling", cfg.sampling,
+    acc->add_option("--markdown", a.markdown, "write the report here (default: print it)");
+    acc->add_option("--svg-dir", a.svg_dir, "write the plots (SVG) into this folder");
+    acc->add_option("--csv", a.csv, "write every table row as CSV");
+    acc->add_flag("!--no-render", a.config.rendering, "skip the rendering section");
+    acc->add_flag("!--no-textures", a.config.textures, "skip the texture-filter section");
+    acc->add_flag("!--no-sampling", a.config.sampling,
                   "skip stage 10's error against samples per pixel");
-    acc->add_flag("!--no-timing", cfg.timing, "classification only");
+    acc->add_flag("!--no-timing", a.config.timing, "classification only");
+
+    return acc;
+}
 
 #ifdef RT_BENCH_HAVE_VIEW
-    rt::bench::ViewLatencyConfig view_cfg;
+CLI::App* add_view_command(CLI::App& app, rt::bench::ViewLatencyConfig& view_cfg) {
     CLI::App* view = app.add_subcommand(
         "view", "the lecture viewer's latency: camera change to first coarse and to full frame");
     view->add_option("scene", view_cfg.scene, "scene file (default: stage 05's whitted.json)")
@@ -157,26 +154,70 @@ int main(int argc, char** argv) {
     view->add_option("--changes", view_cfg.changes, "camera changes timed")
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));
+    return view;
+}
 #endif
-    rt::bench::GpuBenchConfig gpu;
+
+struct GpuArgs {
+    rt::bench::GpuBenchConfig config;
     std::string gl = "egl";
+};
+
+CLI::App* add_gpu_command(CLI::App& app, GpuArgs& a) {
     CLI::App* gpu_cmd = app.add_subcommand(
         "gpu",
         "stage 09's compute shader (specialised and uber) against the CPU on 1 and 2 threads");
-    gpu_cmd->add_option("--scene", gpu.scenes,
+    gpu_cmd->add_option("--scene", a.config.scenes,
                         "scene files (default: whitted, large_icosphere, soft_shadows)");
-    gpu_cmd->add_option("--width", gpu.width, "image width")
+    gpu_cmd->add_option("--width", a.config.width, "image width")
         ->capture_default_str()
         ->check(CLI::Range(1, 4096));
-    gpu_cmd->add_option("--height", gpu.height, "image height")
+    gpu_cmd->add_option("--height", a.config.height, "image height")
         ->capture_default_str()
         ->check(CLI::Range(1, 4096));
-    gpu_cmd->add_option("--repeat", gpu.repeat, "timed runs of each; the fastest counts")
+    gpu_cmd->add_option("--repeat", a.config.repeat, "timed runs of each; the fastest counts")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
-    gpu_cmd->add_option("--gl", gl, "the OpenGL context (default: egl)")
+    gpu_cmd->add_option("--gl", a.gl, "the OpenGL context (default: egl)")
         ->check(CLI::IsMember({"egl", "osmesa"}));
 
+    return gpu_cmd;
+}
+
+// The BVH benchmark's options belong to it: given with another subcommand, they are an error.
+bool no_bvh_options_given(const CLI::App& app, const std::string& sub) {
+    for (const CLI::Option* option : app.get_options())
+        if (option->count() > 0 && option->get_name() != "--help") {
+            std::fprintf(stderr,
+                         "rt-bench: error: %s is an option of the BVH benchmark, not of `%s`; "
+                         "give it after `%s`, if there\n",
+                         option->get_name().c_str(), sub.c_str(), sub.c_str());
+            return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "rt-bench: measurements for the ray-tracing course. Without a subcommand: the "
+        "BVH benchmark (as `rt-bench bvh`)"};
+    app.require_subcommand(0, 1);
+    rt::bench::BvhBenchConfig bench;
+    add_bvh_options(app, bench);
+    CLI::App* bvh = app.add_subcommand("bvh",
+                                       "the BVH benchmark (the default): brute force, "
+                                       "stage 06 BVH and Embree on the same rays");
+    bvh->fallthrough();
+    AccuracyArgs accuracy;
+    CLI::App* acc = add_accuracy_command(app, accuracy);
+#ifdef RT_BENCH_HAVE_VIEW
+    rt::bench::ViewLatencyConfig view_cfg;
+    CLI::App* view = add_view_command(app, view_cfg);
+#endif
+    GpuArgs gpu;
+    CLI::App* gpu_cmd = add_gpu_command(app, gpu);
     if (const auto stop = rt::parse_command_line(app, argc, argv, "rt-bench", "`rt-bench --help`"))
         return *stop;
     try {
@@ -184,20 +225,12 @@ int main(int argc, char** argv) {
         if (view->parsed()) return rt::bench::run_view_latency(view_cfg, std::cout) ? 0 : 1;
 #endif
         if (acc->parsed() || gpu_cmd->parsed()) {
-            const std::string sub = acc->parsed() ? "accuracy" : "gpu";
-            for (const CLI::Option* option : app.get_options())
-                if (option->count() > 0 && option->get_name() != "--help") {
-                    std::fprintf(stderr,
-                                 "rt-bench: error: %s is an option of the BVH benchmark, "
-                                 "not of `%s`; give it after `%s`, if there\n",
-                                 option->get_name().c_str(), sub.c_str(), sub.c_str());
-                    return 2;
-                }
+            if (!no_bvh_options_given(app, acc->parsed() ? "accuracy" : "gpu")) return 2;
             if (gpu_cmd->parsed()) {
-                gpu.context = *rt::parse_gl_kind(gl);
-                return rt::bench::run_gpu_bench(gpu, std::cout);
+                gpu.config.context = *rt::parse_gl_kind(gpu.gl);
+                return rt::bench::run_gpu_bench(gpu.config, std::cout);
             }
-            return run_accuracy(cfg, markdown, svg_dir, csv);
+            return run_accuracy(accuracy.config, accuracy.markdown, accuracy.svg_dir, accuracy.csv);
         }
         return rt::bench::run_bvh_bench(bench, std::cout);
     } catch (const std::exception& e) {

@@ -86,21 +86,11 @@ std::uint8_t encode(float linear) {
     return std::uint8_t(std::lround(255 * linear_to_srgb(std::clamp(linear, 0.0f, 1.0f))));
 }
 
-}  // namespace
-
-std::vector<TexturePoint> measure_texture_filters(int width, int height, std::string& note) {
-    const Image stored = read_image(
-        source_dir() / "stages/07-textures/scenes/textures/fine_checks.png", Encoding::Data);
-    Texels tex{stored.width, stored.height, {}};
-    for (const Color& c : stored.pixels)
-        tex.linear.push_back(Color(srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)));
-    const View view(width, height);
-    const std::size_t n = std::size_t(width) * height;
-
-    // The reference: 16 x 16 stratified bilinear samples per pixel, box-filtered.
-    std::vector<Color> reference(n);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+// The reference: 16 x 16 stratified bilinear samples per pixel, box-filtered.
+std::vector<Color> reference_image(const Texels& tex, const View& view) {
+    std::vector<Color> reference(std::size_t(view.width) * view.height);
+    for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x) {
             Color sum(0);
             for (int sy = 0; sy < 16; ++sy)
                 for (int sx = 0; sx < 16; ++sx) {
@@ -109,22 +99,31 @@ std::vector<TexturePoint> measure_texture_filters(int width, int height, std::st
                                ? bilinear(tex, s, t)
                                : kSky;
                 }
-            reference[std::size_t(y) * width + x] = sum / 256.0f;
+            reference[std::size_t(y) * view.width + x] = sum / 256.0f;
         }
+    return reference;
+}
 
-    auto score = [&](const std::string& name, auto&& lookup) {
+// One filter's point: its image (one lookup a pixel, with the footprint from the neighbouring
+// pixels' points, as ray differentials give it), timed, and its error against the reference.
+struct Scorer {
+    const View& view;
+    const std::vector<Color>& reference;
+
+    template <typename Lookup>
+    TexturePoint operator()(const std::string& name, Lookup&& lookup) const {
+        const int width = view.width, height = view.height;
+        const std::size_t n = reference.size();
         std::vector<Color> image(n);
         const auto start = Clock::now();
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
                 double s, t, s1, t1, s2, t2;
-                const bool floor = view.uv(x + 0.5, y + 0.5, s, t);
-                if (!floor) {
+                if (!view.uv(x + 0.5, y + 0.5, s, t)) {
                     image[std::size_t(y) * width + x] = kSky;
                     continue;
                 }
-                // The footprint: the neighbouring pixels' points (ray differentials); a
-                // neighbour above the horizon gives no footprint in its direction.
+                // A neighbour above the horizon gives no footprint in its direction.
                 if (!view.uv(x + 1.5, y + 0.5, s1, t1)) s1 = s, t1 = t;
                 if (!view.uv(x + 0.5, y + 1.5, s2, t2)) s2 = s, t2 = t;
                 image[std::size_t(y) * width + x] = lookup(s, t, s1 - s, t1 - t, s2 - s, t2 - t);
@@ -139,27 +138,23 @@ std::vector<TexturePoint> measure_texture_filters(int width, int height, std::st
                 if (c == 0 && std::abs(diff) > 2) ++off;
             }
         return TexturePoint{name, ms, std::sqrt(squared / double(3 * n)), 100.0 * off / double(n)};
-    };
+    }
+};
 
-    std::vector<TexturePoint> points;
-    points.push_back(score("nearest", [&](double s, double t, double, double, double, double) {
-        return nearest(tex, s, t);
-    }));
-    points.push_back(score("bilinear", [&](double s, double t, double, double, double, double) {
-        return bilinear(tex, s, t);
-    }));
-
-    // OpenImageIO through the module; without it the table says so instead of failing the run.
+// OpenImageIO's trilinear and anisotropic lookups through the module; without it, `note` says
+// why the rows are missing instead of failing the run.
+void add_oiio_points(const Texels& tex, const Scorer& score, std::vector<TexturePoint>& points,
+                     std::string& note) {
     const image_files::OiioPlugin& plugin = image_files::oiio_plugin();
     if (!plugin.textures_create) {
         note = "OpenImageIO rows missing: " + plugin.problem;
-        return points;
+        return;
     }
     char error[512] = {};
     RtOiioTextures* system = plugin.textures_create(error, sizeof error);
     if (!system) {
         note = std::string("OpenImageIO rows missing: ") + error;
-        return points;
+        return;
     }
     const auto mip_start = Clock::now();
     std::vector<float> rgb;
@@ -170,7 +165,7 @@ std::vector<TexturePoint> measure_texture_filters(int width, int height, std::st
     if (index < 0) {
         plugin.textures_destroy(system);
         note = std::string("OpenImageIO rows missing: ") + error;
-        return points;
+        return;
     }
     for (int aniso : {0, 16}) {
         points.push_back(score(
@@ -185,6 +180,27 @@ std::vector<TexturePoint> measure_texture_filters(int width, int height, std::st
     plugin.textures_destroy(system);
     note = "OpenImageIO's mip-map pyramid took " + std::to_string(int(std::lround(mip_ms))) +
            " ms to build (not in the lookup times)";
+}
+
+}  // namespace
+
+std::vector<TexturePoint> measure_texture_filters(int width, int height, std::string& note) {
+    const Image stored = read_image(
+        source_dir() / "stages/07-textures/scenes/textures/fine_checks.png", Encoding::Data);
+    Texels tex{stored.width, stored.height, {}};
+    for (const Color& c : stored.pixels)
+        tex.linear.push_back(Color(srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)));
+    const View view(width, height);
+    const std::vector<Color> reference = reference_image(tex, view);
+    const Scorer score{view, reference};
+    std::vector<TexturePoint> points;
+    points.push_back(score("nearest", [&](double s, double t, double, double, double, double) {
+        return nearest(tex, s, t);
+    }));
+    points.push_back(score("bilinear", [&](double s, double t, double, double, double, double) {
+        return bilinear(tex, s, t);
+    }));
+    add_oiio_points(tex, score, points, note);
     return points;
 }
 

@@ -1,4 +1,5 @@
-// Ray-sphere tests with closed-form answers. The exact-arithmetic checks are in cgal_exact_test.cpp.
+// Ray-sphere tests with closed-form answers. The exact-arithmetic checks are in
+// cgal_exact_shapes_test.cpp.
 #include "test_helpers.h"
 
 namespace rt::stage02 {

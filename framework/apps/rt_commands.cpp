@@ -1,0 +1,151 @@
+#include "apps/rt_commands.h"
+
+namespace rt {
+
+// `rt render`'s options: what to render and write.
+CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
+    auto* render_cmd = app.add_subcommand("render", "render one scene file to an image");
+    render_cmd->add_option("scene", render_args.scene, "scene file (.json)")->required();
+    render_cmd->add_option("-o,--output", render_args.output, "output image (.png or .exr)");
+    render_cmd->add_option("--debug-pixel", render_args.debug_pixel,
+                           "print the ray tree of pixel X,Y (shaded mode; -o optional); with --gpu "
+                           "what the shader computed there, and each rt_debug(value)");
+    render_cmd->add_option("--debug-format", render_args.debug_format, "text (default) or json")
+        ->check(CLI::IsMember({"text", "json"}));
+    render_cmd->add_option("--overlay-pixel", render_args.overlay_pixel,
+                           "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
+                           "magenta, reflection blue, refraction yellow");
+    render_cmd->add_option("--mode", render_args.mode_name, "override the scene's mode")
+        ->check(
+            CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
+    return render_cmd;
+}
+
+// `rt render`'s overrides of what the scene file says (the viewer's toggles among them).
+void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
+    render_cmd
+        ->add_option("--accelerator", render_args.accelerator,
+                     "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
+        ->check(CLI::IsMember({"none", "bvh"}));
+    render_cmd
+        ->add_option("--texture-filter", render_args.texture_filter,
+                     "filter every image texture nearest or bilinear (stage 07), whatever the "
+                     "scene says; or oiio (OpenImageIO's TextureSystem, mip-mapped, trilinear) "
+                     "or oiio-aniso (anisotropic): footprints from camera-ray differentials, "
+                     "none (bilinear) for reflected and refracted rays")
+        ->check(CLI::IsMember({"nearest", "bilinear", "oiio", "oiio-aniso"}));
+    render_cmd->add_option("--width", render_args.width, "override the image width")
+        ->check(CLI::Range(1, 16384));
+    render_cmd->add_option("--height", render_args.height, "override the image height")
+        ->check(CLI::Range(1, 16384));
+    render_cmd->add_option("--threads", render_args.threads, "threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    render_cmd
+        ->add_option("--yaw", render_args.yaw_degrees,
+                     "turn the camera about its up axis by DEGREES (positive: to the right)")
+        ->check(CLI::Range(-45.0, 45.0));
+    render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
+    render_cmd->add_option("--shadows", render_args.shadows, "override the scene's shadows")
+        ->check(CLI::IsMember({"on", "off"}));
+    render_cmd
+        ->add_option("--max-depth", render_args.max_depth,
+                     "override the scene's bounces of reflected/refracted rays")
+        ->check(CLI::Range(0, 64));
+    render_cmd
+        ->add_option("--spp", render_args.spp,
+                     "override the scene's samples per pixel (stage 10: any value > 1 samples)")
+        ->check(CLI::Range(1, 65536));
+    render_cmd
+        ->add_option("--seed", render_args.seed,
+                     "override the scene's random seed (stage 10; 0 to 2^53)")
+        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 53));
+}
+
+// `rt render --gpu` and its context (stage 09).
+void add_render_gpu_options(CLI::App* render_cmd, RenderArgs& render_args) {
+    render_cmd->add_flag("--gpu", render_args.gpu,
+                         "render with the compute shader of stage 09 (shaders/trace.comp and "
+                         "stages/09-gpu/*.glsl; a stage 10 scene also "
+                         "stages/10-sampling/sampling.glsl)");
+    render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
+        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
+    render_cmd->add_flag("--uber", render_args.uber,
+                         "with --gpu: compile every feature into the shader instead of only what "
+                         "the scene uses (rt-bench gpu compares the two)");
+}
+
+CLI::App* add_gallery_command(CLI::App& app, GalleryArgs& args) {
+    auto* gallery_cmd = app.add_subcommand("gallery", "render every scene of every stage");
+    gallery_cmd->add_option("--out", args.out, "output folder (default: ./gallery)");
+    gallery_cmd->add_option("--source", args.source, "source tree holding stages/")
+        ->check(CLI::ExistingDirectory);
+    gallery_cmd->add_option("--threads", args.threads, "threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    return gallery_cmd;
+}
+
+CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
+    auto* compare_cmd = app.add_subcommand(
+        "compare", "compare two images by the grader's metric (framework/image/compare.h)");
+    compare_cmd->add_option("actual", args.actual, "image (.png or .exr)")->required();
+    compare_cmd->add_option("reference", args.reference, "reference image")->required();
+    compare_cmd->add_option("--tolerance", args.tolerance, "8-bit steps a channel may differ")
+        ->check(CLI::Range(0, 255));
+    compare_cmd->add_flag("--neighbourhood", args.neighbourhood,
+                          "forgive anti-aliased edges (3x3), as the graders do");
+    compare_cmd
+        ->add_option("--block", args.block,
+                     "compare the means of NxN blocks (Monte Carlo images, stage 10)")
+        ->check(CLI::Range(0, 256));
+    return compare_cmd;
+}
+
+CLI::App* add_view_command(CLI::App& app, ViewArgsForCli& view_args) {
+    auto* view_cmd = app.add_subcommand(
+        "view",
+        "the lecture-demo viewer: progressive render, toggles, ray trees (needs a display)");
+    view_cmd->add_option("scene", view_args.scene, "scene file (.json)")->required();
+    view_cmd->add_option("--script", view_args.script,
+                         "replay a session and exit (commands: framework/view/view_script.h)");
+    view_cmd->add_option("--out", view_args.out, "folder for screenshots (default: .)");
+    view_cmd->add_option("--threads", view_args.threads, "render threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    view_cmd->add_option("--width", view_args.width, "override the image width")
+        ->check(CLI::Range(1, 4096));
+    view_cmd->add_option("--height", view_args.height, "override the image height")
+        ->check(CLI::Range(1, 4096));
+    return view_cmd;
+}
+
+CLI::App* add_gl_info_command(CLI::App& app, GlInfoArgs& args) {
+    auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
+    gl_cmd->add_flag("--window", args.window, "use a GLFW window instead of headless OSMesa");
+    gl_cmd
+        ->add_option("--gl", args.kind,
+                     "create the GPU stage's context instead and print its limits")
+        ->check(CLI::IsMember({"egl", "osmesa", "window"}));
+    return gl_cmd;
+}
+
+CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
+    auto* export_cmd = app.add_subcommand(
+        "export-shadertoy",
+        "write the scene and stages/09-gpu's GLSL as one self-contained Shadertoy shader "
+        "(stages/09-gpu/README.md#publish-on-shadertoy)");
+    export_cmd->add_option("scene", args.scene, "scene file (.json)")->required();
+    export_cmd->add_option("-o,--output", args.output, "the shader to write (.glsl)")->required();
+    export_cmd->add_option("--mode", args.mode, "override the scene's mode")
+        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+    return export_cmd;
+}
+
+CLI::App* add_fmt_command(CLI::App& app, FmtArgs& args) {
+    auto* fmt_cmd = app.add_subcommand(
+        "fmt", "rewrite scene files in canonical form (docs/scene-format.md#canonical-form)");
+    fmt_cmd->add_option("scenes", args.files, "scene files (.json)")->required();
+    fmt_cmd->add_flag("--check", args.check,
+                      "change nothing; name each file not in canonical form and exit 1 if any");
+    return fmt_cmd;
+}
+
+}  // namespace rt
