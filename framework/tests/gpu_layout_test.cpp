@@ -5,11 +5,11 @@
 
 #include <epoxy/gl.h>
 
+#include <cctype>
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -231,13 +231,39 @@ TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
     glDeleteProgram(program);
 }
 
+// Whether `text` has "binding = <digit>" (spaces optional).
+bool binds_by_number(const std::string& text) {
+    for (std::size_t at = text.find("binding"); at != std::string::npos;
+         at = text.find("binding", at + 1)) {
+        std::size_t i = at + 7;
+        while (i < text.size() && text[i] == ' ') ++i;
+        if (i >= text.size() || text[i] != '=') continue;
+        ++i;
+        while (i < text.size() && text[i] == ' ') ++i;
+        if (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) return true;
+    }
+    return false;
+}
+
+// The names N of every "const int kN =" in `text`.
+std::vector<std::string> declared_int_constants(const std::string& text) {
+    std::vector<std::string> names;
+    for (std::size_t at = text.find("const int k"); at != std::string::npos;
+         at = text.find("const int k", at + 1)) {
+        std::size_t end = at + 10;
+        while (end < text.size() && std::isalnum(static_cast<unsigned char>(text[end]))) ++end;
+        std::size_t i = end;
+        while (i < text.size() && text[i] == ' ') ++i;
+        if (i < text.size() && text[i] == '=') names.push_back(text.substr(at + 10, end - at - 10));
+    }
+    return names;
+}
+
 // The numbers C++ and GLSL share are written into the shaders by gpu/shader_constants.cpp: no
 // GLSL file of the framework or of a stage declares one of them again, or binds a block by a
 // number of its own.
 TEST(GpuLayout, SharedNumbersHaveOneHome) {
     const std::string prelude = shader_prelude();
-    const std::regex constant(R"(const\s+int\s+(k[A-Za-z0-9]+)\s*=)");
-    const std::regex binding(R"(binding\s*=\s*[0-9])");
     int files = 0;
     for (const char* folder : {"shaders", "stages/09-gpu", "stages/10-sampling"})
         for (const auto& entry : std::filesystem::directory_iterator(source_dir() / folder)) {
@@ -245,12 +271,11 @@ TEST(GpuLayout, SharedNumbersHaveOneHome) {
             if (ext != ".glsl" && ext != ".comp") continue;
             ++files;
             const std::string text = read_file(entry.path());
-            EXPECT_FALSE(std::regex_search(text, binding))
+            EXPECT_FALSE(binds_by_number(text))
                 << entry.path() << " binds a block by number: use RT_BINDING_* (the prelude's)";
-            for (auto it = std::sregex_iterator(text.begin(), text.end(), constant);
-                 it != std::sregex_iterator(); ++it)
-                EXPECT_EQ(prelude.find(" " + (*it)[1].str() + " = "), std::string::npos)
-                    << entry.path() << " declares " << (*it)[1]
+            for (const std::string& name : declared_int_constants(text))
+                EXPECT_EQ(prelude.find(" " + name + " = "), std::string::npos)
+                    << entry.path() << " declares " << name
                     << ", which gpu/shader_constants.cpp already writes into every shader";
         }
     EXPECT_GT(files, 10);
