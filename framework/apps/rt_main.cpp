@@ -293,7 +293,7 @@ int run_view_command(const ViewArgsForCli& args) {
     (void)args;
     throw std::runtime_error(
         "rt: error: this rt was built without the viewer; install libimgui-dev "
-        "(scripts/install-deps.sh) and reconfigure");
+        "(scripts/install-deps.sh) and reconfigure with -DRT_VIEWER=ON");
 #endif
 }
 
