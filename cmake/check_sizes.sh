@@ -10,8 +10,9 @@
 set -euo pipefail
 cd "$1"
 max_file=500 max_function=80
-files() {  # tracked files, or every file when this is not a git checkout (a release)
-    if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then git ls-files "$@"
+files() {  # tracked files still present, or every file when this is not a git checkout (a release)
+    if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+        git ls-files --cached --others --exclude-standard "$@" | while read -r f; do [[ -f "$f" ]] && echo "$f"; done
     else find . -type f \( -false $(printf -- '-o -path ./%s ' "$@") \) | sed 's|^\./||'; fi
 }
 found=""  # "FILE NAME LINES" per line: what is over the limits now

@@ -19,62 +19,6 @@ Vec3 abs3(const Vec3& v) {
 
 }  // namespace
 
-SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
-    SurfacePoint sp;
-    sp.point = hit.point;
-    sp.normal = hit.normal;
-    sp.front_face = hit.front_face;
-    sp.primitive = hit.primitive;
-    sp.material = hit.material;
-    if (!scene.is_primitive(hit.primitive)) {
-        // Unknown primitive: the point as computed, with the error of o + t d.
-        sp.error = gamma_bound(4) * (abs3(ray.origin) + abs3(hit.t * ray.direction));
-        return sp;
-    }
-    std::size_t i = 0;
-    switch (scene.primitive_kind(hit.primitive, i)) {
-        case Scene::Kind::Sphere: {
-            const Sphere& s = scene.spheres[i];
-            const Vec3 from_centre = hit.point - s.center;
-            const Real length = glm::length(from_centre);
-            if (length > 0) sp.point = s.center + from_centre * (s.radius / length);
-            sp.error = gamma_bound(8) * (abs3(s.center) + abs3(sp.point - s.center));
-            break;
-        }
-        case Scene::Kind::Plane: {
-            const Plane& p = scene.planes[i];
-            sp.point = hit.point - p.normal * glm::dot(p.normal, hit.point - p.point);
-            // The signed distance d = n.(p - p0) is off by at most gamma(5) n.(|p| + |p0|); the
-            // correction moves each coordinate by n_i d, and the subtraction rounds once more.
-            const Real distance_error =
-                gamma_bound(5) * glm::dot(abs3(p.normal), abs3(hit.point) + abs3(p.point));
-            sp.error = abs3(p.normal) * distance_error + gamma_bound(2) * abs3(sp.point);
-            break;
-        }
-        case Scene::Kind::Triangle: {
-            Vec3 a, b, c;
-            scene.triangle_vertices(i, a, b, c);
-            const Real b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1 - b1 - b2;
-            sp.point = b0 * a + b1 * b + b2 * c;
-            sp.error = gamma_bound(7) * (abs3(b0 * a) + abs3(b1 * b) + abs3(b2 * c));
-            break;
-        }
-        case Scene::Kind::Box: {
-            const Box& box = scene.boxes[i];
-            const Vec3 outward = hit.front_face ? hit.normal : -hit.normal;
-            int axis = 0;
-            for (int k = 1; k < 3; ++k)
-                if (std::abs(outward[k]) > std::abs(outward[axis])) axis = k;
-            sp.point = glm::clamp(hit.point, box.min, box.max);
-            sp.point[axis] = outward[axis] > 0 ? box.max[axis] : box.min[axis];
-            sp.error = gamma_bound(3) * abs3(sp.point);
-            sp.error[axis] = 0;
-            break;
-        }
-    }
-    return sp;
-}
-
 Vec3 offset_ray_origin(const Vec3& point, const Vec3& error, const Vec3& normal,
                        const Vec3& direction) {
     const Real d = glm::dot(abs3(normal), error);

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "accel/bvh_input.h"
 #include "core/not_implemented.h"
+#include "scene/bvh_primitives.h"
 
 namespace rt {
 

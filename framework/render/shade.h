@@ -13,8 +13,8 @@
 
 #include <vector>
 
-#include "geometry/offset.h"
 #include "scene/scene.h"
+#include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
 namespace rt {

@@ -4,9 +4,9 @@
 // scene.features.textures or normal_maps, so scenes without textures never run stage 07 code.
 #pragma once
 
-#include "geometry/offset.h"
 #include "render/oiio_textures.h"
 #include "scene/scene.h"
+#include "scene/surface_point.h"
 
 namespace rt {
 

@@ -3,7 +3,7 @@
 // Where rays start: framework/geometry/offset.h (docs/conventions.md#secondary-ray-origins).
 #pragma once
 
-#include "geometry/offset.h"
+#include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
 namespace rt {

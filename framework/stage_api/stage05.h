@@ -4,7 +4,7 @@
 // and adds weight * (colour seen along the ray), up to the scene's max_depth.
 #pragma once
 
-#include "geometry/offset.h"
+#include "scene/surface_point.h"
 
 namespace rt {
 

@@ -9,7 +9,7 @@
 // The framework calls them only for scenes that use a stage 10 feature (Features::sampled()).
 #pragma once
 
-#include "geometry/offset.h"
+#include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
 namespace rt {

@@ -2,8 +2,8 @@
 // stages/08-environment/tests/radiance_test.cpp.)
 #include <gtest/gtest.h>
 
-#include "geometry/offset.h"
 #include "scene/scene.h"
+#include "scene/surface_point.h"
 
 namespace rt {
 namespace {

@@ -89,10 +89,15 @@ for file in "${STUDENT_FILES[@]}"; do
         signatures=$((signatures + 1))
     done < <(grep -E '^[A-Za-z_][A-Za-z0-9_:<>,&* ]*[ &*][A-Za-z_][A-Za-z0-9_]*\(' "$SRC/$file" \
                  | grep -vE '^(namespace|using|return|if|for|while|struct|class|enum)\b')
-    regions="$(grep -cE '^[[:space:]]*// BEGIN SOLUTION[[:space:]]*$' "$SRC/$file")"
+    # Regions whose stub is code (not a region of helper functions, whose stub is a comment).
+    regions="$(awk '/^[ \t]*\/\/ BEGIN SOLUTION[ \t]*$/ {s=1; code=0; next}
+                    /^[ \t]*\/\/ STUB[ \t]*$/ {s=2; next}
+                    /^[ \t]*\/\/ END SOLUTION[ \t]*$/ {if (code) n++; s=0; next}
+                    s==2 && !/^[ \t]*\/\/ ?\/\// {code=1}
+                    END {print n+0}' "$SRC/$file")"
     stubs="$(grep -cE '^[[:space:]]*RT_NOT_IMPLEMENTED\(".*README\.md#' "$released")"
     [[ "$stubs" -ge "$regions" ]] \
-        || fail "$file: $regions solution regions but only $stubs un-commented RT_NOT_IMPLEMENTED stubs"
+        || fail "$file: $regions solution regions with a code stub but only $stubs un-commented RT_NOT_IMPLEMENTED stubs"
 done
 [[ $signatures -gt 0 ]] || fail "found no function signatures in the student files"
 ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every region has an RT_NOT_IMPLEMENTED stub"

@@ -92,40 +92,30 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     // END SOLUTION
 }
 
-// Top-down: split while the SAH says splitting pays, children stored next to each other.
-void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh& bvh) {
-    // BEGIN SOLUTION
-    bvh = Bvh{};
-    if (prims.empty()) return;
-    const std::uint32_t n = std::uint32_t(prims.size());
-    bvh.primitives.resize(n);
+// BEGIN SOLUTION
+namespace {
 
-    struct Task {
-        std::uint32_t node;  // index in the `nodes` being built
-        std::uint32_t begin, end;
-        int depth;
-    };
+// A node still to build: its index in the node array being built, and its primitives.
+struct BuildTask {
+    std::uint32_t node;
+    std::uint32_t begin, end;
+    int depth;
+};
+
+// Top-down building over a work list instead of recursion: a degenerate mesh may make a deep tree.
+class TreeBuilder {
+  public:
+    TreeBuilder(std::vector<BvhPrimitive>& prims, const BvhBuildOptions& options, Bvh& bvh)
+        : prims_(prims), options_(options), bvh_(bvh) {}
+
     // Makes task.node a leaf, or splits it: partitions its primitives, appends its two children
     // (boxes set, adjacent) to `nodes` and their tasks to `tasks`, left task last.
-    auto split_node = [&](const Task& task, std::vector<BvhNode>& nodes, std::vector<Task>& tasks) {
+    void split_node(const BuildTask& task, std::vector<BvhNode>& nodes,
+                    std::vector<BuildTask>& tasks) const {
         const std::uint32_t count = task.end - task.begin;
-        SahSplit split;
-        if (count > std::uint32_t(options.max_leaf_size) && task.depth < kBvhMaxDepth)
-            split = find_sah_split(prims, task.begin, task.end, options);
-        std::uint32_t mid = task.begin;
-        if (split.axis >= 0 && split.cost < float(count)) {
-            // Partition by the very same bin computation the split was chosen with.
-            const int axis = split.axis;
-            const int bins = std::clamp(options.bins, 2, kMaxBins);
-            const auto left_side = [&](const BvhPrimitive& p) {
-                return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
-            };
-            mid = std::uint32_t(
-                std::partition(prims.begin() + task.begin, prims.begin() + task.end, left_side) -
-                prims.begin());
-        }
+        const std::uint32_t mid = partition(task);
         if (mid == task.begin || mid == task.end) {  // a leaf (or, defensively, an empty side)
-            for (std::uint32_t i = task.begin; i < task.end; ++i) bvh.primitives[i] = prims[i].id;
+            for (std::uint32_t i = task.begin; i < task.end; ++i) bvh_.primitives[i] = prims_[i].id;
             nodes[task.node].first = task.begin;
             nodes[task.node].count = count;
             return;
@@ -134,8 +124,8 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
         // split's bins: if the compiler evaluated bin_of a little differently here than in
         // find_sah_split (as -ffast-math allows), the tree must still be valid.
         Aabb left_bounds, right_bounds;
-        for (std::uint32_t i = task.begin; i < mid; ++i) left_bounds.grow(prims[i].bounds);
-        for (std::uint32_t i = mid; i < task.end; ++i) right_bounds.grow(prims[i].bounds);
+        for (std::uint32_t i = task.begin; i < mid; ++i) left_bounds.grow(prims_[i].bounds);
+        for (std::uint32_t i = mid; i < task.end; ++i) right_bounds.grow(prims_[i].bounds);
         const std::uint32_t left = std::uint32_t(nodes.size());
         nodes.push_back(BvhNode{left_bounds.min, 0, left_bounds.max, 0});
         nodes.push_back(BvhNode{right_bounds.min, 0, right_bounds.max, 0});
@@ -143,42 +133,46 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
         nodes[task.node].count = 0;
         tasks.push_back({left + 1, mid, task.end, task.depth + 1});
         tasks.push_back({left, task.begin, mid, task.depth + 1});
-    };
-    // A work list instead of recursion: a degenerate mesh may make a deep tree.
-    auto build_subtree = [&](Task task, std::vector<BvhNode>& nodes) {
-        std::vector<Task> tasks{task};
+    }
+
+    // Builds the subtree of `task` into `nodes`, its root at task.node.
+    void build_subtree(BuildTask task, std::vector<BvhNode>& nodes) const {
+        std::vector<BuildTask> tasks{task};
         while (!tasks.empty()) {
-            const Task next = tasks.back();
+            const BuildTask next = tasks.back();
             tasks.pop_back();
             split_node(next, nodes, tasks);
         }
-    };
-
-    Aabb root_bounds;
-    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
-    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
-    std::vector<Task> children;
-    split_node({0, 0, n, 1}, bvh.nodes, children);
-    if (children.empty()) return;  // the root is a leaf
-
-    // The root's two subtrees are independent: build each into a vector of its own (its root at
-    // local index 0), the right one on a second thread when the mesh is large, then lay them out
-    // after the root: root, left child, right child, the rest of the left subtree, the rest of
-    // the right. The layout does not depend on the thread, so the tree is the same on every run.
-    std::vector<BvhNode> sub[2] = {{bvh.nodes[1]}, {bvh.nodes[2]}};
-    const Task left_task{0, children[1].begin, children[1].end, 2};
-    const Task right_task{0, children[0].begin, children[0].end, 2};
-    sub[0].reserve(2 * std::size_t(left_task.end - left_task.begin));
-    sub[1].reserve(2 * std::size_t(right_task.end - right_task.begin));
-    constexpr std::uint32_t kParallelFrom = 20000;  // below, a thread costs more than it saves
-    if (n >= kParallelFrom && std::thread::hardware_concurrency() > 1) {
-        std::thread right([&] { build_subtree(right_task, sub[1]); });
-        build_subtree(left_task, sub[0]);
-        right.join();
-    } else {
-        build_subtree(left_task, sub[0]);
-        build_subtree(right_task, sub[1]);
     }
+
+  private:
+    // Where the task's primitives split: the first index of the right side, or task.begin when
+    // the SAH says a leaf costs less (or the node is small or deep enough to be one).
+    std::uint32_t partition(const BuildTask& task) const {
+        const std::uint32_t count = task.end - task.begin;
+        SahSplit split;
+        if (count > std::uint32_t(options_.max_leaf_size) && task.depth < kBvhMaxDepth)
+            split = find_sah_split(prims_, task.begin, task.end, options_);
+        if (split.axis < 0 || !(split.cost < float(count))) return task.begin;
+        // Partition by the very same bin computation the split was chosen with.
+        const int axis = split.axis;
+        const int bins = std::clamp(options_.bins, 2, kMaxBins);
+        const auto left_side = [&](const BvhPrimitive& p) {
+            return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
+        };
+        return std::uint32_t(
+            std::partition(prims_.begin() + task.begin, prims_.begin() + task.end, left_side) -
+            prims_.begin());
+    }
+
+    std::vector<BvhPrimitive>& prims_;
+    const BvhBuildOptions& options_;
+    Bvh& bvh_;
+};
+
+// Lays the root's two subtrees (each built with its root at local index 0) out after the root:
+// root, left child, right child, the rest of the left subtree, the rest of the right.
+void place_subtrees(const std::vector<BvhNode> (&sub)[2], Bvh& bvh) {
     bvh.nodes.resize(1 + sub[0].size() + sub[1].size());
     std::uint32_t offset = 3;  // where the subtree's nodes after its root go
     for (std::uint32_t side = 0; side < 2; ++side) {
@@ -192,6 +186,47 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
         }
         offset += std::uint32_t(sub[side].size()) - 1;
     }
+}
+
+}  // namespace
+// STUB
+// // Helper functions of your own may go here (an anonymous namespace keeps them in this file).
+// END SOLUTION
+
+// Top-down: split while the SAH says splitting pays, children stored next to each other.
+void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh& bvh) {
+    // BEGIN SOLUTION
+    bvh = Bvh{};
+    if (prims.empty()) return;
+    const std::uint32_t n = std::uint32_t(prims.size());
+    bvh.primitives.resize(n);
+    const TreeBuilder builder(prims, options, bvh);
+
+    Aabb root_bounds;
+    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
+    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
+    std::vector<BuildTask> children;
+    builder.split_node({0, 0, n, 1}, bvh.nodes, children);
+    if (children.empty()) return;  // the root is a leaf
+
+    // The root's two subtrees are independent: build each into a vector of its own (its root at
+    // local index 0), the right one on a second thread when the mesh is large. The layout does
+    // not depend on the thread, so the tree is the same on every run.
+    std::vector<BvhNode> sub[2] = {{bvh.nodes[1]}, {bvh.nodes[2]}};
+    const BuildTask left_task{0, children[1].begin, children[1].end, 2};
+    const BuildTask right_task{0, children[0].begin, children[0].end, 2};
+    sub[0].reserve(2 * std::size_t(left_task.end - left_task.begin));
+    sub[1].reserve(2 * std::size_t(right_task.end - right_task.begin));
+    constexpr std::uint32_t kParallelFrom = 20000;  // below, a thread costs more than it saves
+    if (n >= kParallelFrom && std::thread::hardware_concurrency() > 1) {
+        std::thread right([&] { builder.build_subtree(right_task, sub[1]); });
+        builder.build_subtree(left_task, sub[0]);
+        right.join();
+    } else {
+        builder.build_subtree(left_task, sub[0]);
+        builder.build_subtree(right_task, sub[1]);
+    }
+    place_subtrees(sub, bvh);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#building-the-tree");
     // (void)prims; (void)options; (void)bvh;

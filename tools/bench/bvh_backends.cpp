@@ -6,8 +6,8 @@
 #include <chrono>
 #include <thread>
 
-#include "accel/bvh_input.h"
 #include "core/parallel_for.h"
+#include "scene/bvh_primitives.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage06.h"
 

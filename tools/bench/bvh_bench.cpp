@@ -16,8 +16,8 @@
 
 #include <sys/resource.h>
 
-#include "accel/bvh_input.h"
 #include "bench/machine.h"
+#include "scene/bvh_primitives.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage06.h"
 

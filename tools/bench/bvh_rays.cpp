@@ -8,9 +8,9 @@
 #include <limits>
 
 #include "core/split_mix64.h"
-#include "geometry/offset.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/obj_loader.h"
+#include "scene/surface_point.h"
 #include "stage_api/stage06.h"
 
 namespace rt::bench {

@@ -4,9 +4,9 @@
 
 #include <random>
 
-#include "accel/bvh_input.h"
 #include "geometry/procedural_mesh.h"
 #include "render/accelerate.h"
+#include "scene/bvh_primitives.h"
 
 namespace rt::bvh_test {
 

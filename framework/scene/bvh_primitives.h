@@ -1,6 +1,8 @@
-// What a BVH over a scene is built from: one BvhPrimitive per bounded primitive.
+// What a BVH over a scene is built from: one BvhPrimitive per bounded primitive. It lives with the
+// scene, which the BVH itself (accel/) knows nothing of.
 #pragma once
 
+#include "accel/bvh.h"
 #include "scene/scene.h"
 
 namespace rt {
