@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "render/accelerate.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -239,7 +239,7 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
         fs::create_directories(stage_out);
         for (const fs::path& scene_file : scenes) {
             Scene scene = load_scene(scene_file);
-            build_acceleration(scene);
+            prepare_scene(scene);
             RenderOptions options;
             options.threads = threads;
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");

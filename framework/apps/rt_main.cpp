@@ -35,7 +35,7 @@
 #include "render/accelerate.h"
 #include "render/gpu_debug_pixel.h"
 #include "render/gpu_render.h"
-#include "render/oiio_textures.h"
+#include "render/prepare.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
@@ -88,29 +88,34 @@ std::string debug_pixel_text(const RenderArgs& args, const Scene& scene, RenderM
                                        : ray_tree_text(scene, tree);
 }
 
+// The options that change the scene (CLI11 has checked each value against its list).
+SceneOverrides overrides_of(const RenderArgs& args) {
+    SceneOverrides o;
+    o.width = args.width;
+    o.height = args.height;
+    o.yaw_degrees = args.yaw_degrees;
+    if (!args.accelerator.empty())
+        o.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
+    const std::map<std::string, TextureLookup> lookups = {{"nearest", TextureLookup::Nearest},
+                                                          {"bilinear", TextureLookup::Bilinear},
+                                                          {"oiio", TextureLookup::Oiio},
+                                                          {"oiio-aniso", TextureLookup::OiioAniso}};
+    if (const auto it = lookups.find(args.texture_filter); it != lookups.end())
+        o.texture_lookup = it->second;
+    if (!args.shadows.empty()) o.shadows = args.shadows == "on";
+    if (args.max_depth >= 0) o.max_depth = args.max_depth;
+    if (args.spp > 0) o.samples_per_pixel = args.spp;
+    o.seed = args.seed;
+    return o;
+}
+
 int run_render(const RenderArgs& args) {
     if (args.uber && !args.gpu)
         throw std::runtime_error("rt: error: --uber chooses the GPU shader; add --gpu");
     if (!args.output.empty()) check_image_output(args.output);
     Scene scene = load_scene(args.scene);
-    if (args.width > 0) scene.image.width = args.width;
-    if (args.height > 0) scene.image.height = args.height;
-    if (args.yaw_degrees != 0) turn_camera(scene.camera, args.yaw_degrees);
-    if (!args.accelerator.empty())
-        scene.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
-    // OpenImageIO's TextureSystem (and the plug-in) are loaded only when asked for.
-    if (args.texture_filter == "oiio" || args.texture_filter == "oiio-aniso")
-        use_oiio_textures(scene, args.texture_filter == "oiio-aniso");
-    else if (!args.texture_filter.empty())
-        scene.texture_lookup =
-            args.texture_filter == "nearest" ? TextureLookup::Nearest : TextureLookup::Bilinear;
-    if (!args.shadows.empty()) scene.shadows = args.shadows == "on";
-    if (args.max_depth >= 0) scene.max_depth = args.max_depth;
-    if (args.spp > 0) scene.sampling.samples_per_pixel = args.spp;
-    if (args.seed) scene.sampling.seed = *args.seed;
-    scene.update_features();  // after the overrides, as the viewer does
+    const AccelerationReport accel = prepare_scene(scene, overrides_of(args));
     const RenderMode mode = args.mode.value_or(scene.mode);
-    const AccelerationReport accel = build_acceleration(scene);
     if (accel.built && !args.quiet)
         std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n",
                     accel.primitives, accel.nodes, accel.depth, accel.build_ms);
@@ -160,7 +165,7 @@ int run_compare(const std::string& actual, const std::string& reference, int tol
 
 int run_info(const std::string& file) {
     Scene scene = load_scene(file);
-    const AccelerationReport accel = build_acceleration(scene);
+    const AccelerationReport accel = prepare_scene(scene);
     std::printf(
         "%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
         "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
@@ -185,7 +190,7 @@ int run_info(const std::string& file) {
 int run_export_shadertoy(const std::string& file, const fs::path& output,
                          std::optional<RenderMode> mode) {
     Scene scene = load_scene(file);
-    build_acceleration(scene);
+    prepare_scene(scene);
     const ShadertoyExport shader = export_shadertoy(scene, mode.value_or(scene.mode));
     std::ofstream out(output, std::ios::binary);
     if (!(out << shader.text))

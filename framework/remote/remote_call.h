@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "remote/wire_types.h"
+#include "render/prepare.h"
 
 namespace rt::remote {
 
@@ -42,8 +43,6 @@ std::uint32_t add_callback(Callback callback);
 
 // Worker side (worker_serve.cpp): the scene of handle `key`, decoded from `r` when `r` holds it.
 const Scene& held_scene(std::uint64_t key, bool in_request, Reader& r);
-// Worker side (worker_serve.h): what a scene from the judge needs before use.
-void prepare_scene(Scene& scene);
 // Worker side: calls back the judge's callback `index` with `arguments`; returns its result.
 std::string call_judge(std::uint32_t index, const std::string& arguments);
 
@@ -140,7 +139,7 @@ struct InOut<Scene> {
         Scene value;
         void read(Reader& r) {
             get(r, value);
-            prepare_scene(value);
+            load_texture_system(value);  // OpenImageIO's cannot cross (wire_types.cpp)
         }
         Scene& arg() { return value; }
         void write(Writer& w) { put(w, value); }

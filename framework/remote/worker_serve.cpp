@@ -11,7 +11,7 @@
 #include "remote/api_headers.h"
 #include "remote/connection.h"
 #include "remote/remote_call.h"
-#include "render/oiio_textures.h"
+#include "render/prepare.h"
 
 namespace rt::remote {
 namespace {
@@ -72,16 +72,10 @@ const Scene& held_scene(std::uint64_t key, bool in_request, Reader& r) {
     if (in_request) {
         held = std::make_unique<Scene>();
         get(r, *held);
-        prepare_scene(*held);
+        load_texture_system(*held);
     }
     if (!held) throw RemoteError("the judge named a scene the worker does not hold");
     return *held;
-}
-
-void prepare_scene(Scene& scene) {
-    if (scene.texture_lookup == TextureLookup::Oiio ||
-        scene.texture_lookup == TextureLookup::OiioAniso)
-        use_oiio_textures(scene, scene.texture_lookup == TextureLookup::OiioAniso);
 }
 
 std::string call_judge(std::uint32_t index, const std::string& arguments) {

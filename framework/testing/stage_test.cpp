@@ -31,6 +31,8 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
     Scene scene;
     try {
         scene = load_scene(scene_file);
+        // prepare_scene without overrides, but through build_acceleration: in a grading judge
+        // that call crosses to the worker (stage_api/calls.h), and prepare_scene cannot.
         build_acceleration(scene);
     } catch (const std::exception& e) {
         ADD_FAILURE() << e.what();

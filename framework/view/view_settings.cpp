@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/accelerate.h"
+#include "render/prepare.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 
@@ -68,8 +68,8 @@ Scene SceneSource::make(const ViewSettings& settings) {
     const bool bvh = settings.accelerator == Accelerator::Bvh;
     if (bvh && !with_bvh_) {
         with_bvh_ = loaded_;
-        with_bvh_->accelerator = Accelerator::Bvh;
-        build_acceleration(*with_bvh_);  // may fall back to None (an invalid tree)
+        // May fall back to None (an invalid tree).
+        prepare_scene(*with_bvh_, {.accelerator = Accelerator::Bvh});
     }
     Scene scene = bvh ? *with_bvh_ : loaded_;
     scene.mode = settings.mode;
@@ -89,7 +89,7 @@ Scene SceneSource::make(const ViewSettings& settings) {
         if (!settings.refraction) m.transmissive = Color(0);
     }
     if (!settings.environment) scene.environment.kind = EnvironmentKind::None;
-    scene.update_features();
+    scene.update_features();  // prepare_scene's step 3 again, after the viewer's own changes
     return scene;
 }
 

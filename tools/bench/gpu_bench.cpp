@@ -11,8 +11,8 @@
 #include "bench/machine.h"
 #include "core/source_dir.h"
 #include "image/compare.h"
-#include "render/accelerate.h"
 #include "render/gpu_render.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -66,8 +66,7 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
                                                ? std::filesystem::path(file)
                                                : source_dir() / file;
         Scene scene = load_scene(path);
-        scene.image.width = config.width, scene.image.height = config.height;
-        build_acceleration(scene);
+        prepare_scene(scene, {.width = config.width, .height = config.height});
         std::vector<Row> rows;
         Image cpu;
         for (int threads : {1, 2})

@@ -7,7 +7,7 @@
 
 #include "core/source_dir.h"
 #include "image/compare.h"
-#include "render/accelerate.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -18,7 +18,7 @@ const char* const kScenes[] = {"soft_shadows", "depth_of_field",    "motion_blur
                                "glossy",       "ambient_occlusion", "indirect"};
 
 Image8 render_with(Scene& scene, int spp, std::uint64_t seed, double* ms) {
-    scene.sampling.samples_per_pixel = spp;
+    scene.sampling.samples_per_pixel = spp;  // the scene is prepared: only its features change
     scene.sampling.seed = seed;
     scene.update_features();
     const auto start = std::chrono::steady_clock::now();
@@ -50,8 +50,7 @@ SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
     for (const char* name : kScenes) {
         Scene scene = load_scene(source_dir() / "stages" / "10-sampling" / "scenes" /
                                  (std::string(name) + ".json"));
-        scene.image = ImageSize{width, height};
-        build_acceleration(scene);
+        prepare_scene(scene, {.width = width, .height = height});
         const std::uint64_t seed = scene.sampling.seed;
         // Another seed than the series', so the reference's noise is independent of theirs.
         const Image8 reference = render_with(scene, reference_spp, seed + 1000, nullptr);

@@ -1,0 +1,40 @@
+#include "render/prepare.h"
+
+#include "camera/camera.h"
+#include "render/oiio_textures.h"
+
+namespace rt {
+namespace {
+
+void apply_overrides(Scene& scene, const SceneOverrides& o) {
+    if (o.width > 0) scene.image.width = o.width;
+    if (o.height > 0) scene.image.height = o.height;
+    if (o.yaw_degrees != 0) turn_camera(scene.camera, o.yaw_degrees);
+    if (o.accelerator) scene.accelerator = *o.accelerator;
+    if (o.texture_lookup) scene.texture_lookup = *o.texture_lookup;
+    if (o.shadows) scene.shadows = *o.shadows;
+    if (o.max_depth && *o.max_depth >= 0) scene.max_depth = *o.max_depth;
+    if (o.samples_per_pixel && *o.samples_per_pixel > 0)
+        scene.sampling.samples_per_pixel = *o.samples_per_pixel;
+    if (o.seed) scene.sampling.seed = *o.seed;
+}
+
+}  // namespace
+
+void load_texture_system(Scene& scene) {
+    // OpenImageIO's TextureSystem (and the plug-in) are loaded only when asked for, once.
+    const TextureLookup lookup = scene.texture_lookup;
+    if ((lookup == TextureLookup::Oiio || lookup == TextureLookup::OiioAniso) &&
+        !scene.oiio_textures)
+        use_oiio_textures(scene, lookup == TextureLookup::OiioAniso);
+}
+
+AccelerationReport prepare_scene(Scene& scene, const SceneOverrides& overrides,
+                                 const BvhBuildOptions& bvh_options) {
+    apply_overrides(scene, overrides);
+    load_texture_system(scene);
+    scene.update_features();
+    return build_acceleration(scene, bvh_options);
+}
+
+}  // namespace rt
