@@ -1,4 +1,4 @@
-#include "test_output.h"
+#include "grading/test_output.h"
 
 #include <algorithm>
 #include <regex>

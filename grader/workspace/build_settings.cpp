@@ -1,4 +1,4 @@
-#include "build_settings.h"
+#include "workspace/build_settings.h"
 
 namespace rt::grader {
 

@@ -1,4 +1,4 @@
-#include "workspace.h"
+#include "workspace/workspace.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -15,11 +15,11 @@
 #include <cstring>
 #include <sstream>
 
-#include "build_settings.h"
-#include "object_check.h"
-#include "release.h"
-#include "sandbox.h"
+#include "release/release.h"
+#include "sandbox/sandbox.h"
 #include "util.h"
+#include "workspace/build_settings.h"
+#include "workspace/object_check.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "grading/report.h"
 
 #include <nlohmann/json.hpp>
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "grade.h"
-#include "intake.h"
-#include "report.h"
-#include "sandbox.h"
-#include "workspace.h"
+#include "grading/grade.h"
+#include "grading/intake.h"
+#include "grading/report.h"
+#include "sandbox/sandbox.h"
+#include "workspace/workspace.h"
 
 namespace rt::grader {
 

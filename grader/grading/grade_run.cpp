@@ -12,10 +12,10 @@
 #include <thread>
 
 #include "core/parallel_for.h"
-#include "grading.h"
-#include "test_output.h"
+#include "grading/grading.h"
+#include "grading/test_output.h"
+#include "grading/verdict_channel.h"
 #include "util.h"
-#include "verdict_channel.h"
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,6 @@
-#include "sandbox.h"
-#include "confine.h"
-#include "jail.h"
+#include "sandbox/sandbox.h"
+#include "sandbox/confine.h"
+#include "sandbox/jail.h"
 
 #include <dirent.h>
 #include <fcntl.h>

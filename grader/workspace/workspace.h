@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "grade.h"
+#include "grading/grade.h"
 #include "image/image.h"
 
 namespace rt::grader {

@@ -1,4 +1,4 @@
-#include "intake.h"
+#include "grading/intake.h"
 
 #include <algorithm>
 #include <regex>

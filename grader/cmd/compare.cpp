@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "grade.h"
+#include "grading/grade.h"
 #include "util.h"
 
 namespace fs = std::filesystem;

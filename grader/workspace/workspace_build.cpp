@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "grade.h"
-#include "sandbox.h"
+#include "grading/grade.h"
+#include "sandbox/sandbox.h"
 #include "util.h"
-#include "workspace.h"
+#include "workspace/workspace.h"
 
 namespace fs = std::filesystem;
 

@@ -1,10 +1,10 @@
-#include "object_check.h"
+#include "workspace/object_check.h"
 
 #include <cstring>
 #include <sstream>
 
 #include "util.h"
-#include "workspace.h"
+#include "workspace/workspace.h"
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,6 @@
 // `rt-grade SUBMISSION`: the driver. grade_submission runs the phases of a grading in order
 // (grading.h); the build and run phases are in grade_build.cpp and grade_run.cpp.
-#include "grade.h"
+#include "grading/grade.h"
 
 #include <unistd.h>
 
@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "grading.h"
+#include "grading/grading.h"
 #include "util.h"
 
 namespace fs = std::filesystem;

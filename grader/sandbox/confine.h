@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 namespace rt::grader {
 

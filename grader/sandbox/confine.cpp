@@ -1,8 +1,8 @@
 // Landlock and seccomp for a sandboxed child without a jail (confine.h), applied in the child
 // after fork and the uid drop, just before exec; and the probes of what the kernel permits
 // (namespaces, Landlock, seccomp) with the report's text for each isolation (sandbox.h).
-#include "confine.h"
-#include "jail.h"
+#include "sandbox/confine.h"
+#include "sandbox/jail.h"
 
 #include <fcntl.h>
 #include <linux/landlock.h>

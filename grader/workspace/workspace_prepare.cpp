@@ -8,12 +8,12 @@
 #include <chrono>
 #include <sstream>
 
-#include "build_settings.h"
-#include "object_check.h"
-#include "release.h"
-#include "sandbox.h"
+#include "release/release.h"
+#include "sandbox/sandbox.h"
 #include "util.h"
-#include "workspace.h"
+#include "workspace/build_settings.h"
+#include "workspace/object_check.h"
+#include "workspace/workspace.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

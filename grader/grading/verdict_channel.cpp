@@ -1,4 +1,4 @@
-#include "verdict_channel.h"
+#include "grading/verdict_channel.h"
 
 #include <fcntl.h>
 #include <sys/random.h>

@@ -1,5 +1,5 @@
 // Solution markers (BEGIN SOLUTION / STUB / END SOLUTION): pure text processing, no files.
-#include "release.h"
+#include "release/release.h"
 #include "util.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "grade.h"
+#include "grading/grade.h"
 
 namespace rt::grader {
 

@@ -1,4 +1,4 @@
-#include "perceptual.h"
+#include "grading/perceptual.h"
 
 #include <cmath>
 #include <vector>

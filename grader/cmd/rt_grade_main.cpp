@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "core/source_dir.h"
-#include "grade.h"
-#include "release.h"
+#include "grading/grade.h"
+#include "release/release.h"
 
 namespace {
 

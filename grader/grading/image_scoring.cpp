@@ -2,10 +2,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "grade.h"
+#include "grading/grade.h"
+#include "grading/perceptual.h"
 #include "image/compare.h"
 #include "image/image.h"
-#include "perceptual.h"
 namespace fs = std::filesystem;
 
 namespace rt::grader {

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 namespace rt::grader {
 

@@ -6,7 +6,7 @@
 #include <mutex>
 #include <thread>
 
-#include "grade.h"
+#include "grading/grade.h"
 #include "util.h"
 
 namespace fs = std::filesystem;

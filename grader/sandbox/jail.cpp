@@ -1,6 +1,6 @@
 // The jail of a sandboxed child: fresh namespaces, an empty tmpfs root holding only what the
 // run names (docs/grading.md, "What the sandbox guarantees"). Runs in the child, after fork.
-#include "jail.h"
+#include "sandbox/jail.h"
 
 #include <fcntl.h>
 #include <sched.h>

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <set>
 
-#include "grading.h"
-#include "object_check.h"
-#include "test_output.h"
+#include "grading/grading.h"
+#include "grading/test_output.h"
 #include "util.h"
+#include "workspace/object_check.h"
 
 namespace fs = std::filesystem;
 

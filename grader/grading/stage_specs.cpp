@@ -1,7 +1,7 @@
 // What the grader adds to the course manifest (course/manifest.h).
 #include <filesystem>
 
-#include "grade.h"
+#include "grading/grade.h"
 
 namespace rt::grader {
 

@@ -1,6 +1,6 @@
 // `rt-grade release`: writes a starter tree from the course tree (docs/release.md). The
 // marker logic it applies to each student file is in markers.cpp.
-#include "release.h"
+#include "release/release.h"
 
 #include "course/manifest.h"
 
