@@ -1,4 +1,6 @@
 // `rt-grade batch` (many submissions, one CSV) and `rt-grade package` (the Gradescope zip).
+#include "cmd/batch.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -6,8 +8,8 @@
 #include <mutex>
 #include <thread>
 
-#include "grading/grade.h"
 #include "util.h"
+#include "workspace/workspace_prepare.h"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,7 @@
 // `rt-grade compare`: the grader's image scoring outside a grading run, for calibration
 // (grader/tests/calibrate_flags.sh renders with the reference built with other flags).
+#include "cmd/compare.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -7,7 +9,9 @@
 #include <cstdio>
 #include <thread>
 
-#include "grading/grade.h"
+#include "course/manifest.h"
+#include "grading/image_scoring.h"
+#include "image/image.h"
 #include "util.h"
 
 namespace fs = std::filesystem;

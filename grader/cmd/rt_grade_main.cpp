@@ -1,5 +1,5 @@
 // rt-grade: the instructor's tool. Trusted code only -- it never links or loads student code;
-// submissions are built and run in sandboxed child processes (grade.h, sandbox.h).
+// submissions are built and run in sandboxed child processes (grading/grade.h, sandbox/sandbox.h).
 #include <CLI/CLI.hpp>
 
 #include <sys/prctl.h>
@@ -10,9 +10,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "cmd/batch.h"
+#include "cmd/compare.h"
 #include "core/source_dir.h"
 #include "grading/grade.h"
 #include "release/release.h"
+#include "workspace/workspace_prepare.h"
 
 namespace {
 

@@ -18,36 +18,6 @@ namespace rt::grader {
 
 std::atomic<bool> g_interrupted{false};
 
-fs::path trusted_dir(const fs::path& path) {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-    fs::create_directories(path);
-    fs::permissions(path, fs::perms::owner_all);
-    return path;
-}
-
-// Handed to the child's uid by the sandbox; its parents allow passing through (0711) but not
-// listing, for the uid-drop mode without a jail.
-fs::path child_dir(const fs::path& path) {
-    return trusted_dir(path);
-}
-
-void strip_workspace_roots(const Grading& g, std::string& text) {
-    // A GPU stage's graded GLSL is named as the student knows it: stages/NN-name/file.glsl.
-    for (const auto& [number, dir] : g.glsl_dirs)
-        for (const auto& s : g.graded) {
-            if (s.number != number) continue;
-            const std::string from = dir.string() + "/", to = s.folder + "/";
-            for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p))
-                text.replace(p, from.size(), to), p += to.size();
-        }
-    for (const auto& root :
-         {g.w.src.string() + "/", g.w.build.string() + "/", g.scratch.string() + "/"}) {
-        std::size_t p;
-        while ((p = text.find(root)) != std::string::npos) text.erase(p, root.size());
-    }
-}
-
 Report Grading::to_report() const {
     Report r;
     r.isolation = describe(isolation);

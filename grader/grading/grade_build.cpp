@@ -5,9 +5,11 @@
 #include <set>
 
 #include "grading/grading.h"
+#include "grading/stage_specs.h"
 #include "grading/test_output.h"
 #include "util.h"
 #include "workspace/object_check.h"
+#include "workspace/workspace_build.h"
 
 namespace fs = std::filesystem;
 
@@ -121,7 +123,7 @@ void link_stages(Grading& g, std::map<std::string, fs::path>& student_objects,
         const fs::path bin = g.scratch / ("stage-" + two_digits(s.number)) / "bin";
         std::string link_log;
         if (!link_stage(g.w, g.plan, objects, targets, bin, link_log)) {
-            strip_workspace_roots(g, link_log);
+            strip_workspace_roots(g.w, g.scratch, g.glsl_dirs, g.graded, link_log);
             build_errors[s.number] +=
                 "Linking your files failed (a function of the stage's API "
                 "missing or defined twice?):\n\n" +

@@ -13,6 +13,8 @@
 
 #include "core/parallel_for.h"
 #include "grading/grading.h"
+#include "grading/image_scoring.h"
+#include "grading/stage_specs.h"
 #include "grading/test_output.h"
 #include "grading/verdict_channel.h"
 #include "util.h"
@@ -94,7 +96,7 @@ class Runner {
             run_unit_test(bin_it->second, task, dir, out);
         else
             score_scene(bin_it->second, task, dir, out);
-        strip_workspace_roots(g_, out.output);
+        strip_workspace_roots(g_.w, g_.scratch, g_.glsl_dirs, g_.graded, out.output);
         for (const auto& hint : handout_hints(out.output))
             out.output += "Read the handout: " + hint + "\n";
     }

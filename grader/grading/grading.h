@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "course/manifest.h"
 #include "grading/grade.h"
 #include "grading/intake.h"
 #include "grading/report.h"
@@ -68,11 +69,5 @@ struct Grading {
 // The phases that live in files of their own.
 void build_stages(Grading& g);          // grade_build.cpp: compile, check, link per stage
 void run_tests_and_scenes(Grading& g);  // grade_run.cpp: every task in its own sandbox
-
-// Folders for children's runs (grade.cpp).
-std::filesystem::path trusted_dir(const std::filesystem::path& path);  // 0700, fresh
-std::filesystem::path child_dir(const std::filesystem::path& path);    // handed to the child
-// Workspace paths read as the student's tree: stages/..., framework/...
-void strip_workspace_roots(const Grading& g, std::string& text);
 
 }  // namespace rt::grader

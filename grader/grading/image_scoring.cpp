@@ -1,11 +1,10 @@
 // The grader's image scoring (docs/grading.md, "Image scoring") and how it reads a render.
+#include "grading/image_scoring.h"
+
 #include <cmath>
 #include <cstdio>
 
-#include "grading/grade.h"
 #include "grading/perceptual.h"
-#include "image/compare.h"
-#include "image/image.h"
 namespace fs = std::filesystem;
 
 namespace rt::grader {

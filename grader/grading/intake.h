@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "course/manifest.h"
 #include "grading/grade.h"
 
 namespace rt::grader {

@@ -1,7 +1,7 @@
 // What the grader adds to the course manifest (course/manifest.h).
-#include <filesystem>
+#include "grading/stage_specs.h"
 
-#include "grading/grade.h"
+#include <filesystem>
 
 namespace rt::grader {
 

@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "util.h"
-#include "workspace/workspace.h"
 
 namespace fs = std::filesystem;
 

@@ -15,11 +15,7 @@
 #include <cstring>
 #include <sstream>
 
-#include "release/release.h"
-#include "sandbox/sandbox.h"
 #include "util.h"
-#include "workspace/build_settings.h"
-#include "workspace/object_check.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -81,6 +77,38 @@ BuildPlan load_build_plan(const Workspace& w) {
     std::error_code ec;
     plan.has_reference = fs::exists(w.priv / "bin" / "rt", ec);
     return plan;
+}
+
+fs::path trusted_dir(const fs::path& path) {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+    fs::create_directories(path);
+    fs::permissions(path, fs::perms::owner_all);
+    return path;
+}
+
+// Handed to the child's uid by the sandbox; its parents allow passing through (0711) but not
+// listing, for the uid-drop mode without a jail.
+fs::path child_dir(const fs::path& path) {
+    return trusted_dir(path);
+}
+
+void strip_workspace_roots(const Workspace& w, const fs::path& scratch,
+                           const std::map<int, fs::path>& glsl_dirs,
+                           const std::vector<StageSpec>& graded, std::string& text) {
+    // A GPU stage's graded GLSL is named as the student knows it: stages/NN-name/file.glsl.
+    for (const auto& [number, dir] : glsl_dirs)
+        for (const auto& s : graded) {
+            if (s.number != number) continue;
+            const std::string from = dir.string() + "/", to = s.folder + "/";
+            for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p))
+                text.replace(p, from.size(), to), p += to.size();
+        }
+    for (const auto& root :
+         {w.src.string() + "/", w.build.string() + "/", scratch.string() + "/"}) {
+        std::size_t p;
+        while ((p = text.find(root)) != std::string::npos) text.erase(p, root.size());
+    }
 }
 
 WorkspaceLock::WorkspaceLock(const fs::path& cache) {

@@ -6,7 +6,8 @@
 //   CACHE/workspace/build   its build (framework, tests, hidden tests, all with stubs)
 //   CACHE/private/          0700: references, pristine files, objects, commands, secrets
 //
-// A grading then (docs/grading.md, "How a submission is built"):
+// A grading then (docs/grading.md, "How a submission is built"; workspace_build.h and
+// object_check.h):
 //   1. compiles each student file in the jail (`compile_in_jail`): a non-root sandbox uid that
 //      sees the public framework and stage folders and writes one object file;
 //   2. checks the object and keeps only the stage's API global (`check_and_localize`), so
@@ -18,11 +19,11 @@
 
 #include <filesystem>
 #include <map>
-#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "course/manifest.h"
 #include "grading/grade.h"
 #include "image/image.h"
 
@@ -67,29 +68,6 @@ BuildPlan load_build_plan(const Workspace& w);
 // Folders of the workspace tree a child never sees (covered by an empty tmpfs in the jail).
 std::vector<std::filesystem::path> hidden_dirs(const Workspace& w);
 
-// Compiles `text` as the student file `key` into `object`. Returns false with the compiler's
-// output (workspace paths shortened) in `log`.
-bool compile_in_jail(const Workspace& w, const BuildPlan& plan, const std::string& key,
-                     const std::string& text, const std::filesystem::path& work,
-                     const std::filesystem::path& object, std::string& log);
-
-// Refuses what must not reach the link (main, test or framework symbols, code that runs before
-// main), then writes `out` with every global symbol but the API localized. Returns the problems,
-// one per line ("" when the object is fine).
-std::string check_and_localize(const std::filesystem::path& object,
-                               const std::set<std::string>& api, const BuildPlan& plan,
-                               const std::filesystem::path& out);
-
-// Archives `objects` and links `targets` into `bin`. Returns false with the linker's output.
-// After the workspace build: each judge copied where children never look (every grading copies
-// it), and each graded binary's expected test list, from the instructor's binary.
-void keep_test_binaries(const Workspace& w, const std::vector<std::string>& targets);
-
-bool link_stage(const Workspace& w, const BuildPlan& plan,
-                const std::vector<std::filesystem::path>& objects,
-                const std::vector<std::string>& targets, const std::filesystem::path& bin,
-                std::string& log);
-
 // The name of student file `key`'s objects in the private folder.
 std::string object_name(const std::string& key);
 
@@ -99,5 +77,15 @@ std::filesystem::path stub_object(const Workspace& w, const std::string& key);
 
 // Hash of an 8-bit image's size and pixels (for "is this a shipped reference?").
 std::string pixel_hash(const Image8& image);
+
+// Folders for children's runs, in a grading's scratch folder.
+std::filesystem::path trusted_dir(const std::filesystem::path& path);  // 0700, fresh
+std::filesystem::path child_dir(const std::filesystem::path& path);    // handed to the child
+// Workspace paths in `text` read as the student's tree: stages/..., framework/... `scratch` is
+// the grading's folder; `glsl_dirs` (a GPU stage -> the folder of its graded GLSL) read as the
+// folders of the `graded` stages.
+void strip_workspace_roots(const Workspace& w, const std::filesystem::path& scratch,
+                           const std::map<int, std::filesystem::path>& glsl_dirs,
+                           const std::vector<StageSpec>& graded, std::string& text);
 
 }  // namespace rt::grader

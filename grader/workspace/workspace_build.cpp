@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "grading/grade.h"
+#include "grading/stage_specs.h"
 #include "sandbox/sandbox.h"
 #include "util.h"
-#include "workspace/workspace.h"
+#include "workspace/workspace_build.h"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,7 @@
 // `rt-grade --prepare` (and the first grading after a change): the workspace built from the
 // instructor's tree as a list of named steps (workspace.h says what it holds).
+#include "workspace/workspace_prepare.h"
+
 #include <sys/random.h>
 
 #include <nlohmann/json.hpp>
@@ -8,12 +10,14 @@
 #include <chrono>
 #include <sstream>
 
+#include "course/manifest.h"
+#include "grading/stage_specs.h"
 #include "release/release.h"
-#include "sandbox/sandbox.h"
 #include "util.h"
 #include "workspace/build_settings.h"
 #include "workspace/object_check.h"
 #include "workspace/workspace.h"
+#include "workspace/workspace_build.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
