@@ -1,5 +1,5 @@
 # A compiler cache shared by the builds of one CI run (or of one student's machine): the main
-# build, the grader's workspace (grader/workspace.cpp), the starter tree and its workspace
+# build, the grader's workspace (grader/workspace/), the starter tree and its workspace
 # (grader/tests/check_starter_tree.sh) compile the same framework and tests from copies of the
 # same files in different folders. ccache's base_dir turns each tree's absolute paths into paths
 # relative to the build folder, so a copy laid out as SOURCE/ and SOURCE/build (every tree here

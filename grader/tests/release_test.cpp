@@ -15,7 +15,7 @@
 
 #include <unistd.h>
 
-#include "release.h"
+#include "release/release.h"
 
 namespace fs = std::filesystem;
 using rt::grader::Marker;

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "report.h"
+#include "grading/report.h"
 
 namespace fs = std::filesystem;
 

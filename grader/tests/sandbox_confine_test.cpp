@@ -13,8 +13,8 @@
 #include <fstream>
 #include <string>
 
-#include "confine.h"
-#include "sandbox.h"
+#include "sandbox/confine.h"
+#include "sandbox/sandbox.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
 // The sandbox's two time limits, each on the kind of child it exists for: CPU time stops a
-// child that works too long, the wall clock one that waits (grade_run.cpp sets the wall limit
-// to a multiple of the CPU limit, so a loaded machine never times out honest work).
+// child that works too long, the wall clock one that waits (grading/grade_run.cpp sets the wall
+// limit to a multiple of the CPU limit, so a loaded machine never times out honest work).
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <filesystem>
 
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "test_output.h"
+#include "grading/test_output.h"
 
 namespace rt::grader {
 namespace {

@@ -16,7 +16,7 @@
 
 #include "core/not_implemented.h"
 #include "gl/shader_source.h"
-#include "release.h"
+#include "release/release.h"
 #include "render/accelerate.h"
 #include "render/gpu_render.h"
 #include "render/shadertoy_export.h"

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "release.h"
+#include "release/release.h"
 #include "testing/stage_test.h"
 
 namespace rt::gpu_test {
@@ -47,7 +47,7 @@ class StudentCopy {
     std::filesystem::path dir_;
 };
 
-// The release tool's own stripping (grader/markers.cpp): solutions out, stubs un-commented.
+// The release tool's own stripping (grader/release/markers.cpp): solutions out, stubs un-commented.
 inline std::string strip_solutions(const std::string& text) {
     return grader::process_markers(text, grader::RegionMode::Strip).text;
 }

@@ -1,0 +1,174 @@
+// `rt-grade batch` (many submissions, one CSV) and `rt-grade package` (the Gradescope zip).
+#include "cmd/batch.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "util.h"
+#include "workspace/workspace_prepare.h"
+
+namespace fs = std::filesystem;
+
+namespace rt::grader {
+
+int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out, int jobs,
+              std::ostream& log) {
+    std::vector<fs::path> submissions;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.is_directory() || e.path().extension() == ".zip") submissions.push_back(e.path());
+    std::sort(submissions.begin(), submissions.end());
+    jobs = std::max(1, std::min<int>(jobs, int(submissions.size())));
+    // One workspace serves every job: gradings only read it (each links in a scratch folder).
+    if (!prepare_workspace(base, log)) return 1;
+    fs::create_directories(out);
+    std::vector<std::string> rows(submissions.size());
+    std::vector<int> stage_numbers;
+    std::mutex mutex;
+    std::size_t next = 0;
+    const int per_job_tests = std::max(1, int(std::thread::hardware_concurrency()) / jobs);
+    auto worker = [&]() {
+        for (;;) {
+            std::size_t i;
+            {
+                std::lock_guard lock(mutex);
+                if (g_interrupted || next >= submissions.size()) return;
+                i = next++;
+            }
+            std::string name = submissions[i].filename().string();
+            if (name.ends_with(".zip")) name.resize(name.size() - 4);
+            name = clean_output(name);
+            GradeOptions o = base;
+            o.submission = submissions[i];
+            o.results = out / name / "results.json";
+            o.html = out / name / "report.html";
+            o.quiet = true;
+            o.jobs = per_job_tests;
+            std::string row = "\"" + name + "\",";
+            try {
+                // One broken submission never stops the batch: anything thrown is its row's error.
+                const GradeSummary s = grade_submission(o, log);
+                char cell[64];
+                std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
+                row += cell;
+                for (double v : s.stage_scores) {
+                    std::snprintf(cell, sizeof cell, ",%g", v);
+                    row += cell;
+                }
+                row += s.build_failed ? ",build failed" : ",ok";
+                std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
+                row += cell;
+                std::lock_guard lock(mutex);
+                if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
+                log << name << ": " << s.score << " / " << s.max_score << "\n";
+            } catch (const std::exception& e) {
+                row += "0,0,grader error: " + clean_output(e.what());
+                std::lock_guard lock(mutex);
+                log << name << ": grader error: " << e.what() << "\n";
+            }
+            std::lock_guard lock(mutex);
+            rows[i] = row;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+    std::string csv = "submission,score,max_score";
+    char cell[32];
+    for (int n : stage_numbers) {
+        std::snprintf(cell, sizeof cell, ",stage%02d", n);
+        csv += cell;
+    }
+    csv += ",status,seconds\n";
+    for (const auto& r : rows)
+        if (!r.empty()) csv += r + "\n";
+    write_atomically(out / "scores.csv", csv);
+    log << "scores: " << (out / "scores.csv").string() << "\n";
+    return 0;
+}
+
+int run_package(const fs::path& source, const fs::path& out, const std::vector<int>& stages,
+                std::ostream& log) {
+    char tmpl[] = "/tmp/rt-grade-package-XXXXXX";
+    if (!mkdtemp(tmpl)) return 1;
+    const fs::path stage = tmpl;
+    // The whole instructor tree (hidden tests and references included: the zip stays with the
+    // course staff), without build trees.
+    const fs::path src = stage / "source";
+    fs::create_directories(src);  // a top-level file may come before any folder
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(source, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (it.depth() == 0 &&
+            (name == ".git" || name.starts_with("build") || name == "gallery" || name == "out")) {
+            it.disable_recursion_pending();
+            continue;
+        }
+        const fs::path rel = it->path().lexically_relative(source);
+        if (it->is_directory())
+            fs::create_directories(src / rel);
+        else if (it->is_regular_file())
+            fs::copy_file(it->path(), src / rel);
+    }
+    // RT_AUTOGRADER_ROOT (default /autograder) lets the tests run both scripts in a folder that
+    // stands in for Gradescope's layout (grader/tests/adversarial.sh, case package_run).
+    write_text(stage / "setup.sh", R"SH(#!/usr/bin/env bash
+# Gradescope setup (Ubuntu base image, run once as root when the autograder is built).
+set -euo pipefail
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source"
+bash scripts/install-deps.sh
+# Ubuntu 22.04 ships CMake 3.22; the project needs 3.25.
+version=$(cmake --version 2>/dev/null | head -n1 | awk '{print $3}')
+if [ -z "$version" ] || [ "$(printf '%s\n' 3.25 "$version" | sort -V | head -n1)" != 3.25 ]; then
+  apt-get install -y -qq python3-pip >/dev/null
+  pip3 install -q 'cmake>=3.25,<4'
+  hash -r
+fi
+# 768 MB of memory: one compiler at a time.
+export CMAKE_BUILD_PARALLEL_LEVEL=1 RT_GRADE_BUILD_JOBS=1
+cmake --preset release -DRT_WERROR=OFF
+cmake --build build --target rt-grade
+build/bin/rt-grade prepare --source "$root/source" --cache "$root/rt-grade-cache"
+# Student code runs as nobody: the instructor tree (solutions, hidden tests, references) and
+# the private part of the cache stay unreadable to it even without namespaces.
+chmod 700 "$root/source"
+)SH");
+    // The graded stages, as rt-grade's --stages reads them ("" grades every stage).
+    std::string stage_list;
+    for (const int n : stages) stage_list += (stage_list.empty() ? "" : ",") + std::to_string(n);
+    write_text(stage / "run_autograder", R"(#!/usr/bin/env bash
+# Gradescope entry point: grades /autograder/submission; results.json is always written.
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source" || exit 1
+mkdir -p "$root/results"
+export RT_GRADE_BUILD_JOBS=1
+stages=")" + stage_list + R"("  # rt-grade package --stages; empty: every stage
+exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
+  ${stages:+--stages "$stages"} --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
+  --results "$root/results/results.json" --html "$root/results/report.html"
+)");
+    fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read |
+                                            fs::perms::group_exec | fs::perms::others_read |
+                                            fs::perms::others_exec);
+    fs::permissions(stage / "run_autograder", fs::status(stage / "setup.sh").permissions());
+    const fs::path zip = fs::absolute(out);
+    fs::remove(zip, ec);
+    std::string output;
+    const int code = run_trusted("cd " + shell_quote(stage.string()) + " && zip -q -r -X " +
+                                     shell_quote(zip.string()) + " setup.sh run_autograder source",
+                                 &output);
+    fs::remove_all(stage, ec);
+    if (code != 0) {
+        log << "rt-grade: error: zip failed (is the zip package installed?)\n" << output;
+        return 1;
+    }
+    log << "autograder: " << zip.string() << " (upload it as is; setup.sh builds on Gradescope)\n";
+    return 0;
+}
+
+}  // namespace rt::grader

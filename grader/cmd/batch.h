@@ -1,0 +1,21 @@
+// `rt-grade batch` and `rt-grade package` (batch.cpp).
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
+#include "grading/grade.h"
+
+namespace rt::grader {
+
+// Grades every submission (folder or .zip) in `dir`, `jobs` at a time, into `out` (one CSV).
+int run_batch(const GradeOptions& base, const std::filesystem::path& dir,
+              const std::filesystem::path& out, int jobs, std::ostream& log);
+
+// The Gradescope zip. `stages` (empty: every stage with a grading.json) are the stages its
+// run_autograder grades: one assignment per stage or per group of stages.
+int run_package(const std::filesystem::path& source, const std::filesystem::path& out,
+                const std::vector<int>& stages, std::ostream& log);
+
+}  // namespace rt::grader

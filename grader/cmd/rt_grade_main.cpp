@@ -1,0 +1,213 @@
+// rt-grade: the instructor's tool. Trusted code only -- it never links or loads student code;
+// submissions are built and run in sandboxed child processes (grading/grade.h, sandbox/sandbox.h).
+#include <CLI/CLI.hpp>
+
+#include <sys/prctl.h>
+
+#include <charconv>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+#include "cmd/batch.h"
+#include "cmd/compare.h"
+#include "core/source_dir.h"
+#include "grading/grade.h"
+#include "release/release.h"
+#include "workspace/workspace_prepare.h"
+
+namespace {
+
+void on_signal(int) {
+    rt::grader::g_interrupted = true;
+}
+
+// "1,2,10" -> {1, 2, 10}; false for anything else (the caller says what was expected).
+bool parse_stages(const std::string& list, std::vector<int>& stages) {
+    std::stringstream s(list);
+    std::string item;
+    while (std::getline(s, item, ',')) {
+        if (item.empty()) continue;
+        int n = 0;
+        const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), n);
+        if (ec != std::errc() || end != item.data() + item.size() || n < 1 || n > 99) return false;
+        stages.push_back(n);
+    }
+    return true;
+}
+
+namespace fs = std::filesystem;
+
+// What the command line says besides the subcommands' own options.
+struct GradeArgs {
+    rt::grader::GradeOptions grade;
+    std::string submission, stages, cache;
+};
+
+// The options of grading one submission (they also work after a subcommand's name).
+void add_grade_options(CLI::App& app, GradeArgs& a) {
+    rt::grader::GradeOptions& grade = a.grade;
+    grade.source = rt::source_dir();
+    app.add_option("submission", a.submission, "folder or .zip to grade ('.' : the working tree)");
+    app.add_option("--stages", a.stages,
+                   "comma-separated stage numbers (default: every graded stage; for '.', the "
+                   "stages you have started)");
+    app.add_option("--results", grade.results, "write Gradescope's results.json here");
+    app.add_option("--html", grade.html,
+                   "write the HTML report here (default for '.': report.html)");
+    app.add_option("--source", grade.source, "the instructor's tree (default: this tree)")
+        ->check(CLI::ExistingDirectory);
+    if (const char* c = std::getenv("RT_GRADE_CACHE")) a.cache = c;
+    app.add_option("--cache", a.cache,
+                   "grading workspaces (default: $RT_GRADE_CACHE, else SOURCE/build/grader-cache)");
+    app.add_option("--jobs", grade.jobs, "test processes at a time (default: all cores)");
+    app.add_flag("--quiet", grade.quiet, "no terminal summary");
+    app.add_option(
+        "--time-limit", grade.time_limit,
+        "seconds for every test and render, overriding grading.json (tests of the grader)");
+    app.add_flag("--reveal-hidden", grade.reveal_hidden, "summary also lists non-visible tests");
+}
+
+struct ReleaseArgs {
+    rt::grader::ReleaseOptions release;
+    std::string out, source = rt::source_dir().string();
+};
+
+CLI::App* add_release_command(CLI::App& app, ReleaseArgs& a) {
+    rt::grader::ReleaseOptions& release = a.release;
+    CLI::App* release_cmd = app.add_subcommand(
+        "release",
+        "Write a student starter tree: the source tree with solutions replaced by stubs");
+    release_cmd->add_option("--out", a.out, "Directory to write the starter tree to")->required();
+    release_cmd
+        ->add_option("--source", a.source,
+                     "Course source tree (default: the tree rt-grade was built from)")
+        ->check(CLI::ExistingDirectory)
+        ->capture_default_str();
+    release_cmd
+        ->add_option("--solved-through", release.solved_through,
+                     "Stages 1..N keep their solutions (default 0: every stage stubbed)")
+        ->check(CLI::Range(0, 99))  // stage numbers are two digits
+        ->capture_default_str();
+    release_cmd->add_flag("--force", release.force, "Write into a non-empty --out directory");
+    release_cmd->add_flag(
+        "--include-untracked", release.include_untracked,
+        "Git checkout: also copy untracked files that .gitignore does not exclude");
+    return release_cmd;
+}
+
+struct BatchArgs {
+    std::string dir, out = "grades";
+    int jobs = 1;
+};
+
+CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
+    CLI::App* batch_cmd =
+        app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
+    batch_cmd->add_option("dir", a.dir, "folder of submissions")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    batch_cmd->add_option("--out", a.out, "where scores.csv and the reports go");
+    batch_cmd->add_option("--jobs", a.jobs, "submissions graded at a time")
+        ->check(CLI::Range(1, 64));
+    return batch_cmd;
+}
+
+CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare) {
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare",
+        "Score images with the grader's comparison (calibration): every graded scene "
+        "rendered by --renderer, or one --image as --scene NN-name/scene");
+    compare_cmd->add_option("--renderer", compare.renderer, "an rt binary (trusted build)");
+    compare_cmd->add_option("--threads", compare.threads, "render threads (default: all cores)");
+    compare_cmd->add_option("--image", compare.image, "an image: .exr linear, .png display values");
+    compare_cmd->add_option("--scene", compare.scene,
+                            "the graded scene the image is, NN-name/scene");
+    return compare_cmd;
+}
+
+// `rt-grade SUBMISSION`: the workspace, then the grading; self-grading (the tree rt-grade grades
+// from) takes the started stages and writes a report.
+int grade_one(rt::grader::GradeOptions& grade, const std::string& submission) {
+    grade.submission = submission;
+    std::error_code ec;
+    const bool self = fs::weakly_canonical(fs::absolute(submission), ec) ==
+                      fs::weakly_canonical(fs::absolute(grade.source), ec);
+    if (self) {
+        grade.started_only = grade.stages.empty();
+        if (grade.html.empty()) grade.html = "report.html";
+    }
+    if (!rt::grader::prepare_workspace(grade, std::cerr)) return 1;
+    rt::grader::grade_submission(grade, std::cout);
+    if (!grade.html.empty() && !grade.quiet)
+        std::cout << "Report: " << fs::absolute(grade.html).lexically_normal().string()
+                  << " (failures first; open it in a browser)\n";
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Not dumpable: a child running as the same user (no user namespace, no uid drop) cannot
+    // open /proc/<rt-grade>/fd to read another test's nonce pipe or result file.
+    prctl(PR_SET_DUMPABLE, 0);
+    CLI::App app{"rt-grade: grade submissions and release starter trees"};
+    app.footer(
+        "Grade one submission: rt-grade SUBMISSION [--stages 1,2] [--results results.json] "
+        "[--html report.html]   (SUBMISSION: a folder, a .zip, or . for this tree)");
+    GradeArgs args;
+    add_grade_options(app, args);
+    rt::grader::GradeOptions& grade = args.grade;
+    ReleaseArgs release;
+    CLI::App* release_cmd = add_release_command(app, release);
+    CLI::App* prepare_cmd = app.add_subcommand(
+        "prepare", "Build the grading workspace now (otherwise the first grading does it)");
+    int slots = 1;  // accepted for old scripts: one workspace now serves every job
+    prepare_cmd->add_option("--slots", slots, "ignored (one workspace serves every batch job)");
+    BatchArgs batch;
+    CLI::App* batch_cmd = add_batch_command(app, batch);
+    std::string package_out = "autograder.zip";
+    CLI::App* package_cmd = app.add_subcommand(
+        "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
+    package_cmd->add_option("--out", package_out, "the zip to write");
+    rt::grader::CompareRequest compare;
+    CLI::App* compare_cmd = add_compare_command(app, compare);
+    // Grading options (--stages, --source, ...) also work after a subcommand's name.
+    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
+    CLI11_PARSE(app, argc, argv);
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    grade.cache = args.cache;
+    if (!parse_stages(args.stages, grade.stages)) {
+        std::cerr << "rt-grade: error: --stages \"" << args.stages
+                  << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
+        return 2;
+    }
+
+    try {
+        if (*release_cmd) {
+            release.release.out = release.out;
+            release.release.source = release.source;
+            return rt::grader::run_release(release.release, std::cout, std::cerr);
+        }
+        if (*prepare_cmd) return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
+        if (*batch_cmd)
+            return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, std::cout);
+        if (*compare_cmd) {
+            compare.source = grade.source;
+            compare.stages = grade.stages;
+            return rt::grader::run_compare(compare, std::cout);
+        }
+        if (*package_cmd)
+            return rt::grader::run_package(grade.source, package_out, grade.stages, std::cout);
+        if (args.submission.empty()) {
+            std::cerr << app.help();
+            return 2;
+        }
+        return grade_one(grade, args.submission);
+    } catch (const std::exception& e) {
+        std::cerr << "rt-grade: error: " << e.what() << "\n";
+        return 1;
+    }
+}
