@@ -41,9 +41,9 @@ void rt_not_implemented(int stub) {
 }
 // The guard gl/shader_source.cpp puts on each while loop of a student file: llvmpipe ends a loop
 // silently after some tens of thousands of iterations and goes on with wrong values; this ends
-// it first (kLoopLimit, gl/shader_source.h) and reports the loop like a stub.
+// it first (kLoopLimit, framework/gpu/shader_constants.h) and reports the loop like a stub.
 bool rt_loop_guard(int iteration, int loop) {
-    if (iteration < 10000) return true;
+    if (iteration < kLoopLimit) return true;
     rt_not_implemented(loop);
     return false;
 }

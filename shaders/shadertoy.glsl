@@ -15,7 +15,7 @@ void rt_not_implemented(int stub) {
 }
 // compute_io.glsl's guard of a student's while loop.
 bool rt_loop_guard(int iteration, int loop) {
-    if (iteration < 10000) return true;
+    if (iteration < kLoopLimit) return true;
     rt_not_implemented(loop);
     return false;
 }

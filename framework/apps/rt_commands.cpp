@@ -119,11 +119,12 @@ CLI::App* add_view_command(CLI::App& app, ViewArgsForCli& view_args) {
 
 CLI::App* add_gl_info_command(CLI::App& app, GlInfoArgs& args) {
     auto* gl_cmd = app.add_subcommand("gl-info", "create an OpenGL context and describe it");
-    gl_cmd->add_flag("--window", args.window, "use a GLFW window instead of headless OSMesa");
     gl_cmd
         ->add_option("--gl", args.kind,
-                     "create the GPU stage's context instead and print its limits")
+                     "the context `rt render --gpu` would use: egl (headless, the default), "
+                     "osmesa (headless) or window (GLFW, needs a display)")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
+    gl_cmd->add_flag("--window", args.window, "the same as --gl window");
     return gl_cmd;
 }
 

@@ -32,7 +32,7 @@ struct RenderArgs {
     int max_depth = -1;          // >= 0: overrides the scene's
     int spp = 0;                 // > 0: overrides the scene's samples_per_pixel (stage 10)
     std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
-    bool gpu = false;        // stage 09: a compute shader renders it (render/gpu_render.h)
+    bool gpu = false;        // stage 09: a compute shader renders it (render/gpu/gpu_render.h)
     std::string gl = "egl";  // the context --gpu uses: egl, osmesa or window
     bool uber = false;       // --gpu with every feature compiled in
 };
@@ -65,7 +65,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgsForCli& view_args);
 
 struct GlInfoArgs {
     bool window = false;
-    std::string kind;
+    std::string kind = "egl";
 };
 CLI::App* add_gl_info_command(CLI::App& app, GlInfoArgs& args);
 

@@ -29,17 +29,16 @@
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
 #include "core/source_dir.h"
-#include "gl/headless_context.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
-#include "render/gpu_debug_pixel.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_debug_pixel.h"
+#include "render/gpu/gpu_render.h"
+#include "render/gpu/shadertoy_export.h"
 #include "render/prepare.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
-#include "render/shadertoy_export.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
 #ifdef RT_HAVE_VIEW
@@ -213,19 +212,6 @@ int run_gl_context_info(const std::string& kind) {
     return 0;
 }
 
-int run_gl_info(bool window) {
-    const GlInfo info = window ? query_window_gl() : query_headless_gl();
-    if (!info.ok) {
-        std::fprintf(stderr, "rt: error: %s\n", info.error.c_str());
-        return 1;
-    }
-    std::printf(
-        "%s context\n  vendor:   %s\n  renderer: %s\n  version:  %s (%d.%d)\n  GLSL:     %s\n",
-        window ? "GLFW window" : "OSMesa headless", info.vendor.c_str(), info.renderer.c_str(),
-        info.version.c_str(), info.major, info.minor, info.glsl_version.c_str());
-    return 0;
-}
-
 // Writes `text` to `file` through a temporary file beside it, so a failure never leaves half a
 // scene behind. A symbolic link keeps pointing at the rewritten file.
 void replace_file(const fs::path& file, const std::string& text) {
@@ -341,7 +327,7 @@ int main(int argc, char** argv) {
             return run_compare(compare.actual, compare.reference, compare.tolerance,
                                compare.neighbourhood, compare.block);
         if (*view_cmd) return run_view_command(view_args);
-        if (*gl_cmd) return gl.kind.empty() ? run_gl_info(gl.window) : run_gl_context_info(gl.kind);
+        if (*gl_cmd) return run_gl_context_info(gl.window ? "window" : gl.kind);
         if (*fmt_cmd) return run_fmt(fmt.files, fmt.check);
         if (*export_cmd)
             return run_export_shadertoy(

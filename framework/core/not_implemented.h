@@ -17,7 +17,7 @@ namespace rt {
 void report_not_implemented(const char* function, const char* file, int line, const char* handout,
                             std::atomic<bool>& reported);
 
-// A GPU loop of the student's that ran `limit` times in one invocation (gl/shader_source.h's
+// A GPU loop of the student's that ran `limit` times in one invocation (gpu/gl/shader_source.h's
 // guard): reported once per loop like a stub, and counted as one, so the tests fail.
 void report_endless_loop(const char* file, int line, int limit, std::atomic<bool>& reported);
 

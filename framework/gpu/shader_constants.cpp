@@ -95,8 +95,8 @@ std::string shader_prelude() {
                       named("kDebugMiss", kDebugMiss), named("kDebugShadow", kDebugShadow),
                       named("kDebugLocal", kDebugLocal), named("kDebugReflected", kDebugReflected),
                       named("kDebugRefracted", kDebugRefracted), named("kDebugPixel", kDebugPixel),
-                      named("kDebugSample", kDebugSample),
-                      named("kDebugCapacity", kDebugCapacity)}) +
+                      named("kDebugSample", kDebugSample), named("kDebugCapacity", kDebugCapacity),
+                      named("kLoopLimit", kLoopLimit)}) +
            bindings();
 }
 

@@ -1,5 +1,5 @@
 // Every number the C++ host and stage 09's GLSL share, defined once here: shader_prelude() writes
-// them as GLSL constants into every assembled shader, right after #version (gl/shader_source.cpp)
+// them as GLSL constants into every assembled shader, right after #version (gpu/gl/shader_source.cpp)
 // and at the top of a Shadertoy export, so the two sides cannot drift apart. What the enums of
 // scene/ already number (primitive kinds, render modes, texture kinds ...) is written from them.
 #pragma once
@@ -9,7 +9,7 @@
 namespace rt::gpu {
 
 // The scene_features uniform's bits (compute_io.glsl): what the scene uses, tested at run time by
-// the --uber shader (render/gpu_render.cpp's gpu_feature_bits sets them).
+// the --uber shader (render/gpu/gpu_render.cpp's gpu_feature_bits sets them).
 enum FeatureBit : int {
     kFeatureBvh = 1 << 0,
     kFeatureShadows = 1 << 1,
@@ -33,7 +33,7 @@ constexpr int kOutputBinding = 15;
 // Stage 10's uniform block SampledScene (scene_layout.glsl; gpu::sampled_block fills it).
 constexpr int kSampledSceneBinding = 0;
 
-// --debug-pixel's notes (debug_pixel.glsl, render/gpu_debug_pixel.cpp) and how many are kept.
+// --debug-pixel's notes (debug_pixel.glsl, render/gpu/gpu_debug_pixel.cpp) and how many are kept.
 enum DebugNote : int {
     kDebugValue =
         0,      // a student's rt_debug: where is its __LINE__, type float vec2 vec3 vec4 int bool
@@ -51,6 +51,12 @@ enum DebugNote : int {
     kDebugSample,  // where: the camera sample; value: its image point
 };
 constexpr int kDebugCapacity = 512;
+
+// Iterations of one student while loop, in one invocation, that the guard allows
+// (rt_loop_guard, compute_io.glsl). llvmpipe ends a loop after at most 65,535 iterations, fewer
+// when it is nested: the BVH traversal inside the tracer's loops was cut between 16,000 and
+// 30,000 (measured). A BVH traversal of this course's scenes takes a few hundred.
+constexpr int kLoopLimit = 10000;
 
 // The GLSL text of all of the above, and of the scene enums the shaders compare with.
 std::string shader_prelude();

@@ -31,7 +31,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options =
 int resolve_thread_count(int threads);
 
 // The last pass of two debug views over a value per pixel, shared by render() and render_gpu()
-// (render/gpu_render.h): hit distances (< 0: none) to grey, near white and far 20 % grey; BVH
+// (render/gpu/gpu_render.h): hit distances (< 0: none) to grey, near white and far 20 % grey; BVH
 // node visits to a heat ramp over 0 .. the image's most. Magenta (stub) pixels stay.
 void map_depth(const std::vector<Real>& depth, Image& image);
 void map_visits(const std::vector<Real>& visits, Image& image);

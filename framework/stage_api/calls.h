@@ -105,8 +105,8 @@
     X(Vec2, surface_texcoord, (const Scene& scene, const Hit& hit, const SurfacePoint& at), (scene, hit, at)) \
     X(Color, sample_pixel, (const Scene& scene, int x, int y, int sample, TraceObserver* observer), (scene, x, y, sample, observer))
 
-// Stage 09's: the framework functions that run the student's GLSL (render/gpu_render.h,
-// render/gpu_cases.h, render/shadertoy_run.h). A judge sends them to the worker too, so it links
+// Stage 09's: the framework functions that run the student's GLSL (render/gpu/gpu_render.h,
+// render/gpu/gpu_cases.h, render/gpu/shadertoy_run.h). A judge sends them to the worker too, so it links
 // no GPU renderer and runs no GLSL.
 #define RT_GPU_CALLS(X) \
     X(Image, render_gpu, (const Scene& scene, RenderMode mode, const GpuRenderOptions& options), (scene, mode, options)) \

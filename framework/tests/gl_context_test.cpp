@@ -1,27 +1,12 @@
 // The OpenGL contexts the GPU stage renders through (EGL, OSMesa / llvmpipe).
 #include <gtest/gtest.h>
 
-#include "gl/gl_context.h"
-#include "gl/headless_context.h"
+#include "gpu/gl/gl_context.h"
 
 namespace rt {
 namespace {
 
-TEST(GlContext, HeadlessCoreContextCanBeQueried) {
-    const GlInfo info = query_headless_gl();
-    ASSERT_TRUE(info.ok) << info.error;
-    EXPECT_GE(info.major * 10 + info.minor, 43) << "compute shaders need GL 4.3: " << info.version;
-    EXPECT_FALSE(info.renderer.empty());
-    EXPECT_NE(info.glsl_version.find('4'), std::string::npos) << info.glsl_version;
-}
-
-}  // namespace
-}  // namespace rt
-
-namespace rt {
-namespace {
-
-// The one context interface of the GPU stage (gl/gl_context.h): both headless kinds give a
+// The one context interface of the GPU stage (gpu/gl/gl_context.h): both headless kinds give a
 // current 4.3+ context with the 16 storage blocks the scene needs.
 TEST(GlContext, EglAndOsMesaHaveComputeAndTheLimitsTheShaderNeeds) {
     for (GlKind kind : {GlKind::Egl, GlKind::OsMesa}) {

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/source_dir.h"
-#include "gl/egl_context.h"
+#include "gpu/gl/egl_context.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
 

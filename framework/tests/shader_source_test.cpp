@@ -1,10 +1,10 @@
-// GLSL assembly on the host (gl/shader_source.h): includes expanded once each, #line numbers that
+// GLSL assembly on the host (gpu/gl/shader_source.h): includes expanded once each, #line numbers that
 // carry the file, stubs turned into rt_not_implemented(k), compiler logs mapped to file:line.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "gl/shader_source.h"
+#include "gpu/gl/shader_source.h"
 #include "gpu/shader_constants.h"
 #include "temp_dir.h"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/source_dir.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"

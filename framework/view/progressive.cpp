@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "render/render.h"
 
 namespace rt::view {

@@ -11,7 +11,7 @@
 #include "bench/machine.h"
 #include "core/source_dir.h"
 #include "image/compare.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"

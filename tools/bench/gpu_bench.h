@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/gl_context.h"
+#include "gpu/gl/gl_context.h"
 
 namespace rt::bench {
 

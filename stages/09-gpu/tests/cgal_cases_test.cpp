@@ -24,7 +24,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "render/gpu_cases.h"
+#include "render/gpu/gpu_cases.h"
 #include "testing/exact_cases.h"
 #include "testing/stage_test.h"
 

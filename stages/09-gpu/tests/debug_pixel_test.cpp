@@ -1,4 +1,4 @@
-// `rt render --gpu --debug-pixel X,Y` (render/gpu_debug_pixel.h): the shader's own notes of one
+// `rt render --gpu --debug-pixel X,Y` (render/gpu/gpu_debug_pixel.h): the shader's own notes of one
 // pixel, and a student's rt_debug(value) with its file and line. Framework tests: they pass
 // whatever the student's GLSL computes, or skip where they need it to be right.
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <string>
 
 #include "render/accelerate.h"
-#include "render/gpu_debug_pixel.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_debug_pixel.h"
+#include "render/gpu/gpu_render.h"
 #include "render/ray_tree.h"
 #include "scene/scene_loader.h"
 #include "student_copy.h"

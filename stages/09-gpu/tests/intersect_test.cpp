@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "render/gpu_cases.h"
+#include "render/gpu/gpu_cases.h"
 #include "stage_api/stage02.h"
 #include "testing/stage_test.h"
 

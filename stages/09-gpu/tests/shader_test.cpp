@@ -15,12 +15,13 @@
 #include <utility>
 
 #include "core/not_implemented.h"
-#include "gl/shader_source.h"
+#include "gpu/gl/shader_source.h"
+#include "gpu/shader_constants.h"
 #include "release/release.h"
 #include "render/accelerate.h"
-#include "render/gpu_render.h"
-#include "render/shadertoy_export.h"
-#include "render/shadertoy_run.h"
+#include "render/gpu/gpu_render.h"
+#include "render/gpu/shadertoy_export.h"
+#include "render/gpu/shadertoy_run.h"
 #include "scene/scene_loader.h"
 #include "student_copy.h"
 #include "testing/stage_test.h"
@@ -242,7 +243,7 @@ int insert_in_intersect_plane(const fs::path& file, const std::string& code) {
     return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
 }
 
-// A while loop that never ends is stopped by its guard (gl/shader_source.h) and reported with its
+// A while loop that never ends is stopped by its guard (gpu/gl/shader_source.h) and reported with its
 // file and line, as a stub is, instead of llvmpipe ending it silently with wrong values.
 TEST(GpuShader, EndlessLoopIsStoppedAndNamed) {
     // In the first function every pixel calls, before its stub in a starter tree.
@@ -261,7 +262,8 @@ TEST(GpuShader, EndlessLoopIsStoppedAndNamed) {
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_GT(stub_calls_total(), before) << "an endless loop must fail the test that ran it";
     const std::string where = display_path(file) + ":" + std::to_string(line) + ": this loop ran " +
-                              std::to_string(kLoopLimit) + " times for one pixel and was stopped";
+                              std::to_string(gpu::kLoopLimit) +
+                              " times for one pixel and was stopped";
     EXPECT_NE(err.find(where), std::string::npos) << "expected " << where << " in\n" << err;
 }
 
@@ -307,7 +309,7 @@ TEST(GpuShader, ShadertoyExportDropsLocalConstAnywhereOnTheLine) {
 }
 
 // A compile error in a Shadertoy export names the student's file and line, not the line of a
-// temporary file the student never sees (render/shadertoy_run.cpp).
+// temporary file the student never sees (render/gpu/shadertoy_run.cpp).
 TEST(GpuShader, ShadertoyExportErrorNamesTheStudentFileAndLine) {
     StudentCopy copy("export-error");
     const fs::path file = copy.dir() / "intersect.glsl";

@@ -1,6 +1,6 @@
-// Stage 09's export for Shadertoy (rt export-shadertoy, render/shadertoy_export.h): the shader
+// Stage 09's export for Shadertoy (rt export-shadertoy, render/gpu/shadertoy_export.h): the shader
 // compiles as Shadertoy compiles it (glslangValidator, GLSL ES 3.00, inside a wrapper declaring
-// Shadertoy's uniforms and a main calling mainImage: render/shadertoy_run.h) and, drawn headless
+// Shadertoy's uniforms and a main calling mainImage: render/gpu/shadertoy_run.h) and, drawn headless
 // over a full-screen triangle, gives the CPU renderer's image under the conformance test's metric. They run the
 // student's GLSL, so in a starter tree they fail on its stubs: the wrapper passes the stub a
 // pixel reached out through alpha, and the test reports it as "not implemented".
@@ -10,8 +10,8 @@
 
 #include "image/compare.h"
 #include "render/accelerate.h"
+#include "render/gpu/shadertoy_run.h"
 #include "render/render.h"
-#include "render/shadertoy_run.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
 

@@ -30,7 +30,7 @@
 #include "core/not_implemented.h"
 #include "image/compare.h"
 #include "render/accelerate.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"

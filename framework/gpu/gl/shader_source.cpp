@@ -1,4 +1,4 @@
-#include "gl/shader_source.h"
+#include "gpu/gl/shader_source.h"
 
 #include <algorithm>
 #include <fstream>

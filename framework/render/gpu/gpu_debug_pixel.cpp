@@ -1,4 +1,4 @@
-#include "render/gpu_debug_pixel.h"
+#include "render/gpu/gpu_debug_pixel.h"
 
 #include <cstdio>
 #include <fstream>

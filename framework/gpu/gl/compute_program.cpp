@@ -1,4 +1,4 @@
-#include "gl/compute_program.h"
+#include "gpu/gl/compute_program.h"
 
 #include <algorithm>
 #include <vector>

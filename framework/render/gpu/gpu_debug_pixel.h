@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "gl/shader_source.h"
+#include "gpu/gl/shader_source.h"
 #include "gpu/shader_constants.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "scene/scene.h"
 
 namespace rt {

@@ -1,4 +1,4 @@
-// An export for Shadertoy (render/shadertoy_export.h) run as Shadertoy runs it: inside a wrapper
+// An export for Shadertoy (render/gpu/shadertoy_export.h) run as Shadertoy runs it: inside a wrapper
 // that declares Shadertoy's uniforms and a main calling mainImage, compiled by glslangValidator
 // as GLSL ES 3.00, and drawn headless over a full-screen triangle (stage 09's Shadertoy tests).
 //

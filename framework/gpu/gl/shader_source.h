@@ -27,12 +27,6 @@ struct ShaderStub {
     bool loop = false;
 };
 
-// Iterations of one student while loop, in one invocation, that the guard allows (the GLSL's
-// rt_loop_guard says it too). llvmpipe ends a loop after at most 65,535 iterations, fewer when it
-// is nested: the BVH traversal inside the tracer's loops was cut between 16,000 and 30,000
-// (measured). A BVH traversal of this course's scenes takes a few hundred.
-constexpr int kLoopLimit = 10000;
-
 struct AssembledShader {
     std::string text;
     std::vector<std::string> files;  // by source-string number (0: the entry file)

@@ -1,5 +1,5 @@
 // Stage 09: the scene rendered by a compute shader (shaders/trace.comp with the student GLSL of
-// stages/09-gpu/), on a headless or windowed OpenGL context (gl/gl_context.h). The result comes
+// stages/09-gpu/), on a headless or windowed OpenGL context (gpu/gl/gl_context.h). The result comes
 // back as an Image, so every output path of the CPU renderer works unchanged.
 //
 // On the "calls student code" side: the GLSL it compiles is the student's.
@@ -14,15 +14,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "gl/gl_context.h"
-#include "gl/shader_source.h"
+#include "gpu/gl/gl_context.h"
+#include "gpu/gl/shader_source.h"
 #include "gpu/glsl_dirs.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
 namespace rt {
 
-struct GpuPixelProbe;  // render/gpu_debug_pixel.h
+struct GpuPixelProbe;  // render/gpu/gpu_debug_pixel.h
 
 // Where a GPU render's time went (rt-bench gpu): milliseconds of wall-clock time.
 struct GpuTimings {
@@ -78,7 +78,7 @@ class GpuRenderer {
 
     // As render_gpu below; `timings`, when set, gets this render's figures (compile_ms is 0
     // when the program came from the cache); `probe`, when set, gets what the shader computed
-    // for its pixel (render/gpu_debug_pixel.h).
+    // for its pixel (render/gpu/gpu_debug_pixel.h).
     Image render(const Scene& scene, RenderMode mode, GpuTimings* timings = nullptr,
                  GpuPixelProbe* probe = nullptr);
     std::string describe() const;  // the context, as --gpu logs it

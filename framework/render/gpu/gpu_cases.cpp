@@ -1,5 +1,5 @@
 // The host side of stage 09's GPU unit tests (gpu_cases.h).
-#include "render/gpu_cases.h"
+#include "render/gpu/gpu_cases.h"
 
 #include <cstdint>
 #include <cstring>
@@ -7,11 +7,11 @@
 #include <memory>
 
 #include "core/source_dir.h"
-#include "gl/compute_program.h"
-#include "gl/gl_context.h"
+#include "gpu/gl/compute_program.h"
+#include "gpu/gl/gl_context.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 
 namespace rt {
 

@@ -1,10 +1,10 @@
-#include "gl/gl_context.h"
+#include "gpu/gl/gl_context.h"
 
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
 
-#include "gl/egl_context.h"
+#include "gpu/gl/egl_context.h"
 
 namespace rt {
 namespace {

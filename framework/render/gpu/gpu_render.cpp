@@ -1,4 +1,4 @@
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 
 #include <algorithm>
 #include <atomic>
@@ -14,11 +14,11 @@
 
 #include "core/not_implemented.h"
 #include "core/source_dir.h"
-#include "gl/compute_program.h"
+#include "gpu/gl/compute_program.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
 #include "image/image.h"
-#include "render/gpu_debug_pixel.h"
+#include "render/gpu/gpu_debug_pixel.h"
 #include "render/render.h"
 
 namespace fs = std::filesystem;
@@ -181,7 +181,7 @@ void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4
             once = slot.get();
         }
         if (s.loop)
-            report_endless_loop(s.file.c_str(), s.line, kLoopLimit, *once);
+            report_endless_loop(s.file.c_str(), s.line, gpu::kLoopLimit, *once);
         else
             report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
                                    *once);

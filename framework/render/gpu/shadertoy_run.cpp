@@ -1,5 +1,5 @@
 // Shadertoy's wrapper, glslangValidator and a headless draw around an export (shadertoy_run.h).
-#include "render/shadertoy_run.h"
+#include "render/gpu/shadertoy_run.h"
 
 #include <unistd.h>
 
@@ -17,9 +17,10 @@
 #include <vector>
 
 #include "core/not_implemented.h"
-#include "gl/compute_program.h"
-#include "gl/gl_context.h"
-#include "render/shadertoy_export.h"
+#include "gpu/gl/compute_program.h"
+#include "gpu/gl/gl_context.h"
+#include "gpu/shader_constants.h"
+#include "render/gpu/shadertoy_export.h"
 
 namespace fs = std::filesystem;
 
@@ -83,7 +84,7 @@ std::string glslang_errors(const std::string& wrapped, const ShadertoyExport& sh
     return with_source_lines(errors, shader);
 }
 
-// Reports each stub a pixel reached, once, as the compute path does (render/gpu_render.cpp).
+// Reports each stub a pixel reached, once, as the compute path does (render/gpu/gpu_render.cpp).
 void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::uint8_t>& rgba) {
     static std::map<std::string, std::unique_ptr<std::atomic<bool>>> reported;
     for (std::size_t i = 3; i < rgba.size(); i += 4) {
@@ -92,7 +93,7 @@ void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::u
         auto& once = reported[s.file + ":" + std::to_string(s.line)];
         if (!once) once = std::make_unique<std::atomic<bool>>(false);
         if (s.loop)
-            report_endless_loop(s.file.c_str(), s.line, kLoopLimit, *once);
+            report_endless_loop(s.file.c_str(), s.line, gpu::kLoopLimit, *once);
         else
             report_not_implemented(s.function.c_str(), s.file.c_str(), s.line, s.handout.c_str(),
                                    *once);

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "gl/gl_api.h"
+#include "gpu/gl/gl_api.h"
 
 namespace rt {
 

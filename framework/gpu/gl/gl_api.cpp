@@ -1,4 +1,4 @@
-#include "gl/gl_api.h"
+#include "gpu/gl/gl_api.h"
 
 namespace rt {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/shader_source.h"
+#include "gpu/gl/shader_source.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -33,7 +33,7 @@ constexpr std::size_t kMaxShadertoyTexels = 1024;
 constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
 
 // The export of `scene` (its BVH built when it has one) drawn in `mode`. Throws GpuError
-// (render/gpu_render.h), one line naming the scene, for what it cannot export: the depth and
+// (render/gpu/gpu_render.h), one line naming the scene, for what it cannot export: the depth and
 // bvh_visits views (they scale by the whole image's range, which one pixel cannot know), images
 // beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes, and what render --gpu cannot
 // draw either.

@@ -1,4 +1,4 @@
-#include "gl/egl_context.h"
+#include "gpu/gl/egl_context.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>

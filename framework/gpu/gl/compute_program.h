@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "gl/gl_api.h"
-#include "gl/shader_source.h"
+#include "gpu/gl/gl_api.h"
+#include "gpu/gl/shader_source.h"
 
 namespace rt {
 

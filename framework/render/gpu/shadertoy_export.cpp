@@ -1,4 +1,4 @@
-#include "render/shadertoy_export.h"
+#include "render/gpu/shadertoy_export.h"
 
 #include <algorithm>
 #include <charconv>
@@ -10,7 +10,7 @@
 
 #include "core/source_dir.h"
 #include "gpu/gpu_scene.h"
-#include "render/gpu_render.h"
+#include "render/gpu/gpu_render.h"
 #include "render/render.h"
 
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "gl/gl_context.h"
+#include "gpu/gl/gl_context.h"
 
 namespace rt {
 namespace {
