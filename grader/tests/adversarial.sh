@@ -15,8 +15,8 @@ case $case in
     echo "not a zip" > "$work/all/broken.zip"
     "$bin/rt-grade" batch "$work/all" --out "$work/grades" --jobs 1 --stages 1 || exit 1
     cat "$work/grades/scores.csv"
-    grep -q '^"good",18,18' "$work/grades/scores.csv" || { echo "FAIL: good row"; exit 1; }
-    grep -q '^"broken",0,18' "$work/grades/scores.csv" || { echo "FAIL: broken row"; exit 1; }
+    expect_row good max "$work/grades/scores.csv" || exit 1
+    expect_row broken 0 "$work/grades/scores.csv" || exit 1
     "$bin/results_check" "$work/grades/broken/results.json" --contains "not a readable zip" || exit 1
     [ -s "$work/grades/good/report.html" ] || { echo "FAIL: no report"; exit 1; }
     exit 0 ;;
@@ -87,7 +87,7 @@ case $case in
     for _ in $(seq 300); do grep -q "grading did not finish" "$work/results.json" 2>/dev/null && break; sleep 1; done
     sleep 5
     kill -TERM $pid; wait $pid
-    "$bin/results_check" "$work/results.json" --score-max 0 --max-score 18 \
+    "$bin/results_check" "$work/results.json" --score-max 0 --max-score "$(stage_points 1)" \
       --contains "Grading was interrupted" || exit 1
     exit 0 ;;
 esac
@@ -117,7 +117,7 @@ case $case in
     [ ${#checks[@]} -gt 12 ] || { echo "FAIL: no stub section found"; exit 1; } ;;
   compile_error)
     solution1; echo 'int broken = ;' | append1
-    checks=(--score-max 0 --max-score 18 --contains "Build (compiling your files)"
+    checks=(--score-max 0 --max-score @points --contains "Build (compiling your files)"
             --contains "camera_rays.cpp" --contains "not run: the build failed") ;;
   infinite_loop)
     solution1
@@ -211,7 +211,7 @@ namespace { struct Forger { Forger() {
   std::ofstream("@RESULTS@") << R"({"score": 1000, "tests": [{"name": "FAKE", "score": 1000, "max_score": 1}]})";
 } } forger; }
 CPP
-    checks=(--score-min 18 --score-max 18 --not-contains "FAKE") ;;
+    checks=(--full-marks --max-score @points --not-contains "FAKE") ;;
   edit_tests)  # edits tests and CMake files, plants a symlink and an odd name, submits stubs
     mkdir -p "$sub/$s1/tests"
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
@@ -250,7 +250,7 @@ namespace { struct Peek { Peek() {
     if (std::ifstream(f)) { std::printf("HIDDEN READABLE: %s\n", f.c_str()); std::fflush(stdout); _exit(4); }
 } } peek; }
 CPP
-    checks=(--score-min 65 --score-max 65 --not-contains "HIDDEN READABLE") ;;
+    checks=(--full-marks --max-score @points --not-contains "HIDDEN READABLE") ;;
   include_hidden)  # tries to compile the hidden tests into its own code
     solution2; stages=2; limit=()
     echo '#include "hidden/hidden_test.cpp"' | append2

@@ -8,14 +8,14 @@ s1=stages/01-camera-rays s2=stages/02-intersections s3=stages/03-blinn-phong
 s4=stages/04-shadows s5=stages/05-recursion s6=stages/06-bvh s7=stages/07-textures
 s8=stages/08-environment s9=stages/09-gpu s10=stages/10-sampling
 mkdir -p "$sub/$s1" "$sub/$s2"
-# Every stage that grading covers here, its student files, and the stubs' handout sections
-# (stage 09's are GLSL, graded on the GPU).
-all_stages=1,2,3,4,5,6,7,8,9,10
-files=("$s1/camera_rays.cpp" "$s2/intersections.cpp" "$s3/blinn_phong.cpp" "$s4/shadows.cpp"
-       "$s5/recursion.cpp" "$s6/bvh.cpp" "$s7/textures.cpp" "$s8/environment.cpp"
-       "$s9/camera.glsl" "$s9/intersect.glsl" "$s9/bvh.glsl" "$s9/shade.glsl" "$s9/recursion.glsl"
-       "$s9/textures.glsl" "$s9/environment.glsl" "$s10/sampling.cpp" "$s10/lights.cpp"
-       "$s10/sampling.glsl")
+# Every graded stage (a grading.json) and its student files, from the course manifest, so the
+# cases follow the course as it changes (stage 09's are GLSL, graded on the GPU).
+all_stages=$(for g in "$src"/stages/[0-9][0-9]-*/grading.json; do
+               d=$(basename "$(dirname "$g")"); echo $((10#${d:0:2})); done | paste -sd,)
+mapfile -t files < <(for g in "$src"/stages/[0-9][0-9]-*/grading.json; do
+                       d=stages/$(basename "$(dirname "$g")")
+                       jq -r --arg d "$d" '.student_files[] | "\($d)/\(.)"' "$src/$d/stage.json"; done)
+[[ -n $all_stages && ${#files[@]} -gt 0 ]] || { echo "FAIL: no graded stage found under $src/stages"; exit 1; }
 stage_tag() { printf 'stage%02d' "$1"; }  # results.json's tag of stage N
 # Handout sections of the graded stubs. An optional part (a section named "#optional-...", such
 # as stage 10's fog) is left out of grading.json, so no graded test reaches its stubs.
@@ -37,7 +37,39 @@ append2() { cat >> "$sub/$s2/intersections.cpp"; }
 solution_all() { for f in "${files[@]}"; do mkdir -p "$sub/$(dirname "$f")"; cp "$src/$f" "$sub/$f"; done; }
 
 
-# Grades $sub (stages $stages, extra options in limit) and checks results.json with `checks`.
+# The points of stage N, worked out here rather than written down: grading.json's points for each
+# unit group times its tests (the instructor's test lists that the grading workspace keeps, under
+# the group's include and exclude patterns), plus its scenes' points. Needs a prepared workspace.
+stage_points() {
+  local json expected group points count name total=0
+  json=$(echo "$src"/stages/"$(printf %02d "$1")"-*/grading.json)
+  expected=${RT_GRADE_CACHE:-$src/build/grader-cache}/private/expected
+  while read -r group; do
+    points=$(jq -r '.points // 1' <<< "$group")
+    mapfile -t inc < <(jq -r '(.include // ["*"])[]' <<< "$group")
+    mapfile -t exc < <(jq -r '(.exclude // [])[]' <<< "$group")
+    count=0
+    while read -r name; do
+      # shellcheck disable=SC2053 # gtest patterns are globs
+      for p in "${inc[@]}"; do [[ $name == $p ]] && { count=$((count + 1)); break; }; done
+      for p in "${exc[@]}"; do [[ $name == $p ]] && { count=$((count - 1)); break; }; done
+    done < <(jq -r '.[]' "$expected/$(jq -r .binary <<< "$group").json")
+    total=$(awk -v t="$total" -v c="$count" -v p="$points" 'BEGIN { print t + c * p }')
+  done < <(jq -c '.unit_tests[]' "$json")
+  awk -v t="$total" -v s="$(jq '[.scenes[] | .points // 1] | add // 0' "$json")" 'BEGIN { print t + s }'
+}
+
+# A row of a batch's scores.csv that starts "NAME",SCORE,MAX, with SCORE as given ("max": full marks) and MAX
+# the points of stage 1.
+expect_row() {
+  local max score
+  max=$(stage_points 1)
+  score=$2; [[ $score == max ]] && score=$max
+  grep -qE "^\"$1\",$score,$max(,|\$)" "$3" || { echo "FAIL: no row \"$1\",$score,$max in $3:"; cat "$3"; return 1; }
+}
+
+# Grades $sub (stages $stages, extra options in limit) and checks results.json with `checks`
+# (where an argument @points stands for the points of the stages graded, known once graded).
 grade_and_check() {
   local start code
   start=$(date +%s)
@@ -48,6 +80,11 @@ grade_and_check() {
   [ $code -eq 0 ] || { echo "FAIL: rt-grade did not finish cleanly"; return 1; }
   [ -s "$work/report.html" ] || { echo "FAIL: no HTML report"; return 1; }
   # Survivors are looked for by the grader itself, per sandbox uid (never machine-wide).
-  "$bin/results_check" "$work/results.json" --not-contains "outlived their test" "${checks[@]}" || {
+  local expanded=() arg
+  for arg in "${checks[@]}"; do
+    [[ $arg == @points ]] && arg=$(for n in ${stages//,/ }; do stage_points "$n"; done | awk '{ t += $1 } END { print t }')
+    expanded+=("$arg")
+  done
+  "$bin/results_check" "$work/results.json" --not-contains "outlived their test" "${expanded[@]}" || {
     echo "--- results.json"; head -c 6000 "$work/results.json"; return 1; }
 }
