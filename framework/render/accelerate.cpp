@@ -8,8 +8,6 @@
 
 namespace rt {
 
-const char* const kNotImplemented = "build_bvh is not implemented";
-
 AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options) {
     AccelerationReport report;
     scene.bvh = Bvh{};
@@ -29,8 +27,9 @@ AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& optio
     build_bvh(input, options, scene.bvh);
     report.build_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (stub_calls_total() != stubs) {
-        report.problem = kNotImplemented;  // the stub already said where to read
+    const bool stubbed = stub_calls_total() != stubs;
+    if (stubbed) {
+        report.problem = "build_bvh is not implemented";  // the stub already said where to read
     } else {
         report.problem = validate_bvh(scene.bvh, input);
         if (!report.problem.empty())
@@ -44,7 +43,7 @@ AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& optio
         // A stubbed build keeps asking for the BVH, so every query counts as reaching the stub
         // (nearest_hit): the image comes out magenta, at once, as for any other stub. A tree that
         // is built but invalid falls back to stage 02's loop: right, only slower.
-        if (report.problem != kNotImplemented) scene.accelerator = Accelerator::None;
+        if (!stubbed) scene.accelerator = Accelerator::None;
         return report;
     }
     report.built = true;

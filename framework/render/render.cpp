@@ -41,10 +41,12 @@ Color primitive_colour(int id) {
            0.2f;
 }
 
-// Per pixel: the visualised colour, plus the hit distance for the depth mode.
+// Per pixel: the visualised colour, or a number that is mapped to grey once the whole image is
+// known (map_depth, map_visits): the hit distance in the depth mode, the BVH nodes visited in the
+// BVH-visits mode.
 struct PixelResult {
     Color colour{0};
-    Real depth = -1;  // < 0: no hit
+    Real measure = -1;  // < 0: nothing to map (a miss)
 };
 
 PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
@@ -61,14 +63,14 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
         return out;
     }
     Hit hit;
-    if (mode == RenderMode::BvhVisits) {  // the count goes through `depth`, mapped at the end
+    if (mode == RenderMode::BvhVisits) {  // the count is mapped at the end
         if (!uses_bvh(scene)) {           // a stubbed build_bvh: magenta, like any stub
             count_missing_bvh();
             return out;
         }
         BvhStats stats;
         bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &stats);
-        out.depth = Real(stats.nodes_visited);
+        out.measure = Real(stats.nodes_visited);
         return out;
     }
     if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) return out;
@@ -77,7 +79,7 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
             out.colour = display_value(unit_vector_colour(hit.normal));
             break;
         case RenderMode::Depth:
-            out.depth = hit.t;
+            out.measure = hit.t;
             break;
         case RenderMode::PrimitiveId:
             out.colour = display_value(primitive_colour(
@@ -148,7 +150,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
             "message above says why its tree was dropped)");
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
-    std::vector<Real> depth(std::size_t(width) * height, -1);
+    std::vector<Real> measures(std::size_t(width) * height, -1);
     const int tile = std::max(1, options.tile_size);
     const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
     const int tile_count = tiles_x * tiles_y;
@@ -167,13 +169,13 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
                              const std::size_t i = std::size_t(y) * width + x;
                              if (stub_calls_this_thread() != stubs) p = {kStubColor, -1};
                              image.pixels[i] = p.colour;
-                             depth[i] = p.depth;
+                             measures[i] = p.measure;
                          }
                      progress.advance();
                  });
 
-    if (mode == RenderMode::Depth) map_depth(depth, image);
-    if (mode == RenderMode::BvhVisits) map_visits(depth, image);
+    if (mode == RenderMode::Depth) map_depth(measures, image);
+    if (mode == RenderMode::BvhVisits) map_visits(measures, image);
     return image;
 }
 
