@@ -32,8 +32,8 @@ struct DecodedImage {
     }
 };
 
-// The one-line error for a size that is zero, negative or over the limits above, or "".
-std::string size_problem(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
-                         int channels);
+// What is wrong with a size that is zero, negative or over the limits above (an ImageError's
+// problem), or "".
+std::string size_problem(std::int64_t width, std::int64_t height, int channels);
 
 }  // namespace rt::image_files

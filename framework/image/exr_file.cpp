@@ -44,8 +44,8 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
         out.setFrameBuffer(frame);
         out.writePixels(image.height);
     } catch (const std::exception& e) {
-        throw ImageError(one_line(file.string() + ": error: writing failed (" + e.what() +
-                                  "); check that the folder exists and is writable"));
+        throw ImageError(file, std::string("writing failed (") + e.what() +
+                                   "); check that the folder exists and is writable");
     }
 }
 
@@ -68,13 +68,12 @@ DecodedImage read_exr(const std::filesystem::path& file) {
             channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y");
         if (!rgb && !grey)
-            throw ImageError(file.string() +
-                             ": error: the EXR has neither R, G, B nor Y channels; re-export it "
+            throw ImageError(file,
+                             "the EXR has neither R, G, B nor Y channels; re-export it "
                              "as RGB");
         out.channels = rgb ? 3 : 1;
-        if (const std::string problem = size_problem(file, width, height, out.channels);
-            !problem.empty())
-            throw ImageError(problem);
+        if (const std::string problem = size_problem(width, height, out.channels); !problem.empty())
+            throw ImageError(file, problem);
         out.width = int(width);
         out.height = int(height);
         out.floating = true;
@@ -94,8 +93,8 @@ DecodedImage read_exr(const std::filesystem::path& file) {
     } catch (const ImageError&) {
         throw;
     } catch (const std::exception& e) {
-        throw ImageError(one_line(file.string() + ": error: cannot read the EXR (" + e.what() +
-                                  "); the file is damaged or not an EXR: re-export it"));
+        throw ImageError(file, std::string("cannot read the EXR (") + e.what() +
+                                   "); the file is damaged or not an EXR: re-export it");
     }
     return out;
 }

@@ -5,11 +5,16 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/diagnostics.h"
 #include "image/exr_file.h"
 #include "image/oiio_loader.h"
 #include "image/png_file.h"
 
 namespace rt {
+
+ImageError::ImageError(const std::filesystem::path& file, const std::string& problem)
+    : std::runtime_error(one_line(file.string() + ": error: " + problem)),
+      problem_(one_line(problem)) {}
 
 float linear_to_srgb(float x) {
     if (!(x > 0)) return 0;  // also NaN
@@ -42,10 +47,10 @@ enum class Format { Png, Exr, Other };
 // reported as damaged rather than handed to OpenImageIO.
 Format format_of(const std::filesystem::path& file) {
     if (!std::filesystem::is_regular_file(file))
-        throw ImageError(file.string() + ": error: no such image file; check the path");
+        throw ImageError(file, "no such image file; check the path");
     std::error_code ec;
     if (std::filesystem::file_size(file, ec) == 0 && !ec)
-        throw ImageError(file.string() + ": error: the image file is empty; re-export it");
+        throw ImageError(file, "the image file is empty; re-export it");
     unsigned char magic[8] = {};
     std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(magic), sizeof magic);
     static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -54,10 +59,10 @@ Format format_of(const std::filesystem::path& file) {
     if (std::memcmp(magic, kExr, 4) == 0) return Format::Exr;
     const std::string ext = file.extension().string();
     if (ext == ".png" || ext == ".exr")
-        throw ImageError(file.string() +
-                         ": error: " + (ext == ".png" ? "not a PNG" : "not an EXR") +
-                         " file (its first bytes are wrong); the file is damaged or misnamed: "
-                         "re-export it");
+        throw ImageError(file,
+                         std::string(ext == ".png" ? "not a PNG" : "not an EXR") +
+                             " file (its first bytes are wrong); the file is damaged or misnamed: "
+                             "re-export it");
     return Format::Other;
 }
 
@@ -77,16 +82,15 @@ files::DecodedImage decode(const std::filesystem::path& file) {
 
 namespace image_files {
 
-std::string size_problem(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
-                         int channels) {
+std::string size_problem(std::int64_t width, std::int64_t height, int channels) {
     if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
         width * height > kMaxPixels)
-        return file.string() + ": error: the image is " + std::to_string(width) + " x " +
-               std::to_string(height) + " pixels; images must be 1 to " + std::to_string(kMaxSide) +
+        return "the image is " + std::to_string(width) + " x " + std::to_string(height) +
+               " pixels; images must be 1 to " + std::to_string(kMaxSide) +
                " pixels a side and at most " + std::to_string(kMaxPixels / 1'000'000) +
                " Mpixel: resize it";
     if (channels < 1 || channels > 4)
-        return file.string() + ": error: the image has " + std::to_string(channels) +
+        return "the image has " + std::to_string(channels) +
                " channels; use grey, grey + alpha, RGB or RGBA";
     return "";
 }
@@ -96,13 +100,13 @@ std::string size_problem(const std::filesystem::path& file, std::int64_t width, 
 void check_image_output(const std::filesystem::path& file) {
     const std::string ext = file.extension().string();
     if (ext != ".exr" && ext != ".png")
-        throw ImageError(file.string() + ": error: unknown image extension \"" + ext +
-                         "\"; use .png (sRGB, 8-bit) or .exr (linear float)");
+        throw ImageError(file, "unknown image extension \"" + ext +
+                                   "\"; use .png (sRGB, 8-bit) or .exr (linear float)");
     std::error_code ec;
     const auto folder = file.parent_path();
     if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
-        throw ImageError(file.string() + ": error: the folder " + folder.string() +
-                         " does not exist; create it first");
+        throw ImageError(file,
+                         "the folder " + folder.string() + " does not exist; create it first");
 }
 
 void write_image(const Image& image, const std::filesystem::path& file) {
@@ -149,8 +153,8 @@ Image read_image(const std::filesystem::path& file, Encoding integer_encoding, I
         out.pixels[i] = Color(v[0], v[1], v[2]);
     }
     if (bad > 0)
-        throw ImageError(file.string() + ": error: " + std::to_string(bad) +
-                         " pixels are NaN or infinite; re-export the image");
+        throw ImageError(file,
+                         std::to_string(bad) + " pixels are NaN or infinite; re-export the image");
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/real.h"
@@ -36,9 +37,16 @@ struct Image8 {
     std::uint8_t* at(int x, int y) { return &data[(std::size_t(y) * width + x) * 3]; }
 };
 
+// An image file that cannot be read or written. what() is the whole message on one line,
+// "<file>: error: <problem>"; problem() is what is wrong and what to do, for a caller that names
+// the file its own way (a scene file's line, the grader's report).
 class ImageError : public std::runtime_error {
   public:
-    using std::runtime_error::runtime_error;
+    ImageError(const std::filesystem::path& file, const std::string& problem);
+    const std::string& problem() const { return problem_; }
+
+  private:
+    std::string problem_;
 };
 
 // The sRGB transfer function (IEC 61966-2-1), for one linear value clamped to [0, 1].

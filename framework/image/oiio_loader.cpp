@@ -70,13 +70,13 @@ const OiioPlugin& oiio_plugin() {
 DecodedImage read_with_oiio(const fs::path& file) {
     const OiioPlugin& p = oiio_plugin();
     if (!p.read)
-        throw ImageError(one_line(file.string() + ": error: reading this format needs " +
-                                  p.problem + ", or convert the image to PNG or EXR"));
+        throw ImageError(file, "reading this format needs " + p.problem +
+                                   ", or convert the image to PNG or EXR");
     RtOiioImage raw{};
     char error[512] = "";
     if (!p.read(file.c_str(), kMaxSide, kMaxPixels, &raw, error, sizeof error))
-        throw ImageError(one_line(file.string() + ": error: cannot read the image (" + error +
-                                  "); is it an image file? re-export it as PNG or EXR"));
+        throw ImageError(file, std::string("cannot read the image (") + error +
+                                   "); is it an image file? re-export it as PNG or EXR");
     DecodedImage out;
     out.width = raw.width;
     out.height = raw.height;

@@ -34,7 +34,7 @@ using File = std::unique_ptr<std::FILE, FileCloser>;
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what,
                        const std::string& fix) {
-    throw ImageError(one_line(file.string() + ": error: " + what + "; " + fix));
+    throw ImageError(file, what + "; " + fix);
 }
 
 struct Writer {
@@ -136,9 +136,8 @@ DecodedImage read_png(const std::filesystem::path& file) {
     };
     if (!read_header(r, f.get(), &h)) damaged();
     // Checked before anything is allocated for the pixels.
-    if (const std::string problem = size_problem(file, h.width, h.height, h.channels);
-        !problem.empty())
-        throw ImageError(problem);
+    if (const std::string problem = size_problem(h.width, h.height, h.channels); !problem.empty())
+        throw ImageError(file, problem);
     std::vector<png_byte> raw(h.row_bytes * h.height);
     std::vector<png_bytep> rows(h.height);
     for (std::size_t y = 0; y < h.height; ++y) rows[y] = raw.data() + h.row_bytes * y;

@@ -13,14 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An ImageError reads "<file>: error: <what>; <fix>"; the scene's message names the file as the
-// scene wrote it, so only "<what>; <fix>" is kept.
-std::string image_problem(const std::string& message) {
-    const std::string marker = ": error: ";
-    const std::size_t at = message.find(marker);
-    return at == std::string::npos ? message : message.substr(at + marker.size());
-}
-
 }  // namespace
 
 Image SceneSections::read_environment_image(const json& value, const std::string& pointer) {
@@ -31,7 +23,7 @@ Image SceneSections::read_environment_image(const json& value, const std::string
         // Stored linear: 8-bit files are decoded from sRGB once, here (float files are linear).
         return rt::read_image(path, Encoding::Srgb);
     } catch (const ImageError& e) {
-        fail_value(pointer, "environment image " + quote(file) + ": " + image_problem(e.what()));
+        fail_value(pointer, "environment image " + quote(file) + ": " + e.problem());
     }
 }
 

@@ -113,7 +113,7 @@ void SceneSections::read_heightfield_mesh(const json& h, const std::string& poin
     try {
         image = ::rt::read_image(path, Encoding::Data);  // heights are data, not colour
     } catch (const ImageError& e) {
-        fail_value(at("image"), e.what());
+        fail_value(at("image"), file + ": " + e.problem());
     }
     if (image.width < 2 || image.height < 2)
         fail_value(at("image"),

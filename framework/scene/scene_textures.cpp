@@ -112,7 +112,8 @@ int SceneSections::texture_image(const fs::path& path, const std::string& pointe
         // As stored: decoding sRGB is the lookup's job (stage 07), per texel.
         image = ::rt::read_image(path, Encoding::Data, &info);
     } catch (const ImageError& e) {
-        fail_value(pointer, e.what());  // the reader's message names the file and the fix
+        fail_value(pointer,
+                   "texture image " + quote(path.filename().string()) + ": " + e.problem());
     }
     const int index = scene_.add_texture_image(image.width, image.height, image.pixels);
     image_ids_.emplace(key, index);

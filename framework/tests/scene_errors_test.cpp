@@ -90,7 +90,8 @@ const BadScene kBadScenesTable[] = {
     {"60-unknown-accelerator", 2, 48, R"(unknown "accelerator" "kdtree"; use "none" or "bvh")"},
     {"61-heat-map-without-bvh", 2, 22, R"(add "accelerator": "bvh" to "render")"},
     {"62-unknown-texture", 3, 49, R"(unknown texture "brick"; did you mean "bricks"?)"},
-    {"63-missing-texture-image", 2, 42, R"(no_such_wood.png: error: no such image file)"},
+    {"63-missing-texture-image", 2, 42,
+     R"(error: texture image "no_such_wood.png": no such image file; check the path)"},
     {"64-texture-with-two-sources", 2, 16, R"(a texture has one source, got "image" and "marble")"},
     {"65-unknown-wrap-mode", 2, 115, R"(unknown "wrap" "tile"; use "repeat", "clamp" or "mirror")"},
     {"70-environment-missing-image", 2, 30,
@@ -111,6 +112,8 @@ const BadScene kBadScenesTable[] = {
     {"81-fog-albedo-above-one", 3, 43, R"("albedo" must be between 0 and 1, got 1.2)"},
     {"82-fog-box-without-max", 3, 34, R"(a fog box needs both "min" and "max")"},
     {"83-fog-with-area-light", 3, 10, "fog and area lights together are not supported"},
+    {"84-damaged-texture-image", 2, 42,
+     R"(error: texture image "84-damaged.png": not a PNG file (its first bytes are wrong))"},
 };
 
 class BadSceneTest : public testing::TestWithParam<BadScene> {};

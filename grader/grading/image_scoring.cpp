@@ -20,10 +20,8 @@ bool read_render(const fs::path& file, Image& image, std::string& why) {
     try {
         image = read_image(file, Encoding::Data);  // the renderer writes linear EXR
     } catch (const ImageError& e) {
-        // The message names the grader's copy; the student needs only what is wrong with it.
-        const std::string text = e.what();
-        const auto at = text.find("error: ");
-        why = "the rendered image: " + (at == std::string::npos ? text : text.substr(at + 7));
+        // Not e.what(): it names the grader's copy; the student needs only what is wrong with it.
+        why = "the rendered image: " + e.problem();
         return false;
     }
     if (image.width > 8192 || image.height > 8192) {
