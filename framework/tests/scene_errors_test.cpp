@@ -116,9 +116,9 @@ const BadScene kBadScenesTable[] = {
      R"(error: texture image "84-damaged.png": not a PNG file (its first bytes are wrong))"},
 };
 
-class BadSceneTest : public testing::TestWithParam<BadScene> {};
+class BadSceneFile : public testing::TestWithParam<BadScene> {};
 
-TEST_P(BadSceneTest, ReportsOneLinePointingAtTheMistake) {
+TEST_P(BadSceneFile, ReportsOneLinePointingAtTheMistake) {
     const BadScene& bad = GetParam();
     const std::string path = (kBadScenes / (std::string(bad.file) + ".json")).string();
     std::string message;
@@ -139,7 +139,7 @@ TEST_P(BadSceneTest, ReportsOneLinePointingAtTheMistake) {
     EXPECT_NE(message.find("; "), std::string::npos) << "no fix suggested: " << message;
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, BadSceneTest, testing::ValuesIn(kBadScenesTable),
+INSTANTIATE_TEST_SUITE_P(Files, BadSceneFile, testing::ValuesIn(kBadScenesTable),
                          [](const testing::TestParamInfo<BadScene>& info) {
                              std::string name = info.param.file;
                              std::replace(name.begin(), name.end(), '-', '_');

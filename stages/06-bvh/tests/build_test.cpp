@@ -12,8 +12,8 @@ namespace {
 using bvh_test::Random;
 using bvh_test::scene_from_mesh;
 
-RT_TEST_SUITE(SahSplitTest);
-RT_TEST_SUITE(BuildTest);
+RT_TEST_SUITE(SahSplitCost);
+RT_TEST_SUITE(BvhBuild);
 
 BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
     BvhPrimitive p;
@@ -43,7 +43,7 @@ float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k,
                all.surface_area();
 }
 
-TEST_F(SahSplitTest, TwoClustersSplitBetweenThem) {
+TEST_F(SahSplitCost, TwoClustersSplitBetweenThem) {
     std::vector<BvhPrimitive> prims;
     for (std::uint32_t i = 0; i < 8; ++i) {  // four small boxes near x = 0, four near x = 10
         const float x = i < 4 ? float(i) * 0.1f : 10 + float(i) * 0.1f;
@@ -57,7 +57,7 @@ TEST_F(SahSplitTest, TwoClustersSplitBetweenThem) {
     EXPECT_GE(split.right_bounds.min.x, 10.0f);
 }
 
-TEST_F(SahSplitTest, CostIsTheMinimumOverAllBinBoundaries) {
+TEST_F(SahSplitCost, CostIsTheMinimumOverAllBinBoundaries) {
     Random random(6);
     for (int trial = 0; trial < 20; ++trial) {
         std::vector<BvhPrimitive> prims;
@@ -91,7 +91,7 @@ TEST_F(SahSplitTest, CostIsTheMinimumOverAllBinBoundaries) {
     }
 }
 
-TEST_F(SahSplitTest, OnlyTheGivenRangeCounts) {
+TEST_F(SahSplitCost, OnlyTheGivenRangeCounts) {
     std::vector<BvhPrimitive> prims;
     for (std::uint32_t i = 0; i < 10; ++i)
         prims.push_back(box_primitive({float(i), 0, 0}, {float(i) + 0.5f, 1, 1}, i));
@@ -102,14 +102,14 @@ TEST_F(SahSplitTest, OnlyTheGivenRangeCounts) {
     EXPECT_LE(split.right_bounds.max.x, 5.5f);
 }
 
-TEST_F(SahSplitTest, CoincidentCentroidsHaveNoSplit) {
+TEST_F(SahSplitCost, CoincidentCentroidsHaveNoSplit) {
     std::vector<BvhPrimitive> prims;
     for (std::uint32_t i = 0; i < 6; ++i)  // nested boxes around one centre
         prims.push_back(box_primitive(Vec3f(-float(i + 1)), Vec3f(float(i + 1)), i));
     EXPECT_EQ(find_sah_split(prims, 0, prims.size(), BvhBuildOptions{}).axis, -1);
 }
 
-TEST_F(SahSplitTest, SkipsAxesWithoutSpread) {
+TEST_F(SahSplitCost, SkipsAxesWithoutSpread) {
     std::vector<BvhPrimitive> prims;  // all centroids on a line along z
     for (std::uint32_t i = 0; i < 9; ++i)
         prims.push_back(box_primitive({-1, -1, float(i)}, {1, 1, float(i) + 0.2f}, i));
@@ -143,7 +143,7 @@ void expect_valid_tree(const Scene& scene, const BvhBuildOptions& options, const
     }
 }
 
-TEST_F(BuildTest, TreesOverProceduralMeshesAreValid) {
+TEST_F(BvhBuild, TreesOverProceduralMeshesAreValid) {
     expect_valid_tree(scene_from_mesh(make_icosphere(3)), {}, "icosphere");
     expect_valid_tree(scene_from_mesh(make_torus(40, 20)), {}, "torus");
     expect_valid_tree(scene_from_mesh(make_terrain(30, 30, 4)), {}, "terrain");
@@ -156,7 +156,7 @@ TEST_F(BuildTest, TreesOverProceduralMeshesAreValid) {
                       "icosphere, 64 bins, leaves of 16");
 }
 
-TEST_F(BuildTest, SmallAndEmptyInputs) {
+TEST_F(BvhBuild, SmallAndEmptyInputs) {
     Bvh bvh;
     build_bvh({}, BvhBuildOptions{}, bvh);
     EXPECT_TRUE(bvh.nodes.empty()) << "no primitives: no nodes";
@@ -173,7 +173,7 @@ TEST_F(BuildTest, SmallAndEmptyInputs) {
     }
 }
 
-TEST_F(BuildTest, DegenerateInputs) {
+TEST_F(BvhBuild, DegenerateInputs) {
     // Identical triangles: nothing to split, one leaf holds them all.
     Scene same;
     same.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -193,7 +193,7 @@ TEST_F(BuildTest, DegenerateInputs) {
     expect_valid_tree(flat, {}, "flat slivers of many scales");
 }
 
-TEST_F(BuildTest, DepthIsBoundedOnPathologicalSpacing) {
+TEST_F(BvhBuild, DepthIsBoundedOnPathologicalSpacing) {
     // Centroids at 2^i: binning peels one primitive per level, which would go 100 deep.
     std::vector<BvhPrimitive> prims;
     for (std::uint32_t i = 0; i < 100; ++i) {
@@ -208,7 +208,7 @@ TEST_F(BuildTest, DepthIsBoundedOnPathologicalSpacing) {
     EXPECT_LE(bvh_depth(bvh), kBvhMaxDepth);
 }
 
-TEST_F(BuildTest, TreeIsDeterministic) {
+TEST_F(BvhBuild, TreeIsDeterministic) {
     // A small mesh and one large enough for a builder to use threads (the reference does from
     // 20,000 primitives): the same tree, bit for bit, every time.
     for (const Scene& scene :
@@ -223,7 +223,7 @@ TEST_F(BuildTest, TreeIsDeterministic) {
     }
 }
 
-TEST_F(BuildTest, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
+TEST_F(BvhBuild, SahTreeCostIsLowAndMoreBinsDoNoWorse) {
     // The expected cost of a ray through the tree (sum over nodes of area ratio times work): far
     // below testing every primitive, and no worse with 16 bins than with 2.
     const Scene scene = scene_from_mesh(make_terrain(60, 60, 5));

@@ -15,7 +15,7 @@ namespace {
 using bvh_test::Random;
 using bvh_test::scene_from_mesh;
 
-RT_TEST_SUITE(SlabTest);
+RT_TEST_SUITE(Slab);
 RT_TEST_SUITE(NearestHit);
 RT_TEST_SUITE(AnyHit);
 RT_TEST_SUITE(Visits);
@@ -28,7 +28,7 @@ bool slab(const Ray& ray, Interval range, Real& t) {
     return intersect_node(unit_node(), ray, Real(1) / ray.direction, range, t);
 }
 
-TEST_F(SlabTest, HitAndEntryDistance) {
+TEST_F(Slab, HitAndEntryDistance) {
     Real t = -1;
     ASSERT_TRUE(slab(Ray{{0, 0, 5}, {0, 0, -1}}, Interval{0, kInfinity}, t));
     EXPECT_EQ(t, 4);
@@ -36,7 +36,7 @@ TEST_F(SlabTest, HitAndEntryDistance) {
     EXPECT_EQ(t, 2);
 }
 
-TEST_F(SlabTest, Misses) {
+TEST_F(Slab, Misses) {
     Real t;
     EXPECT_FALSE(slab(Ray{{0, 2, 5}, {0, 0, -1}}, Interval{0, kInfinity}, t)) << "passes above";
     EXPECT_FALSE(slab(Ray{{0, 0, 5}, {0, 0, 1}}, Interval{0, kInfinity}, t)) << "points away";
@@ -45,13 +45,13 @@ TEST_F(SlabTest, Misses) {
     EXPECT_FALSE(slab(Ray{{3, 0, 3}, {1, 0, -1}}, Interval{0, kInfinity}, t)) << "diagonal miss";
 }
 
-TEST_F(SlabTest, OriginInsideEntersAtRangeStart) {
+TEST_F(Slab, OriginInsideEntersAtRangeStart) {
     Real t = -1;
     ASSERT_TRUE(slab(Ray{{0.2, 0.1, 0}, {0.3, -1, 0.5}}, Interval{0, kInfinity}, t));
     EXPECT_EQ(t, 0);
 }
 
-TEST_F(SlabTest, ParallelToASlab) {
+TEST_F(Slab, ParallelToASlab) {
     Real t;
     EXPECT_TRUE(slab(Ray{{-5, 0.5, 0}, {1, 0, 0}}, Interval{0, kInfinity}, t))
         << "inside the y slab";
@@ -63,7 +63,7 @@ TEST_F(SlabTest, ParallelToASlab) {
     EXPECT_TRUE(slab(Ray{{-5, -1, -1}, {1, 0, 0}}, Interval{0, kInfinity}, t)) << "along an edge";
 }
 
-TEST_F(SlabTest, FlatBoxOfAnAxisAlignedTriangle) {
+TEST_F(Slab, FlatBoxOfAnAxisAlignedTriangle) {
     const BvhNode flat{Vec3f(-1, 0.5f, -1), 0, Vec3f(1, 0.5f, 1), 1};
     Real t = -1;
     const Ray ray{{0.3, 3, 0.1}, {0.01, -1, 0.02}};
@@ -71,7 +71,7 @@ TEST_F(SlabTest, FlatBoxOfAnAxisAlignedTriangle) {
     EXPECT_NEAR(t, 2.5, 1e-5);
 }
 
-TEST_F(SlabTest, NeverLosesABoxToRounding) {
+TEST_F(Slab, NeverLosesABoxToRounding) {
     // Rays aimed at points on the edges of a box far from the origin, from far away: the
     // computed entry may round past the exit; the slab test must widen its far bound for that.
     Random random(11);
