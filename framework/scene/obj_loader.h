@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/real.h"
+#include "geometry/procedural_mesh.h"
 #include "scene/mesh_placement.h"  // scale_normal, used with meshes
 #include "scene/scene.h"
 
@@ -45,15 +46,13 @@ struct ObjMaterial {
     ObjTextureMap maps[4];
 };
 
-struct ObjMesh {
-    // One entry per distinct (position, normal, uv) combination the faces use, in order of
-    // first use: OBJ indexes the three separately, a renderer wants one index per corner.
-    std::vector<Vec3> vertices;  // already scaled, then translated
-    std::vector<Vec3> normals;   // parallel to vertices, or empty when no face has a `vn`;
-                                 // unit length, (0, 0, 0) for a corner without one
-    std::vector<Vec2> uvs;       // parallel to vertices, or empty when no face has a `vt`;
-                                 // (0, 0) for a corner without one
-    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise from outside
+// The mesh (geometry/procedural_mesh.h's TriangleMesh) and what OBJ adds to it. In the mesh: one
+// vertex per distinct (position, normal, uv) combination the faces use, in order of first use (OBJ
+// indexes the three separately, a renderer wants one index per corner); positions already scaled,
+// then translated; normals and uvs parallel to the vertices, or empty when no face has a `vn` or
+// a `vt` (unit normals, (0, 0, 0) or uv (0, 0) for a corner without one); triangles
+// counter-clockwise from outside.
+struct ObjMesh : TriangleMesh {
     // Per triangle: index into `materials` of the usemtl in effect, or -1 for none.
     std::vector<int> triangle_material;
     std::vector<ObjMaterial> materials;  // distinct usemtl names, first use first
