@@ -1,0 +1,170 @@
+# Included by framework/CMakeLists.txt, so paths are relative to framework/: the tests that run
+# `rt` itself (determinism, one-line errors, the GPU from the command line, rt fmt, the gallery
+# page, the viewer under Xvfb) and the checks over the framework's tree.
+# Command-line behaviour of `rt`: determinism across thread counts, clean errors.
+set(rt_cli_scene ${PROJECT_SOURCE_DIR}/stages/02-intersections/scenes/mesh_normals.json)
+add_test(NAME Render.ThreadCountIsBitIdentical
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${rt_cli_scene}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/determinism
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_thread_determinism.cmake)
+set_tests_properties(Render.ThreadCountIsBitIdentical PROPERTIES LABELS "render")
+# The same for a shaded scene with shadows, reflection and refraction.
+add_test(NAME Render.ShadedThreadCountIsBitIdentical
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt>
+          -DSCENE=${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/determinism-shaded
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_thread_determinism.cmake)
+set_tests_properties(Render.ShadedThreadCountIsBitIdentical PROPERTIES LABELS "render")
+
+function(rt_cli_error_test name expect)
+  add_test(NAME Cli.${name}
+    COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:rt>;${ARGN}" "-DEXPECT=${expect}"
+            -P ${PROJECT_SOURCE_DIR}/cmake/check_cli_error.cmake)
+  set_tests_properties(Cli.${name} PROPERTIES LABELS "cli")
+endfunction()
+set(bad ${CMAKE_CURRENT_SOURCE_DIR}/tests/bad_scenes)
+rt_cli_error_test(MissingSceneFile "no-such-scene.json" render no-such-scene.json -o ${PROJECT_BINARY_DIR}/x.png)
+rt_cli_error_test(UnknownFlag "--bogus" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --bogus)
+rt_cli_error_test(ZeroThreads "--threads" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --threads 0)
+rt_cli_error_test(HugeWidth "--width" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --width 100000)
+rt_cli_error_test(BadOutputExtension "x.bmpx" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.bmpx)
+rt_cli_error_test(OutputFolderMissing "no/such/dir/x.png" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/no/such/dir/x.png)
+# Stage 09 from the command line: a small GPU render says which context it used; what the port
+# cannot draw is one line.
+add_test(NAME Cli.GpuRenderNamesItsContext
+  COMMAND $<TARGET_FILE:rt> render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/test-output/gpu.png
+          --gpu --width 32 --height 24)
+set_tests_properties(Cli.GpuRenderNamesItsContext PROPERTIES LABELS "cli;gpu"
+  PASS_REGULAR_EXPRESSION "gpu: egl \\([a-z]+\\): .*GPU \\(egl\\)")
+rt_cli_error_test(GpuBvhVisitsWithoutBvh "draws the scene's BVH, and it has none"
+                  render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --gpu --mode bvh_visits)
+rt_cli_error_test(UberWithoutGpu "--uber chooses the GPU shader; add --gpu"
+                  render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --uber)
+# The third context: a GLFW window under Xvfb renders the image EGL renders (byte for byte).
+add_test(NAME Framework.GpuWindowMatchesEgl
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt>
+          -DSCENE=${PROJECT_SOURCE_DIR}/stages/07-textures/scenes/textured_whitted.json
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/gpu-window
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_gpu_window.cmake)
+# RESOURCE_LOCK xvfb: two `xvfb-run -a` starting at once can pick the same display number.
+set_tests_properties(Framework.GpuWindowMatchesEgl PROPERTIES LABELS "framework;gpu" TIMEOUT 300
+  SKIP_REGULAR_EXPRESSION "SKIPPED: xvfb-run is missing" RESOURCE_LOCK xvfb)
+add_test(NAME Cli.MalformedScenesGiveOneLineErrors
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DDIR=${bad}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/bad-scenes
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_bad_scenes.cmake)
+set_tests_properties(Cli.MalformedScenesGiveOneLineErrors PROPERTIES LABELS "cli;scene")
+# Damaged OBJ files (tests/bad_objs/expected.txt): one line naming the OBJ file and line, exit 1.
+add_test(NAME Cli.DamagedObjFilesGiveOneLineErrors
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DDIR=${CMAKE_CURRENT_SOURCE_DIR}/tests/bad_objs
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/bad-objs
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_bad_objs.cmake)
+set_tests_properties(Cli.DamagedObjFilesGiveOneLineErrors PROPERTIES LABELS "cli;scene")
+# The ray-tree debugger's command line: JSON output, and a pixel outside the image.
+add_test(NAME Cli.DebugPixelJson
+  COMMAND $<TARGET_FILE:rt> render ${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json
+          --debug-pixel 126,62 --debug-format json)
+set_tests_properties(Cli.DebugPixelJson PROPERTIES LABELS "cli"
+  PASS_REGULAR_EXPRESSION "\"tree\": {")
+# --gpu: what the shader computed; the JSON form is the CPU tree's only.
+add_test(NAME Cli.GpuDebugPixel
+  COMMAND $<TARGET_FILE:rt> render ${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json
+          --gpu --debug-pixel 100,80)
+set_tests_properties(Cli.GpuDebugPixel PROPERTIES LABELS "cli;gpu"
+  PASS_REGULAR_EXPRESSION "camera ray \\(depth 0\\) from .*pixel value \\(")
+rt_cli_error_test(GpuDebugPixelJson "--debug-format json is the CPU ray tree's"
+                  render ${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json --gpu
+                  --debug-pixel 100,80 --debug-format json)
+rt_cli_error_test(DebugPixelOutsideImage "--debug-pixel" render ${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json --debug-pixel 500,2)
+
+# Every scene file of every stage is in canonical form (`rt fmt`, docs/scene-format.md#canonical-form).
+file(GLOB rt_stage_scenes RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS
+     ${PROJECT_SOURCE_DIR}/stages/*/scenes/*.json)
+add_test(NAME Scenes.CanonicalForm COMMAND $<TARGET_FILE:rt> fmt --check ${rt_stage_scenes}
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(Scenes.CanonicalForm PROPERTIES LABELS "scenes;docs")
+# rt fmt itself: rewriting in place, --check naming the file, bad scenes in the loader's words.
+set(rt_fmt_tests ${CMAKE_CURRENT_SOURCE_DIR}/tests/scene_format)
+add_test(NAME Cli.FmtRewritesInPlaceOnce
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${rt_fmt_tests}/not_canonical.json
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/fmt -P ${rt_fmt_tests}/check_fmt_rewrite.cmake)
+set_tests_properties(Cli.FmtRewritesInPlaceOnce PROPERTIES LABELS "cli;scenes")
+rt_cli_error_test(FmtCheckNamesTheFile "not_canonical.json: not in canonical form"
+                  fmt --check ${rt_fmt_tests}/not_canonical.json)
+rt_cli_error_test(FmtBadSceneGivesTheLoaderError "20-negative-radius.json:3:55: error:"
+                  fmt ${bad}/20-negative-radius.json)
+rt_cli_error_test(FmtInvalidJson "01-trailing-comma.json:4:3: error: invalid JSON"
+                  fmt --check ${bad}/01-trailing-comma.json)
+rt_cli_error_test(FmtMissingFile "no-such-scene.json:1:1: error: no such file" fmt no-such-scene.json)
+
+# Only render/, apps/ and testing/ may include the stage API (framework/README.md).
+add_test(NAME Framework.TrustBoundary
+  COMMAND ${CMAKE_COMMAND} -DFRAMEWORK=${CMAKE_CURRENT_SOURCE_DIR}
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_trust_boundary.cmake)
+set_tests_properties(Framework.TrustBoundary PROPERTIES LABELS "framework")
+# No loop of includes between framework folders (docs/architecture.md#folders).
+add_test(NAME Tree.FolderCycles COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_folder_cycles.sh
+                                        ${CMAKE_CURRENT_SOURCE_DIR})
+set_tests_properties(Tree.FolderCycles PROPERTIES LABELS "framework;docs")
+# The size limits (docs/architecture.md#keeping-it-readable): files within 500 lines, functions
+# within 80, and the known exceptions (cmake/size_exceptions.txt) only shrinking. The course's
+# own code only: a student's tree is not held to it.
+if(RT_INSTRUCTOR)
+  add_test(NAME Tree.SizeLimits COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_sizes.sh
+                                             ${PROJECT_SOURCE_DIR})
+  set_tests_properties(Tree.SizeLimits PROPERTIES LABELS "framework;docs")
+endif()
+
+# The gallery page (rt gallery's index.html): every graded scene listed, every link resolves.
+# This and the viewer sessions below compare renders made with the reference solution, so they
+# are instructor-only (in a starter tree every scene fails and says nothing about the page).
+if(RT_INSTRUCTOR)
+add_test(NAME Gallery.IndexPage
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/gallery
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_gallery_page.cmake)
+set_tests_properties(Gallery.IndexPage PROPERTIES LABELS "render;gallery" TIMEOUT 900)
+endif()
+# The viewer under Xvfb (skipped, saying why, without xvfb-run): screenshots in
+# build/test-output/view/.
+if(TARGET rt_view AND RT_INSTRUCTOR)
+  foreach(session "ScriptedSession;05-recursion/scenes/whitted.json;session"
+                  "TextureFilterAndBvh;07-textures/scenes/textured_whitted.json;textures_session")
+    list(GET session 0 name)
+    list(GET session 1 scene)
+    list(GET session 2 script)
+    add_test(NAME View.${name}
+      COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${PROJECT_SOURCE_DIR}/stages/${scene}
+              -DSCRIPT=${CMAKE_CURRENT_SOURCE_DIR}/tests/view/${script}.txt
+              -DOUT=${PROJECT_BINARY_DIR}/test-output/view/${script}
+              -P ${PROJECT_SOURCE_DIR}/cmake/check_view.cmake)
+    set_tests_properties(View.${name} PROPERTIES LABELS "view;render" TIMEOUT 900
+      SKIP_REGULAR_EXPRESSION "SKIPPED: xvfb-run is missing" RESOURCE_LOCK xvfb)
+  endforeach()
+endif()
+if(TARGET rt_view)
+  # Without a display: one line saying why and what to run instead.
+  add_test(NAME Cli.ViewWithoutDisplay
+    COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
+            ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:rt>;view;${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json"
+            "-DEXPECT=run under a desktop or `xvfb-run" -P ${PROJECT_SOURCE_DIR}/cmake/check_cli_error.cmake)
+  set_tests_properties(Cli.ViewWithoutDisplay PROPERTIES LABELS "cli;view")
+  # A bad script line is one error naming the file and line, before any window opens.
+  rt_cli_error_test(ViewBadScript "bad_script.txt:3: error: unknown command \"frobnicate\""
+                    view ${PROJECT_SOURCE_DIR}/stages/05-recursion/scenes/whitted.json
+                    --script ${CMAKE_CURRENT_SOURCE_DIR}/tests/view/bad_script.txt)
+endif()
+
+# cmake/sanitizers/lsan.supp suppresses leaks allocated by calloc and realloc (llvmpipe's JIT
+# code); it may, because the project's own code calls neither.
+add_test(NAME Framework.NoCallocOrRealloc
+  COMMAND bash -c "! grep -rnE '\\b(calloc|realloc)[[:space:]]*\\(' framework stages grader tools --include=*.cpp --include=*.h"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(Framework.NoCallocOrRealloc PROPERTIES LABELS "framework")
+
+# Every student function has a judge proxy (stage_api/calls.h): the grading judge would otherwise
+# fail to link, or, for a function no test calls yet, the next test that does.
+add_test(NAME Framework.Remote.EveryStageFunctionHasAProxy
+  COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_remote_proxies.sh $<TARGET_FILE:rt_stages>
+          $<TARGET_FILE:rt_judge>)
+set_tests_properties(Framework.Remote.EveryStageFunctionHasAProxy PROPERTIES LABELS "framework;remote")
