@@ -51,11 +51,6 @@ using namespace rt;
 
 namespace {
 
-const std::map<std::string, RenderMode> kModes = {
-    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
-    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
-    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
-
 // "X,Y" inside the image, or a usage error.
 std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
     int x = -1, y = -1;
@@ -332,7 +327,8 @@ int main(int argc, char** argv) {
 
     try {
         if (*render_cmd) {
-            if (!render_args.mode_name.empty()) render_args.mode = kModes.at(render_args.mode_name);
+            if (!render_args.mode_name.empty())
+                render_args.mode = *parse_render_mode(render_args.mode_name);
             return run_render(render_args);
         }
         if (*gallery_cmd) return run_gallery(gallery.source, gallery.out, gallery.threads);
@@ -346,7 +342,7 @@ int main(int argc, char** argv) {
         if (*export_cmd)
             return run_export_shadertoy(
                 exporting.scene, exporting.output,
-                exporting.mode.empty() ? std::nullopt : std::optional(kModes.at(exporting.mode)));
+                exporting.mode.empty() ? std::nullopt : parse_render_mode(exporting.mode));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -13,11 +13,6 @@
 namespace rt::view {
 namespace {
 
-const std::map<std::string, RenderMode> kModes = {
-    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
-    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
-    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
-
 const Real kDegrees = Real(3.14159265358979323846 / 180.0);
 
 // Rodrigues' rotation of v about the unit axis k.
@@ -93,19 +88,18 @@ Scene SceneSource::make(const ViewSettings& settings) {
     return scene;
 }
 
-const char* setting_names() {
-    return "mode directions|normals|depth|primitive|shaded|bvh_visits, shadows on|off, "
-           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, gpu on|off, "
+std::string setting_names() {
+    return "mode " + join_render_mode_names("|") +
+           ", shadows on|off, max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, "
+           "gpu on|off, "
            "ambient|diffuse|specular|emissive|reflection|refraction|fresnel|environment on|off";
 }
 
 std::string set_by_name(ViewSettings& s, const std::string& name, const std::string& value) {
     if (name == "mode") {
-        const auto it = kModes.find(value);
-        if (it == kModes.end())
-            return "mode \"" + value +
-                   "\" is not one of directions, normals, depth, primitive, shaded, bvh_visits";
-        s.mode = it->second;
+        const std::optional<RenderMode> mode = parse_render_mode(value);
+        if (!mode) return "mode \"" + value + "\" is not one of " + join_render_mode_names(", ");
+        s.mode = *mode;
         return "";
     }
     const std::map<std::string, bool*> switches = {

@@ -50,7 +50,7 @@ class SceneSource {
 std::string set_by_name(ViewSettings& settings, const std::string& name, const std::string& value);
 
 // The names of set_by_name, for messages.
-const char* setting_names();
+std::string setting_names();
 
 // Camera controls about a pivot `distance` in front of the eye (along -w).
 // Orbit: turns the eye about the pivot by yaw (about `up`, the scene camera's v, so the horizon
