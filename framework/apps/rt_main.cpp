@@ -29,6 +29,7 @@
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "gl/headless_context.h"
 #include "image/compare.h"
 #include "image/image.h"
@@ -221,31 +222,16 @@ int run_gl_info(bool window) {
     return 0;
 }
 
-// Writes `text` to `file` through a temporary file beside it, so a failure never leaves half a
-// scene behind. A symbolic link keeps pointing at the rewritten file.
+// Writes `text` over `file` atomically (core/text_file.h), so a failure never leaves half a scene
+// behind. A symbolic link keeps pointing at the rewritten file, which keeps its permissions.
 void replace_file(const fs::path& file, const std::string& text) {
-    const fs::path target = fs::is_symlink(file) ? fs::canonical(file) : file;
-    const fs::path temporary = target.string() + ".rt-fmt.tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw std::runtime_error(
-                file.string() +
-                ":1:1: error: cannot write the file; check its folder's permissions");
-        }
-    }
-    std::error_code ec;
-    fs::permissions(temporary, fs::status(target).permissions(), ec);
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw std::runtime_error(file.string() + ":1:1: error: cannot replace the file (" +
-                                 ec.message() + ")");
+    try {
+        write_text_atomically(file, text, {.follow_link = true, .keep_permissions = true});
+    } catch (const AtomicWriteError& e) {
+        throw std::runtime_error(
+            file.string() + ":1:1: error: " +
+            (e.renaming ? "cannot replace the file (" + e.reason + ")"
+                        : std::string("cannot write the file; check its folder's permissions")));
     }
 }
 

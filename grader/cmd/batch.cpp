@@ -75,7 +75,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     csv += ",status,seconds\n";
     for (const auto& r : rows)
         if (!r.empty()) csv += r + "\n";
-    write_atomically(out / "scores.csv", csv);
+    write_text_atomically(out / "scores.csv", csv);
     log << "scores: " << (out / "scores.csv").string() << "\n";
     return 0;
 }
