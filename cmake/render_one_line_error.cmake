@@ -15,3 +15,21 @@ function(render_one_line_error scene err_var problem_var)
   set(${err_var} "${err}" PARENT_SCOPE)
   set(${problem_var} "${problem}" PARENT_SCOPE)
 endfunction()
+
+# require_cases(<count> <minimum> <what>): stops unless there are at least <minimum> cases
+# ("expected at least <minimum> <what>, found <count>"), then makes OUT.
+function(require_cases count minimum what)
+  if(count LESS minimum)
+    message(FATAL_ERROR "expected at least ${minimum} ${what}, found ${count}")
+  endif()
+  file(MAKE_DIRECTORY ${OUT})
+endfunction()
+
+# report_cases(<failures> <what> <summary>): stops with "<what> not reported cleanly:<failures>"
+# when there are failures, else prints <summary>.
+function(report_cases failures what summary)
+  if(failures)
+    message(FATAL_ERROR "${what} not reported cleanly:${failures}")
+  endif()
+  message(STATUS "${summary}")
+endfunction()

@@ -5,8 +5,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -20,39 +18,6 @@ std::string_view trim(std::string_view s) {
     while (!s.empty() && blank(s.front())) s.remove_prefix(1);
     while (!s.empty() && blank(s.back())) s.remove_suffix(1);
     return s;
-}
-
-std::string read_text(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read " + file.string());
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-bool read_text_if(const fs::path& file, std::string& content) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    content = std::move(s).str();
-    return !in.bad();
-}
-
-void write_text(const fs::path& file, std::string_view text) {
-    if (file.has_parent_path()) fs::create_directories(file.parent_path());
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), std::streamsize(text.size()));
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
-void write_atomically(const fs::path& file, std::string_view text) {
-    fs::path tmp = file;
-    tmp += ".tmp" + std::to_string(getpid());
-    fs::remove_all(tmp);
-    write_text(tmp, text);
-    if (fs::is_directory(fs::symlink_status(file))) fs::remove_all(file);  // planted by a child
-    fs::rename(tmp, file);
 }
 
 std::string shell_quote(const std::string& word) {
@@ -177,29 +142,6 @@ std::string base64(std::string_view data) {
         out += table[(v >> 12) & 63];
         out += i + 1 < data.size() ? table[(v >> 6) & 63] : '=';
         out += '=';
-    }
-    return out;
-}
-
-std::string html_escape(std::string_view text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
     }
     return out;
 }

@@ -1,4 +1,5 @@
-// Small helpers of the trusted grader: files, hashing, shell commands it runs itself.
+// Small helpers of the trusted grader: hashing, shell commands it runs itself. Files and HTML
+// escaping: core/text_file.h.
 #pragma once
 
 #include <chrono>
@@ -9,18 +10,12 @@
 #include <string_view>
 #include <vector>
 
+#include "core/text_file.h"
+
 namespace rt::grader {
 
 // Without leading and trailing white space (' ', \t, \n, \r, \v, \f).
 std::string_view trim(std::string_view s);
-
-std::string read_text(const std::filesystem::path& file);
-// The whole file into `content`; false (and `content` unspecified) when it cannot be read.
-bool read_text_if(const std::filesystem::path& file, std::string& content);
-void write_text(const std::filesystem::path& file, std::string_view text);
-// Writes next to `file` and renames, so readers never see half a file and a symlink planted
-// at `file` is replaced rather than followed.
-void write_atomically(const std::filesystem::path& file, std::string_view text);
 
 std::string shell_quote(const std::string& word);
 // Runs a trusted command line through /bin/sh; returns its exit code, output in `output`.
@@ -42,7 +37,6 @@ std::string two_digits(int n);  // "07": stage numbers as folders and test names
 bool glob_match(std::string_view pattern, std::string_view text);
 
 std::string base64(std::string_view data);
-std::string html_escape(std::string_view text);
 // Drops ANSI escapes and bytes that are not printable UTF-8-ish text.
 std::string clean_output(std::string_view text);
 

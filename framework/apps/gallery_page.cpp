@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/text_file.h"
 #include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
@@ -15,23 +16,6 @@ namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string html(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '&')
-            out += "&amp;";
-        else if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
-}
 
 // A link from the gallery folder to `target`, with '/' separators (a browser's form).
 std::string relative_link(const fs::path& target, const fs::path& from) {
@@ -132,22 +116,22 @@ void GalleryPage::write_scene(std::ostream& page, const Entry& e) {
         badge = e.result.passed ? "pass" : p < e.fail_percent ? "partial credit" : "FAIL";
     }
     if (!e.graded) badge += " (not graded)";
-    page << "<div id=\"" << html(e.stage + "-" + e.name) << "\" class=\"scene " << status
-         << "\" data-scene=\"" << html(e.stage + "/" + e.name) << "\" data-graded=\""
+    page << "<div id=\"" << html_escape(e.stage + "-" + e.name) << "\" class=\"scene " << status
+         << "\" data-scene=\"" << html_escape(e.stage + "/" + e.name) << "\" data-graded=\""
          << (e.graded ? "true" : "false") << "\" data-compare=\"" << compare_text(e) << "\">\n<b>"
-         << html(e.name) << "</b> <span class=\"badge\">" << html(badge)
+         << html_escape(e.name) << "</b> <span class=\"badge\">" << html_escape(badge)
          << "</span>\n<div class=\"cols\">\n";
     const auto column = [&](const std::string& file, const char* label) {
         if (file.empty()) return;
-        page << "<div><a href=\"" << html(file) << "\"><img src=\"" << html(file) << "\" alt=\""
-             << label << "\"></a><br>" << label << "</div>\n";
+        page << "<div><a href=\"" << html_escape(file) << "\"><img src=\"" << html_escape(file)
+             << "\" alt=\"" << label << "\"></a><br>" << label << "</div>\n";
     };
     column(e.image, "render");
     column(e.reference, "reference");
     column(e.difference, "difference");
     page << "</div>\n";
     if (e.compared)
-        page << "<div class=\"metric\">" << html(e.result.summary()) << " (tolerance "
+        page << "<div class=\"metric\">" << html_escape(e.result.summary()) << " (tolerance "
              << e.options.tolerance << ", pass up to " << e.options.max_failing_percent << "%"
              << (e.options.block > 0 ? ", " + std::to_string(e.options.block) + "x" +
                                            std::to_string(e.options.block) + "-block means"
@@ -176,8 +160,9 @@ fs::path GalleryPage::write() const {
     bool first = true;
     for (const Entry& e : entries_) {
         if (!e.graded || (e.compared && e.result.passed)) continue;
-        page << (first ? "<p><b>Not passing:</b> " : ", ") << "<a href=\"#" << html(e.stage) << "-"
-             << html(e.name) << "\">" << html(e.stage + "/" + e.name) << "</a>";
+        page << (first ? "<p><b>Not passing:</b> " : ", ") << "<a href=\"#" << html_escape(e.stage)
+             << "-" << html_escape(e.name) << "\">" << html_escape(e.stage + "/" + e.name)
+             << "</a>";
         first = false;
     }
     if (!first) page << "</p>\n";
@@ -187,8 +172,8 @@ fs::path GalleryPage::write() const {
             if (!stage.empty()) page << "</section>\n";
             stage = e.stage;
             const Stage& s = stages_.at(stage);
-            page << "<section id=\"" << html(stage) << "\">\n<h2>" << html(stage) << ": "
-                 << html(s.title) << " <small>(<a href=\"" << html(s.handout)
+            page << "<section id=\"" << html_escape(stage) << "\">\n<h2>" << html_escape(stage)
+                 << ": " << html_escape(s.title) << " <small>(<a href=\"" << html_escape(s.handout)
                  << "\">handout</a>)</small></h2>\n";
         }
         write_scene(page, e);

@@ -16,8 +16,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
                            "draw the ray tree of pixel X,Y onto the image: camera red, shadow "
                            "magenta, reflection blue, refraction yellow");
     render_cmd->add_option("--mode", render_args.mode_name, "override the scene's mode")
-        ->check(
-            CLI::IsMember({"directions", "normals", "depth", "primitive", "shaded", "bvh_visits"}));
+        ->check(CLI::IsMember(render_mode_names()));
     return render_cmd;
 }
 

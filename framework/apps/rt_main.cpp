@@ -29,6 +29,7 @@
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
@@ -49,11 +50,6 @@ namespace fs = std::filesystem;
 using namespace rt;
 
 namespace {
-
-const std::map<std::string, RenderMode> kModes = {
-    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
-    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
-    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
 
 // "X,Y" inside the image, or a usage error.
 std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
@@ -212,31 +208,16 @@ int run_gl_context_info(const std::string& kind) {
     return 0;
 }
 
-// Writes `text` to `file` through a temporary file beside it, so a failure never leaves half a
-// scene behind. A symbolic link keeps pointing at the rewritten file.
+// Writes `text` over `file` atomically (core/text_file.h), so a failure never leaves half a scene
+// behind. A symbolic link keeps pointing at the rewritten file, which keeps its permissions.
 void replace_file(const fs::path& file, const std::string& text) {
-    const fs::path target = fs::is_symlink(file) ? fs::canonical(file) : file;
-    const fs::path temporary = target.string() + ".rt-fmt.tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw std::runtime_error(
-                file.string() +
-                ":1:1: error: cannot write the file; check its folder's permissions");
-        }
-    }
-    std::error_code ec;
-    fs::permissions(temporary, fs::status(target).permissions(), ec);
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw std::runtime_error(file.string() + ":1:1: error: cannot replace the file (" +
-                                 ec.message() + ")");
+    try {
+        write_text_atomically(file, text, {.follow_link = true, .keep_permissions = true});
+    } catch (const AtomicWriteError& e) {
+        throw std::runtime_error(
+            file.string() + ":1:1: error: " +
+            (e.renaming ? "cannot replace the file (" + e.reason + ")"
+                        : std::string("cannot write the file; check its folder's permissions")));
     }
 }
 
@@ -318,7 +299,8 @@ int main(int argc, char** argv) {
 
     try {
         if (*render_cmd) {
-            if (!render_args.mode_name.empty()) render_args.mode = kModes.at(render_args.mode_name);
+            if (!render_args.mode_name.empty())
+                render_args.mode = *parse_render_mode(render_args.mode_name);
             return run_render(render_args);
         }
         if (*gallery_cmd) return run_gallery(gallery.source, gallery.out, gallery.threads);
@@ -332,7 +314,7 @@ int main(int argc, char** argv) {
         if (*export_cmd)
             return run_export_shadertoy(
                 exporting.scene, exporting.output,
-                exporting.mode.empty() ? std::nullopt : std::optional(kModes.at(exporting.mode)));
+                exporting.mode.empty() ? std::nullopt : parse_render_mode(exporting.mode));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

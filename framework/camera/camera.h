@@ -29,9 +29,7 @@ struct Camera {
 Camera make_look_at_camera(Projection projection, Vec3 eye, Vec3 target, Vec3 up,
                            Real vertical_fov_degrees, Real view_height);
 
-// Turns the camera frame about v by `degrees` (positive: to the right), keeping it orthonormal
-// (rt render --yaw, the grader's unseen views).
-void turn_camera(Camera& camera, double degrees);
+// Moving a camera (turn, orbit, pan, zoom, projection): camera/camera_moves.h.
 
 // The primary ray through a pixel calls stage 01's code: render/camera_ray.h.
 

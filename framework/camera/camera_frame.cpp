@@ -17,13 +17,4 @@ Camera make_look_at_camera(Projection projection, Vec3 eye, Vec3 target, Vec3 up
     return camera;
 }
 
-void turn_camera(Camera& camera, double degrees) {
-    const Real a = Real(degrees * 3.14159265358979323846 / 180.0);
-    const Real c = std::cos(a), s = std::sin(a);
-    const Vec3 u = c * camera.u + s * camera.w;
-    const Vec3 w = c * camera.w - s * camera.u;
-    camera.u = u;
-    camera.w = w;
-}
-
 }  // namespace rt

@@ -11,6 +11,11 @@
 
 namespace rt {
 
+// The threads "all cores" means: the hardware's count, at least 1 (the standard may answer 0).
+inline int default_thread_count() {
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 // Calls work(i) for every i in [0, count) on `threads` threads at most (the caller's one among
 // them, and never more threads than items); returns when every item is done.
 template <typename Work>

@@ -1,6 +1,7 @@
 // splitmix64 (Steele, Lea and Flood 2014): a tiny generator whose output is fixed by its seed, the
 // same on every machine (unlike the standard distributions). Used where generated data must be
-// reproducible bit for bit: procedural meshes, the BVH benchmark's rays.
+// reproducible bit for bit: procedural meshes, the BVH benchmark's rays, the seeds of stage 10's
+// sample streams (render/sampled.cpp).
 #pragma once
 
 #include <cstdint>

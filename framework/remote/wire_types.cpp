@@ -112,21 +112,21 @@ void put(Writer& w, const TextureView& v) {
     w.pod(std::uint64_t(n));
     w.bytes(v.texels, n * sizeof(Color));
 }
-void get(Reader& r, OwnedTextureView& v) {
+void get(Reader& r, Owned<TextureView>& v) {
     get(r, v.view.width);
     get(r, v.view.height);
     get(r, v.view.srgb);
-    get(r, v.texels);
-    v.view.texels = v.texels.empty() ? nullptr : v.texels.data();
+    get(r, v.data);
+    v.view.texels = v.data.empty() ? nullptr : v.data.data();
 }
 
 void put(Writer& w, const LightVisibility& v) {
     w.pod(std::uint64_t(v.per_light.size()));
     w.bytes(v.per_light.data(), v.per_light.size_bytes());
 }
-void get(Reader& r, OwnedLightVisibility& v) {
-    get(r, v.colours);
-    v.view.per_light = v.colours;
+void get(Reader& r, Owned<LightVisibility>& v) {
+    get(r, v.data);
+    v.view.per_light = v.data;
 }
 
 // sizeof(Scene) (with float) when its field list was written.

@@ -104,34 +104,28 @@ void get(Reader& r, RenderOptions& v);
 void put(Writer& w, const GpuRenderOptions& v);
 void get(Reader& r, GpuRenderOptions& v);
 
-// A texture view crosses with its texels; the worker's copy points into its own storage.
-void put(Writer& w, const TextureView& v);
-struct OwnedTextureView {
-    std::vector<Color> texels;
-    TextureView view;
+// A texture view crosses with its texels, light visibility with its per-light colours; the
+// worker's copy of the view points into its own storage.
+template <typename View>
+struct Owned {
+    std::vector<Color> data;
+    View view;
 };
-void get(Reader& r, OwnedTextureView& v);
-inline const TextureView& view(const OwnedTextureView& v) {
+template <typename View>
+const View& view(const Owned<View>& v) {
     return v.view;
 }
 template <>
 struct StorageFor<TextureView> {
-    using type = OwnedTextureView;
+    using type = Owned<TextureView>;
 };
-
-// Light visibility likewise, with its per-light colours.
-void put(Writer& w, const LightVisibility& v);
-struct OwnedLightVisibility {
-    std::vector<Color> colours;
-    LightVisibility view;
-};
-void get(Reader& r, OwnedLightVisibility& v);
-inline const LightVisibility& view(const OwnedLightVisibility& v) {
-    return v.view;
-}
 template <>
 struct StorageFor<LightVisibility> {
-    using type = OwnedLightVisibility;
+    using type = Owned<LightVisibility>;
 };
+void put(Writer& w, const TextureView& v);
+void get(Reader& r, Owned<TextureView>& v);
+void put(Writer& w, const LightVisibility& v);
+void get(Reader& r, Owned<LightVisibility>& v);
 
 }  // namespace rt::remote

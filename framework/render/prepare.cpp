@@ -1,6 +1,6 @@
 #include "render/prepare.h"
 
-#include "camera/camera.h"
+#include "camera/camera_moves.h"
 #include "render/oiio_textures.h"
 
 namespace rt {

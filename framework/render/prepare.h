@@ -22,7 +22,7 @@ namespace rt {
 
 struct SceneOverrides {
     int width = 0, height = 0;  // > 0: the image size instead of the scene's
-    double yaw_degrees = 0;     // turns the camera about its up axis (camera/camera.h)
+    double yaw_degrees = 0;     // turns the camera about its up axis (camera/camera_moves.h)
     std::optional<Accelerator> accelerator{};
     // For every image texture; Oiio and OiioAniso load OpenImageIO's plug-in.
     std::optional<TextureLookup> texture_lookup{};

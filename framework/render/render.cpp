@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include "core/not_implemented.h"
 #include "core/parallel_for.h"
@@ -138,7 +137,7 @@ void map_visits(const std::vector<Real>& visits, Image& image) {
 
 int resolve_thread_count(int threads) {
     if (threads > 0) return threads;
-    return std::max(1u, std::thread::hardware_concurrency());
+    return default_thread_count();
 }
 
 Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {

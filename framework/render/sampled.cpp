@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "core/split_mix64.h"
 #include "render/camera_ray.h"
 #include "render/shade.h"
 #include "stage_api/stage10.h"
@@ -9,22 +10,15 @@
 namespace rt {
 namespace {
 
-// SplitMix64's finaliser: spreads neighbouring pixel indices over the generator's state.
-std::uint64_t mix(std::uint64_t z) {
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
 // As many random bits as Real holds exactly (24 for float, 32 for double), so next() < 1.
 constexpr int kBits =
     std::numeric_limits<Real>::digits < 32 ? std::numeric_limits<Real>::digits : 32;
 
 }  // namespace
 
+// SplitMix64's hash spreads neighbouring pixel indices over the generator's state.
 SampleStream::SampleStream(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample)
-    : rng_(mix(seed ^ mix(pixel)), sample) {}
+    : rng_(SplitMix64::hash(seed ^ SplitMix64::hash(pixel)), sample) {}
 
 Real SampleStream::next() {
     return Real(rng_() >> (32 - kBits)) * (Real(1) / Real(std::uint64_t(1) << kBits));

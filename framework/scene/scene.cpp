@@ -202,22 +202,31 @@ void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2
     a = scene.uvs[v[0]], b = scene.uvs[v[1]], c = scene.uvs[v[2]];
 }
 
+namespace {
+// RenderMode's names, in the enum's order.
+constexpr std::array<const char*, kRenderModeCount> kRenderModeNames = {
+    "directions", "normals", "depth", "primitive", "shaded", "bvh_visits"};
+}  // namespace
+
 const char* to_string(RenderMode mode) {
-    switch (mode) {
-        case RenderMode::Directions:
-            return "directions";
-        case RenderMode::Normals:
-            return "normals";
-        case RenderMode::Depth:
-            return "depth";
-        case RenderMode::PrimitiveId:
-            return "primitive";
-        case RenderMode::Shaded:
-            return "shaded";
-        case RenderMode::BvhVisits:
-            return "bvh_visits";
-    }
-    return "?";
+    const int i = int(mode);
+    return i >= 0 && i < kRenderModeCount ? kRenderModeNames[std::size_t(i)] : "?";
+}
+
+std::optional<RenderMode> parse_render_mode(std::string_view name) {
+    for (int i = 0; i < kRenderModeCount; ++i)
+        if (name == kRenderModeNames[std::size_t(i)]) return RenderMode(i);
+    return std::nullopt;
+}
+
+std::vector<std::string> render_mode_names() {
+    return {kRenderModeNames.begin(), kRenderModeNames.end()};
+}
+
+std::string join_render_mode_names(const std::string& separator) {
+    std::string joined;
+    for (const char* name : kRenderModeNames) joined += (joined.empty() ? "" : separator) + name;
+    return joined;
 }
 
 const char* to_string(Accelerator accelerator) {

@@ -8,7 +8,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -165,6 +167,7 @@ struct Features {
 };
 
 enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded, BvhVisits };
+inline constexpr int kRenderModeCount = int(RenderMode::BvhVisits) + 1;
 
 // How nearest-hit queries find the surface: stage 02's loop over every primitive, or the stage 06
 // BVH (built once after loading, by build_acceleration in render/accelerate.h).
@@ -283,7 +286,12 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
 // in a scene that has some holds (0, 0).
 void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2& b, Vec2& c);
 
+// A mode's name in scene files, on the command line and in the viewer: "directions", "normals",
+// "depth", "primitive", "shaded", "bvh_visits" (one table, scene.cpp).
 const char* to_string(RenderMode mode);
+std::optional<RenderMode> parse_render_mode(std::string_view name);  // nullopt: no such mode
+std::vector<std::string> render_mode_names();                        // in RenderMode's order
+std::string join_render_mode_names(const std::string& separator);  // e.g. "directions|normals|…"
 const char* to_string(Accelerator accelerator);
 
 }  // namespace rt

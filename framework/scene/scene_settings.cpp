@@ -51,12 +51,8 @@ void SceneSections::read_render(const json& root) {
                {"mode", "max_depth", "shadows", "fresnel", "accelerator", "samples_per_pixel",
                 "seed", "filter", "indirect", "occlusion_distance"});
     if (const json* v = member(*render, "mode")) {
-        static const std::vector<std::string> modes{"directions", "normals", "depth",
-                                                    "primitive",  "shaded",  "bvh_visits"};
-        static const RenderMode values[] = {RenderMode::Directions, RenderMode::Normals,
-                                            RenderMode::Depth,      RenderMode::PrimitiveId,
-                                            RenderMode::Shaded,     RenderMode::BvhVisits};
-        scene_.mode = values[choice(*v, "/render/mode", modes)];
+        static const std::vector<std::string> modes = render_mode_names();
+        scene_.mode = RenderMode(choice(*v, "/render/mode", modes));
     }
     if (const json* v = member(*render, "max_depth")) {
         double d = whole_number(*v, "/render/max_depth");

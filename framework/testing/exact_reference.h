@@ -23,35 +23,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 #include <vector>
 
 #include "core/ray.h"
 #include "scene/scene.h"
+#include "testing/random.h"
 
 namespace rt::exact {
 
-// Uniform numbers from a fixed-seed 64-bit Mersenne twister, mapped by hand (the standard
-// distributions differ between library implementations; this mapping does not).
-struct Rng {
-    std::mt19937_64 engine;
-    explicit Rng(std::uint64_t seed) : engine(seed) {}
-    double uniform(double lo, double hi) {
-        return lo + (hi - lo) * double(engine() >> 11) * 0x1p-53;
-    }
-    int integer(int lo, int hi) { return lo + int(engine() % std::uint64_t(hi - lo + 1)); }
-    Vec3 vec(double lo, double hi) {
-        const double x = uniform(lo, hi), y = uniform(lo, hi), z = uniform(lo, hi);
-        return Vec3(Real(x), Real(y), Real(z));
-    }
-    Vec3 unit() {
-        for (;;) {
-            const Vec3 v = vec(-1, 1);
-            const Real l = glm::length(v);
-            if (l > Real(0.1) && l <= 1) return v / l;
-        }
-    }
-};
+// The seeded generator of the exact cases and the accuracy lab (testing/random.h).
+using Rng = testing::Random;
 
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using FT = Epeck::FT;  // an exact rational (lazily evaluated)

@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "camera/camera_moves.h"
 #include "core/source_dir.h"
 #include "render/gpu/gpu_render.h"
 #include "render/render.h"

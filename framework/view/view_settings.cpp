@@ -13,19 +13,6 @@
 namespace rt::view {
 namespace {
 
-const std::map<std::string, RenderMode> kModes = {
-    {"directions", RenderMode::Directions}, {"normals", RenderMode::Normals},
-    {"depth", RenderMode::Depth},           {"primitive", RenderMode::PrimitiveId},
-    {"shaded", RenderMode::Shaded},         {"bvh_visits", RenderMode::BvhVisits}};
-
-const Real kDegrees = Real(3.14159265358979323846 / 180.0);
-
-// Rodrigues' rotation of v about the unit axis k.
-Vec3 rotate(const Vec3& v, const Vec3& k, Real degrees) {
-    const Real a = degrees * kDegrees, c = std::cos(a), s = std::sin(a);
-    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1 - c);
-}
-
 std::optional<bool> on_off(const std::string& value) {
     if (value == "on" || value == "true" || value == "1") return true;
     if (value == "off" || value == "false" || value == "0") return false;
@@ -93,19 +80,18 @@ Scene SceneSource::make(const ViewSettings& settings) {
     return scene;
 }
 
-const char* setting_names() {
-    return "mode directions|normals|depth|primitive|shaded|bvh_visits, shadows on|off, "
-           "max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, gpu on|off, "
+std::string setting_names() {
+    return "mode " + join_render_mode_names("|") +
+           ", shadows on|off, max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, "
+           "gpu on|off, "
            "ambient|diffuse|specular|emissive|reflection|refraction|fresnel|environment on|off";
 }
 
 std::string set_by_name(ViewSettings& s, const std::string& name, const std::string& value) {
     if (name == "mode") {
-        const auto it = kModes.find(value);
-        if (it == kModes.end())
-            return "mode \"" + value +
-                   "\" is not one of directions, normals, depth, primitive, shaded, bvh_visits";
-        s.mode = it->second;
+        const std::optional<RenderMode> mode = parse_render_mode(value);
+        if (!mode) return "mode \"" + value + "\" is not one of " + join_render_mode_names(", ");
+        s.mode = *mode;
         return "";
     }
     const std::map<std::string, bool*> switches = {
@@ -143,44 +129,6 @@ std::string set_by_name(ViewSettings& s, const std::string& name, const std::str
         return "";
     }
     return "unknown setting \"" + name + "\"; settings: " + setting_names();
-}
-
-void orbit(Camera& camera, Real distance, const Vec3& up, Real yaw_degrees, Real pitch_degrees) {
-    const Vec3 pivot = camera.eye - camera.w * distance;
-    Vec3 offset = rotate(camera.eye - pivot, up, -yaw_degrees);
-    const Vec3 right = glm::normalize(glm::cross(up, offset));
-    const Vec3 pitched = rotate(offset, right, pitch_degrees);
-    // Keep at least ~3 degrees from the up axis, where the look-at frame is undefined.
-    if (std::abs(glm::dot(glm::normalize(pitched), up)) < Real(0.998)) offset = pitched;
-    camera = make_look_at_camera(camera.projection, pivot + offset, pivot, up,
-                                 camera.vertical_fov_degrees, camera.view_height);
-}
-
-void pan(Camera& camera, Real distance, Real right, Real up) {
-    const Real height = camera.projection == Projection::Orthographic
-                            ? camera.view_height
-                            : 2 * distance * std::tan(camera.vertical_fov_degrees * kDegrees / 2);
-    camera.eye += (camera.u * right + camera.v * up) * height;
-}
-
-void zoom(Camera& camera, Real& distance, Real factor) {
-    if (camera.projection == Projection::Orthographic) {
-        camera.view_height *= factor;
-        return;
-    }
-    const Vec3 pivot = camera.eye - camera.w * distance;
-    distance = std::max(distance * factor, Real(1e-3));
-    camera.eye = pivot + camera.w * distance;
-}
-
-void set_projection(Camera& camera, Real distance, Projection projection) {
-    if (camera.projection == projection) return;
-    if (projection == Projection::Orthographic)
-        camera.view_height = 2 * distance * std::tan(camera.vertical_fov_degrees * kDegrees / 2);
-    else
-        camera.vertical_fov_degrees = std::clamp(
-            2 * std::atan(camera.view_height / (2 * distance)) / kDegrees, Real(1), Real(170));
-    camera.projection = projection;
 }
 
 namespace {

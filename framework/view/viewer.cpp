@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "camera/camera_moves.h"
 #include "core/source_dir.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
@@ -95,7 +96,7 @@ void Viewer::click(int x, int y) {
 }
 
 void Viewer::set_projection(Projection projection) {
-    view::set_projection(settings.camera, pivot_distance_, projection);
+    rt::set_projection(settings.camera, pivot_distance_, projection);
     settings_changed();
 }
 

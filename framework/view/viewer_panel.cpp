@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <array>
 #include <cstdio>
 #include <string>
 
@@ -11,8 +12,6 @@
 namespace rt::view {
 namespace {
 
-const char* const kModeNames[] = {"directions", "normals", "depth",
-                                  "primitive",  "shaded",  "bvh_visits"};  // RenderMode's order
 const char* const kFilterNames[] = {"as the scene says", "nearest", "bilinear"};
 
 const char* kind_label(RayNode::Kind kind) {
@@ -127,7 +126,12 @@ void settings(Viewer& viewer) {
     ViewSettings& s = viewer.settings;
     bool changed = false;
     int mode = int(s.mode);
-    if (ImGui::Combo("mode", &mode, kModeNames, IM_ARRAYSIZE(kModeNames))) {
+    static const auto names = [] {
+        std::array<const char*, kRenderModeCount> all{};
+        for (int i = 0; i < kRenderModeCount; ++i) all[std::size_t(i)] = to_string(RenderMode(i));
+        return all;
+    }();
+    if (ImGui::Combo("mode", &mode, names.data(), kRenderModeCount)) {
         s.mode = RenderMode(mode);
         changed = true;
     }

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <mutex>
-#include <thread>
 
+#include "core/parallel_for.h"
 #include "util.h"
 #include "workspace/workspace_prepare.h"
 
@@ -28,54 +28,44 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     std::vector<std::string> rows(submissions.size());
     std::vector<int> stage_numbers;
     std::mutex mutex;
-    std::size_t next = 0;
-    const int per_job_tests = std::max(1, int(std::thread::hardware_concurrency()) / jobs);
-    auto worker = [&]() {
-        for (;;) {
-            std::size_t i;
-            {
-                std::lock_guard lock(mutex);
-                if (g_interrupted || next >= submissions.size()) return;
-                i = next++;
-            }
-            std::string name = submissions[i].filename().string();
-            if (name.ends_with(".zip")) name.resize(name.size() - 4);
-            name = clean_output(name);
-            GradeOptions o = base;
-            o.submission = submissions[i];
-            o.results = out / name / "results.json";
-            o.html = out / name / "report.html";
-            o.quiet = true;
-            o.jobs = per_job_tests;
-            std::string row = "\"" + name + "\",";
-            try {
-                // One broken submission never stops the batch: anything thrown is its row's error.
-                const GradeSummary s = grade_submission(o, log);
-                char cell[64];
-                std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
+    const int per_job_tests = std::max(1, default_thread_count() / jobs);
+    // Each submission's row goes to its own index, so the CSV keeps the sorted order.
+    parallel_for(submissions.size(), jobs, [&](std::size_t i) {
+        if (g_interrupted) return;  // once interrupted, the rest are skipped
+        std::string name = submissions[i].filename().string();
+        if (name.ends_with(".zip")) name.resize(name.size() - 4);
+        name = clean_output(name);
+        GradeOptions o = base;
+        o.submission = submissions[i];
+        o.results = out / name / "results.json";
+        o.html = out / name / "report.html";
+        o.quiet = true;
+        o.jobs = per_job_tests;
+        std::string row = "\"" + name + "\",";
+        try {
+            // One broken submission never stops the batch: anything thrown is its row's error.
+            const GradeSummary s = grade_submission(o, log);
+            char cell[64];
+            std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
+            row += cell;
+            for (double v : s.stage_scores) {
+                std::snprintf(cell, sizeof cell, ",%g", v);
                 row += cell;
-                for (double v : s.stage_scores) {
-                    std::snprintf(cell, sizeof cell, ",%g", v);
-                    row += cell;
-                }
-                row += s.build_failed ? ",build failed" : ",ok";
-                std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
-                row += cell;
-                std::lock_guard lock(mutex);
-                if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
-                log << name << ": " << s.score << " / " << s.max_score << "\n";
-            } catch (const std::exception& e) {
-                row += "0,0,grader error: " + clean_output(e.what());
-                std::lock_guard lock(mutex);
-                log << name << ": grader error: " << e.what() << "\n";
             }
+            row += s.build_failed ? ",build failed" : ",ok";
+            std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
+            row += cell;
             std::lock_guard lock(mutex);
-            rows[i] = row;
+            if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
+            log << name << ": " << s.score << " / " << s.max_score << "\n";
+        } catch (const std::exception& e) {
+            row += "0,0,grader error: " + clean_output(e.what());
+            std::lock_guard lock(mutex);
+            log << name << ": grader error: " << e.what() << "\n";
         }
-    };
-    std::vector<std::thread> pool;
-    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+        std::lock_guard lock(mutex);
+        rows[i] = row;
+    });
     std::string csv = "submission,score,max_score";
     char cell[32];
     for (int n : stage_numbers) {
@@ -85,7 +75,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     csv += ",status,seconds\n";
     for (const auto& r : rows)
         if (!r.empty()) csv += r + "\n";
-    write_atomically(out / "scores.csv", csv);
+    write_text_atomically(out / "scores.csv", csv);
     log << "scores: " << (out / "scores.csv").string() << "\n";
     return 0;
 }

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <thread>
 
+#include "core/parallel_for.h"
 #include "course/manifest.h"
 #include "grading/image_scoring.h"
 #include "image/image.h"
@@ -80,8 +80,7 @@ int run_compare(const CompareRequest& r, std::ostream& log) {
     char tmpl[] = "/tmp/rt-grade-compare-XXXXXX";
     if (!mkdtemp(tmpl)) return 2;
     const fs::path scratch = tmpl;
-    const int threads =
-        r.threads > 0 ? r.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = r.threads > 0 ? r.threads : default_thread_count();
     int failed = 0, total = 0;
     for (const auto& s : specs) {
         if (!r.stages.empty() && std::count(r.stages.begin(), r.stages.end(), s.number) == 0)

@@ -321,8 +321,7 @@ class Runner {
 
 void run_tests_and_scenes(Grading& g) {
     Runner runner(g);
-    const int jobs =
-        g.o.jobs > 0 ? g.o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = g.o.jobs > 0 ? g.o.jobs : default_thread_count();
     parallel_for(g.tasks.size(), jobs, [&](std::size_t i) {
         if (!g_interrupted) runner.run(i);  // once interrupted, the rest are skipped
     });

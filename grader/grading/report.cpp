@@ -51,7 +51,7 @@ void write_results_json(const Report& report, const fs::path& file) {
         {"tests", tests},
     };
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
-    write_atomically(file, results.dump(2) + "\n");
+    write_text_atomically(file, results.dump(2) + "\n");
 }
 
 namespace {
@@ -177,7 +177,7 @@ void write_html_report(const Report& report, const fs::path& file) {
     for (const auto& s : report.stages) h += stage_html(report, s);
     h += "</body></html>\n";
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
-    write_atomically(file, h);
+    write_text_atomically(file, h);
 }
 
 void write_terminal_summary(const Report& report, std::ostream& out, bool reveal_hidden) {

@@ -12,11 +12,11 @@
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
-#include <thread>
 
 #include <sys/resource.h>
 
 #include "bench/machine.h"
+#include "core/parallel_for.h"
 #include "scene/bvh_primitives.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage06.h"
@@ -171,7 +171,7 @@ class BvhBench {
     BvhBench(const BvhBenchConfig& config, std::ostream& out)
         : config_(config),
           out_(out),
-          cores_(int(std::max(1u, std::thread::hardware_concurrency()))),
+          cores_(default_thread_count()),
           all_threads_(config.threads > 0 ? config.threads : cores_),
           repeat_(std::max(1, config.repeat)),
           mesh_(load_bench_mesh(config)),

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <functional>
 #include <sstream>
-#include <thread>
 
 #include "bench/machine.h"
+#include "core/parallel_for.h"
 #include "core/source_dir.h"
 #include "image/compare.h"
 #include "render/gpu/gpu_render.h"
@@ -129,8 +129,8 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
         << config.repeat
         << " runs; shader compile: Mesa's shader cache off, llvmpipe's "
            "compilation at the first dispatch included. CPU: "
-        << cpu_model("unknown processor") << ", " << std::thread::hardware_concurrency()
-        << " hardware threads; " << context.str();
+        << cpu_model("unknown processor") << ", " << default_thread_count() << " hardware threads; "
+        << context.str();
     return all_agree ? 0 : 1;
 }
 

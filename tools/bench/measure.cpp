@@ -5,10 +5,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "bench/cases.h"
 #include "camera/camera.h"
+#include "core/parallel_for.h"
 #include "core/source_dir.h"
 #include "scene/scene_loader.h"
 
@@ -296,31 +296,24 @@ glm::vec3 shade(const SceneT<T>& s, const V3<T>& o, const V3<T>& d, TriFn<T> tri
 
 using Pixels = std::vector<glm::vec3>;
 
-// n x n regular samples per pixel (n = 1: the pixel centre). Rows split over `threads`.
+// n x n regular samples per pixel (n = 1: the pixel centre). Rows shared by `threads`.
 template <typename T>
 Pixels render_t(const SceneT<T>& s, int n, TriFn<T> tri, int threads) {
     Pixels px(std::size_t(s.width) * s.height);
-    auto rows = [&](int y0, int step) {
-        for (int y = y0; y < s.height; y += step)
-            for (int x = 0; x < s.width; ++x) {
-                glm::vec3 sum(0);
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i) {
-                        V3<T> o, d;
-                        camera_ray_t<T>(s, T(x) + (T(i) + T(0.5)) / T(n),
-                                        T(y) + (T(j) + T(0.5)) / T(n), o, d);
-                        sum += shade<T>(s, o, d, tri);
-                    }
-                px[std::size_t(y) * s.width + x] = sum / float(n * n);
-            }
-    };
-    if (threads <= 1) {
-        rows(0, 1);
-    } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < threads; ++t) pool.emplace_back(rows, t, threads);
-        for (auto& t : pool) t.join();
-    }
+    parallel_for(std::size_t(s.height), threads, [&](std::size_t row) {
+        const int y = int(row);
+        for (int x = 0; x < s.width; ++x) {
+            glm::vec3 sum(0);
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    V3<T> o, d;
+                    camera_ray_t<T>(s, T(x) + (T(i) + T(0.5)) / T(n), T(y) + (T(j) + T(0.5)) / T(n),
+                                    o, d);
+                    sum += shade<T>(s, o, d, tri);
+                }
+            px[std::size_t(y) * s.width + x] = sum / float(n * n);
+        }
+    });
     return px;
 }
 

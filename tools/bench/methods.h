@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -209,16 +210,31 @@ Result<T> sphere_geometric(const V3<T>& o, const V3<T>& d, const V3<T>& center, 
     return pick_root((t_ca - t_hc) / length, (t_ca + t_hc) / length, tmin, tmax);
 }
 
-// The stable q-form: half b (hb = d.(o-c)), disc = hb^2 - a c, roots by qform_root.
+// The coefficients of the q-form methods: a = d.d, half b (hb = d.(o-c)), c = |o-c|^2 - r^2;
+// nullopt when a is zero or not finite.
+template <typename T>
+struct HalfBQuadratic {
+    V3<T> oc;
+    T a, hb, c;
+};
+template <typename T>
+std::optional<HalfBQuadratic<T>> half_b_quadratic(const V3<T>& o, const V3<T>& d,
+                                                  const V3<T>& center, T radius) {
+    const V3<T> oc = o - center;
+    const T a = glm::dot(d, d);
+    if (!(a > 0) || !std::isfinite(a)) return std::nullopt;
+    const T hb = glm::dot(oc, d);
+    const T c = glm::dot(oc, oc) - radius * radius;
+    return HalfBQuadratic<T>{oc, a, hb, c};
+}
+
+// The stable q-form: disc = hb^2 - a c, roots by qform_root.
 template <typename T>
 Result<T> sphere_qform(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radius, T tmin,
                        T tmax) {
-    const V3<T> oc = o - center;
-    const T a = glm::dot(d, d);
-    if (!(a > 0) || !std::isfinite(a)) return {};
-    const T hb = glm::dot(oc, d);
-    const T c = glm::dot(oc, oc) - radius * radius;
-    return qform_root(a, hb, c, hb * hb - a * c, tmin, tmax);
+    const auto q = half_b_quadratic(o, d, center, radius);
+    if (!q) return {};
+    return qform_root(q->a, q->hb, q->c, q->hb * q->hb - q->a * q->c, tmin, tmax);
 }
 
 // Ray Tracing Gems, ch. 7 (Haines, Guenther, Akenine-Moeller): the discriminant as
@@ -228,13 +244,10 @@ Result<T> sphere_qform(const V3<T>& o, const V3<T>& d, const V3<T>& center, T ra
 template <typename T>
 Result<T> sphere_rtg(const V3<T>& o, const V3<T>& d, const V3<T>& center, T radius, T tmin,
                      T tmax) {
-    const V3<T> oc = o - center;
-    const T a = glm::dot(d, d);
-    if (!(a > 0) || !std::isfinite(a)) return {};
-    const T hb = glm::dot(oc, d);
-    const T c = glm::dot(oc, oc) - radius * radius;
-    const V3<T> l = oc - (hb / a) * d;
-    return qform_root(a, hb, c, a * (radius * radius - glm::dot(l, l)), tmin, tmax);
+    const auto q = half_b_quadratic(o, d, center, radius);
+    if (!q) return {};
+    const V3<T> l = q->oc - (q->hb / q->a) * d;
+    return qform_root(q->a, q->hb, q->c, q->a * (radius * radius - glm::dot(l, l)), tmin, tmax);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -9,11 +9,11 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "bench/accuracy.h"
 #include "bench/machine.h"
 #include "bench/report_format.h"
+#include "core/parallel_for.h"
 
 namespace rt::bench {
 namespace {
@@ -75,7 +75,7 @@ void write_header(std::ostream& m, const AccuracyResults& r, const std::string& 
       << "```sh\ncmake --preset release && cmake --build build\n"
       << command << "\n```\n\n"
       << "| | |\n|---|---|\n"
-      << "| machine | " << cpu_model("unknown CPU") << ", " << std::thread::hardware_concurrency()
+      << "| machine | " << cpu_model("unknown CPU") << ", " << default_thread_count()
       << " hardware threads |\n"
       << "| compiler | " << RT_BENCH_COMPILER << " |\n"
       << "| flags | `" << RT_BENCH_FLAGS

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <thread>
 
 #include "apps/cli_parse.h"
 #include "bench/accuracy.h"
 #include "bench/bvh_bench.h"
 #include "bench/gpu_bench.h"
+#include "core/parallel_for.h"
 #ifdef RT_BENCH_HAVE_VIEW
 #include "bench/view_latency.h"
 #endif
@@ -81,8 +81,7 @@ void add_bvh_options(CLI::App& app, rt::bench::BvhBenchConfig& bench) {
         ->capture_default_str();
     app.add_option("--threads", bench.threads,
                    "threads of the parallel run (default: every core, " +
-                       std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
-                       "); 1 thread is always run too")
+                       std::to_string(rt::default_thread_count()) + "); 1 thread is always run too")
         ->check(CLI::Range(1, 256));
     app.add_option("--width", bench.width, "primary rays: image width")
         ->capture_default_str()

@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "camera/camera_moves.h"
 #include "core/source_dir.h"
 #include "scene/scene_loader.h"
 #include "view/progressive.h"
@@ -61,7 +62,7 @@ bool run_view_latency(const ViewLatencyConfig& config, std::ostream& out) {
     // the camera and the features), restart. The clock starts before the copy, as for a person.
     const auto change_and_wait = [&](double& first_ms, double& full_ms, int& first_block) {
         const auto start = Clock::now();
-        view::orbit(settings.camera, pivot, up, 3, 0);
+        orbit(settings.camera, pivot, up, 3, 0);
         const std::uint64_t generation = renderer.restart(source.make(settings), config.gpu);
         first_ms = -1;
         for (;;) {

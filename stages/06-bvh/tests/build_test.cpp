@@ -63,8 +63,8 @@ TEST_F(SahSplitCost, CostIsTheMinimumOverAllBinBoundaries) {
         std::vector<BvhPrimitive> prims;
         const int n = 5 + trial * 7;
         for (int i = 0; i < n; ++i) {
-            const Vec3 c = random.point(-1, 1) * Vec3(1, Real(0.5) + Real(trial % 3), Real(0.25));
-            const Vec3 h = random.point(Real(0.01), Real(0.2));
+            const Vec3 c = random.vec(-1, 1) * Vec3(1, Real(0.5) + Real(trial % 3), Real(0.25));
+            const Vec3 h = random.vec(Real(0.01), Real(0.2));
             prims.push_back(box_primitive(Vec3f(c - h), Vec3f(c + h), std::uint32_t(i)));
         }
         BvhBuildOptions options;
@@ -183,8 +183,8 @@ TEST_F(BvhBuild, DegenerateInputs) {
     Scene flat;
     Random random(3);
     for (std::uint32_t i = 0; i < 300; ++i) {
-        const Real s = std::pow(Real(10), random.uniform(-5, 5));
-        const Vec3 c = random.point(-100, 100);
+        const Real s = std::pow(Real(10), Real(random.uniform(-5, 5)));
+        const Vec3 c = random.vec(-100, 100);
         flat.vertices.push_back({c.x, 0, c.z});
         flat.vertices.push_back({c.x + s, 0, c.z});
         flat.vertices.push_back({c.x, 0, c.z + s * Real(1e-3)});

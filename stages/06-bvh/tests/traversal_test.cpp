@@ -80,11 +80,11 @@ TEST_F(Slab, NeverLosesABoxToRounding) {
     for (int i = 0; i < 20000; ++i) {
         // On an edge: two coordinates on the box's bounds, where the entry through one slab and
         // the exit through another coincide and rounding decides.
-        Vec3 target = Vec3(node.min) + (Vec3(node.max) - Vec3(node.min)) * random.point(0, 1);
+        Vec3 target = Vec3(node.min) + (Vec3(node.max) - Vec3(node.min)) * random.vec(0, 1);
         const int axis = i % 3, other = (axis + 1 + (i / 3) % 2) % 3;
         target[axis] = (i / 6) % 2 ? node.min[axis] : node.max[axis];
         target[other] = (i / 12) % 2 ? node.min[other] : node.max[other];
-        const Vec3 origin = target + random.direction() * Real(500);
+        const Vec3 origin = target + random.unit() * Real(500);
         const Ray ray{origin, target - origin};
         calls.emplace_back(node, ray, Real(1) / ray.direction, Interval{0, kInfinity}, Real(0));
     }
@@ -149,25 +149,24 @@ void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t see
     const Vec3 centre = Vec3(box.centre()), extent = Vec3(box.extent());
     const Real radius = glm::length(extent);
     for (int i = 0; i < 3000; ++i) {  // from outside towards a point in the box
-        const Vec3 origin = centre + random.direction() * radius * Real(1.5);
-        const Vec3 target = centre + (random.point(-1, 1) * extent) * Real(0.5);
+        const Vec3 origin = centre + random.unit() * radius * Real(1.5);
+        const Vec3 target = centre + (random.vec(-1, 1) * extent) * Real(0.5);
         compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c);
     }
     for (int i = 0; i < 2000; ++i)  // from inside, in every direction
-        compare_ray(scene,
-                    Ray{centre + random.point(-1, 1) * extent * Real(0.3), random.direction()},
+        compare_ray(scene, Ray{centre + random.vec(-1, 1) * extent * Real(0.3), random.unit()},
                     Interval{0, kInfinity}, c);
     for (int i = 0; i < 1000; ++i) {  // short segments, as shadow rays are
-        const Vec3 origin = centre + random.point(-1, 1) * extent;
-        compare_ray(scene, Ray{origin, random.direction()},
-                    Interval{0, random.uniform(0, radius * Real(0.3))}, c);
+        const Vec3 origin = centre + random.vec(-1, 1) * extent;
+        compare_ray(scene, Ray{origin, random.unit()},
+                    Interval{0, Real(random.uniform(0, radius * Real(0.3)))}, c);
     }
     // Hard rays: aimed exactly at vertices and at edge midpoints, and axis-parallel rays.
     for (std::size_t t = 0; t < scene.triangles.size(); t += 1 + scene.triangles.size() / 500) {
         Vec3 a, b, cc;
         scene.triangle_vertices(t, a, b, cc);
         for (const Vec3& target : {a, (a + b) * Real(0.5), (a + b + cc) / Real(3)}) {
-            const Vec3 origin = centre + random.direction() * radius * Real(1.5);
+            const Vec3 origin = centre + random.unit() * radius * Real(1.5);
             compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c, 64);
             Vec3 axis_dir(0);
             axis_dir[int(t % 3)] = t % 2 ? 1 : -1;
@@ -199,10 +198,9 @@ TEST_F(NearestHit, SameAsLoopOnMixedPrimitives) {
     Scene scene = scene_from_mesh(make_torus(24, 12));
     Random random(8);
     for (int i = 0; i < 40; ++i) {
-        scene.spheres.push_back(
-            Sphere{random.point(-2, 2), random.uniform(Real(0.05), Real(0.4)), 0});
-        const Vec3 lo = random.point(-2, 2);
-        scene.boxes.push_back(Box{lo, lo + random.point(Real(0.05), Real(0.5)), 0});
+        scene.spheres.push_back(Sphere{random.vec(-2, 2), Real(random.uniform(0.05, 0.4)), 0});
+        const Vec3 lo = random.vec(-2, 2);
+        scene.boxes.push_back(Box{lo, lo + random.vec(Real(0.05), Real(0.5)), 0});
     }
     scene.planes.push_back(Plane{{0, -1.5, 0}, {0, 1, 0}, 0});
     scene.update_features();
@@ -239,8 +237,7 @@ TEST_F(AnyHit, StopsEarlierThanNearest) {
     Random random(2);
     std::uint64_t any_tests = 0, nearest_tests = 0;
     for (int i = 0; i < 500; ++i) {
-        const Ray ray{random.direction() * Real(3),
-                      random.point(-1, 1) * Real(0.2) - random.direction()};
+        const Ray ray{random.unit() * Real(3), random.vec(-1, 1) * Real(0.2) - random.unit()};
         BvhStats a, n;
         Hit hit;
         bvh_intersect_any(scene, ray, Interval{0, kInfinity}, &a);
@@ -272,8 +269,8 @@ TEST_F(Visits, GrowLogarithmically) {
         BvhStats stats;
         int hits = 0;
         for (int i = 0; i < 2000; ++i) {
-            const Vec3 origin = random.direction() * Real(4);
-            const Ray ray{origin, random.point(-1, 1) * Real(0.5) - origin};
+            const Vec3 origin = random.unit() * Real(4);
+            const Ray ray{origin, random.vec(-1, 1) * Real(0.5) - origin};
             Hit hit;
             hits += bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &stats);
         }
