@@ -1,13 +1,13 @@
 #include "gpu/gl/shader_source.h"
 
 #include <algorithm>
-#include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "gpu/shader_constants.h"
 
 namespace fs = std::filesystem;
@@ -28,15 +28,6 @@ std::vector<std::string> guard_names(const std::string& line) {
         for (std::sregex_iterator it(line.begin(), line.end(), name_re), end; it != end; ++it)
             names.push_back((*it)[1].str());
     return names;
-}
-
-bool read_file(const fs::path& path, std::string& text) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return true;
 }
 
 std::string trim_left(const std::string& s) {
@@ -71,7 +62,7 @@ class Assembler {
     bool add(const fs::path& path, const std::string& defines, bool entry) {
         if (entry) entry_dir_ = path.parent_path();
         std::string text;
-        if (!read_file(path, text)) {
+        if (!read_text_if(path, text)) {
             out_.error = display_path(path) + ": cannot read the shader file";
             return false;
         }
