@@ -99,7 +99,7 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
     return compare_cmd;
 }
 
-CLI::App* add_view_command(CLI::App& app, ViewArgsForCli& view_args) {
+CLI::App* add_view_command(CLI::App& app, view::ViewArgs& view_args) {
     auto* view_cmd = app.add_subcommand(
         "view",
         "the lecture-demo viewer: progressive render, toggles, ray trees (needs a display)");

@@ -13,6 +13,7 @@
 
 #include "core/source_dir.h"
 #include "scene/scene.h"
+#include "view/view.h"
 
 namespace rt {
 
@@ -57,11 +58,8 @@ struct CompareArgs {
 };
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 
-struct ViewArgsForCli {
-    std::string scene, script, out = ".";
-    int threads = 0, width = 0, height = 0;
-};
-CLI::App* add_view_command(CLI::App& app, ViewArgsForCli& view_args);
+// view/view.h declares ViewArgs whether or not the viewer is built (run_view is its only code).
+CLI::App* add_view_command(CLI::App& app, view::ViewArgs& view_args);
 
 struct GlInfoArgs {
     bool window = false;

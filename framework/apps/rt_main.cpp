@@ -42,9 +42,6 @@
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
-#ifdef RT_HAVE_VIEW
-#include "view/view.h"
-#endif
 
 namespace fs = std::filesystem;
 using namespace rt;
@@ -251,16 +248,9 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
 
 // `rt view` (its arguments are declared whether or not the viewer is built).
 
-int run_view_command(const ViewArgsForCli& args) {
+int run_view_command(const view::ViewArgs& args) {
 #ifdef RT_HAVE_VIEW
-    view::ViewArgs view_args;
-    view_args.scene = args.scene;
-    view_args.script = args.script;
-    view_args.out = args.out;
-    view_args.threads = args.threads;
-    view_args.width = args.width;
-    view_args.height = args.height;
-    return view::run_view(view_args);
+    return view::run_view(args);
 #else
     (void)args;
     throw std::runtime_error(
@@ -282,7 +272,7 @@ int main(int argc, char** argv) {
     CLI::App* gallery_cmd = add_gallery_command(app, gallery);
     CompareArgs compare;
     CLI::App* compare_cmd = add_compare_command(app, compare);
-    ViewArgsForCli view_args;
+    view::ViewArgs view_args;
     CLI::App* view_cmd = add_view_command(app, view_args);
     std::string info_scene;
     auto* info_cmd = app.add_subcommand("info", "describe a scene file");
