@@ -28,7 +28,8 @@ packages=(
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
   libseccomp-dev                      # rt-grade: the seccomp filter of its container mode
   jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB
-  hyperfine                           # tools/bench_startup.sh: process start-up figures
+  hyperfine                           # tools/bench_startup.sh, tools/bench_povray.sh: timings
+  povray                              # tools/bench_povray.sh: POV-Ray 3.7, the renderer's yardstick
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

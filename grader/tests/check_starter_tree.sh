@@ -5,10 +5,11 @@
 #
 # 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
 #    no solution markers left, stubs un-commented, student function signatures intact.
-# 2. Configures (as the release preset does: Release, RT_WERROR=ON) and builds the starter tree's stage tests (every stageNN*_tests target, the
-#    CGAL checks included, and `rt`, which some stage-labelled tests run). Requires every
-#    stage's tests to FAIL, pointing at the stub ("not implemented") and at the handout
-#    ("README.md#").
+# 2. Configures (as the release preset does: Release, RT_WERROR=ON) and builds the starter tree's
+#    stage tests (every stageNN*_tests target, the CGAL checks included, and `rt`, which some
+#    stage-labelled tests run). Runs the starter README's two commands as a student would; the
+#    second runs every test, and from its log every stage's tests must FAIL, pointing at the stub
+#    ("not implemented") and at the handout ("README.md#").
 # 3. For every stage N, re-releases into the same directory with --solved-through N --force
 #    (only the student files change, so the build is incremental) and requires the tests of
 #    stage N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
@@ -83,11 +84,13 @@ signatures=0
 for file in "${STUDENT_FILES[@]}"; do
     released="$STARTER/$file"
     [[ -f "$released" ]] || fail "$file missing from the starter tree"
-    # Function definitions start at column 0: "<type> name(" (continuation lines included).
+    # Function definitions start at column 0: "<type> name(" (continuation lines included);
+    # helpers inside a solution region (stripped with it) are the solution's, not the student's.
     while IFS= read -r line; do
         grep -Fxq -- "$line" "$released" || fail "$file: signature line lost: $line"
         signatures=$((signatures + 1))
-    done < <(grep -E '^[A-Za-z_][A-Za-z0-9_:<>,&* ]*[ &*][A-Za-z_][A-Za-z0-9_]*\(' "$SRC/$file" \
+    done < <(awk '/^[ \t]*\/\/ BEGIN SOLUTION[ \t]*$/ {s=1} !s {print} /^[ \t]*\/\/ END SOLUTION[ \t]*$/ {s=0}' "$SRC/$file" \
+                 | grep -E '^[A-Za-z_][A-Za-z0-9_:<>,&* ]*[ &*][A-Za-z_][A-Za-z0-9_]*\(' \
                  | grep -vE '^(namespace|using|return|if|for|while|struct|class|enum)\b')
     # Regions whose stub is code (not a region of helper functions, whose stub is a comment).
     regions="$(awk '/^[ \t]*\/\/ BEGIN SOLUTION[ \t]*$/ {s=1; code=0; next}
@@ -145,33 +148,39 @@ no_tests() {
 build_stage_tests
 ok "starter tree configured and built ${TARGETS[*]} ($((SECONDS - start)) s so far)"
 
-for n in "${STAGES[@]}"; do
-    log="$TMP/stage$n.stubbed.log"
-    ctest --test-dir "$BUILD" -L "stage$n" --output-on-failure --no-tests=error -j "$JOBS" > "$log" 2>&1
-    rc=$?
-    no_tests "$n" "$log"
-    summary="$(grep -E "tests passed|No tests were found" "$log" | tail -n 1)"
-    [[ $rc -ne 0 ]] || { tail -n 30 "$log"; fail "stage$n tests PASS in the starter tree: the stubs do not fail them"; }
-    # Not one stage test may pass on stubs: a test that passes without the student's code tests
-    # nothing the student wrote.
-    if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed" "$log"; then
-        fail "stage$n: the tests above pass in the starter tree although every function is a stub"
-    fi
-    grep -qi "not implemented" "$log" || { tail -n 30 "$log"; fail "stage$n: output never says 'not implemented'"; }
-    # No stub may crash, and every failing test must say why: each test's output (from its
-    # status line to the next one) names "not implemented".
-    if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*\*\*\*Exception" "$log"; then
-        fail "stage$n: the tests above crash on the stubs instead of failing with 'not implemented'"
-    fi
-    silent="$(awk '/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / { if (name != "" && !said) print name; name = $4; said = 0; next }
-                   /not implemented/ { said = 1 }
-                   END { if (name != "" && !said) print name }' "$log")"
-    [[ -z "$silent" ]] || fail "stage$n: these stubbed tests fail without saying 'not implemented': $silent"
-    grep -q "README.md#" "$log" || { tail -n 30 "$log"; fail "stage$n: output never points at a handout section (README.md#)"; }
-    ok "stage$n tests fail on the stubs ($summary), saying 'not implemented' and pointing at README.md#"
-done
-stubbed_seconds=$((SECONDS - start))
-echo "stubbed pass: ${stubbed_seconds} s"
+# The part of a ctest log that belongs to the tests named PREFIX*: each one's status line and the
+# output printed after it (ctest keeps a test's output together, also with -j).
+tests_named() {
+    awk -v p="$1" '/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / { keep = index($4, p) == 1 } keep' "$2"
+}
+
+# Every stage's tests fail on the stubs, each saying why. Read from the log of README command 2
+# (below), which runs them all: a stage's tests are named StageNN.* (its label stageNN).
+check_stubbed_stages() {
+    for n in "${STAGES[@]}"; do
+        log="$TMP/stage$n.stubbed.log"
+        tests_named "Stage$n." "$1" > "$log"
+        failed=$(grep -cE "^ *[0-9]+/[0-9]+ Test +#[0-9]+: " "$log")
+        [[ $failed -gt 0 ]] || fail "README command 2 ran no Stage$n.* test in the starter tree"
+        # Not one stage test may pass on stubs: a test that passes without the student's code tests
+        # nothing the student wrote.
+        if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed" "$log"; then
+            fail "stage$n: the tests above pass in the starter tree although every function is a stub"
+        fi
+        grep -qi "not implemented" "$log" || { tail -n 30 "$log"; fail "stage$n: output never says 'not implemented'"; }
+        # No stub may crash, and every failing test must say why: each test's output (from its
+        # status line to the next one) names "not implemented".
+        if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*\*\*\*Exception" "$log"; then
+            fail "stage$n: the tests above crash on the stubs instead of failing with 'not implemented'"
+        fi
+        silent="$(awk '/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / { if (name != "" && !said) print name; name = $4; said = 0; next }
+                       /not implemented/ { said = 1 }
+                       END { if (name != "" && !said) print name }' "$log")"
+        [[ -z "$silent" ]] || fail "stage$n: these stubbed tests fail without saying 'not implemented': $silent"
+        grep -q "README.md#" "$log" || { tail -n 30 "$log"; fail "stage$n: output never points at a handout section (README.md#)"; }
+        ok "stage$n tests fail on the stubs ($failed tests), saying 'not implemented' and pointing at README.md#"
+    done
+}
 
 # --- 2b. The student README, command by command, in the released tree ---------------------
 # Its two commands (first image; the tests), then the stage loop for stage 01.
@@ -194,6 +203,7 @@ if grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: (Framework|Render|Cli)\..*(Failed|Ex
     fail "framework tests fail in the starter tree (above)"
 fi
 ok "README command 2 (tests) in $((SECONDS - readme2_start)) s: only stage and framework tests, the stages fail on stubs"
+check_stubbed_stages "$TMP/readme2.log"
 (cd "$STARTER" && ctest --test-dir build -L stage01 --output-on-failure > "$TMP/loop-test.log" 2>&1)
 grep -q "not implemented" "$TMP/loop-test.log" || fail "the loop's test command shows no failure message"
 (cd "$STARTER" && build/bin/rt render stages/01-camera-rays/scenes/perspective_directions.json -o out.png -q) \
