@@ -45,10 +45,12 @@ if(RT_CCACHE)
                         "or configure with -DRT_CCACHE=OFF")
   endif()
   rt_common_parent(rt_ccache_base "${PROJECT_SOURCE_DIR}" "${PROJECT_BINARY_DIR}")
-  # time_macros: pcg_extras.hpp mentions __TIME__ (for a seed this project never uses), which
-  # would otherwise make every file including it uncacheable.
+  # pcg_extras.hpp expands __DATE__ and __TIME__ (for a seed this project never uses).
+  # time_macros lets the direct mode cache such files; SOURCE_DATE_EPOCH (honoured by GCC, as in
+  # reproducible builds) fixes the expanded values, so the preprocessed mode, the only one that
+  # can match a unity batch of another tree (their text holds absolute paths), matches too.
   set(CMAKE_CXX_COMPILER_LAUNCHER
       ${RT_ENV_PROGRAM} "CCACHE_DIR=${RT_CCACHE_DIR}" "CCACHE_BASEDIR=${rt_ccache_base}"
-      CCACHE_SLOPPINESS=time_macros ${RT_CCACHE_PROGRAM})
+      CCACHE_SLOPPINESS=time_macros SOURCE_DATE_EPOCH=0 ${RT_CCACHE_PROGRAM})
   set(CMAKE_C_COMPILER_LAUNCHER ${CMAKE_CXX_COMPILER_LAUNCHER})
 endif()
