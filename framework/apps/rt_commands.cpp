@@ -21,6 +21,16 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
 }
 
 // `rt render`'s overrides of what the scene file says (the viewer's toggles among them).
+namespace {
+
+std::vector<std::string> texture_filter_names() {
+    std::vector<std::string> names;
+    for (const auto& [name, lookup] : kTextureFilterNames) names.push_back(name);
+    return names;
+}
+
+}  // namespace
+
 void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
     render_cmd
         ->add_option("--accelerator", render_args.accelerator,
@@ -32,7 +42,7 @@ void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
                      "scene says; or oiio (OpenImageIO's TextureSystem, mip-mapped, trilinear) "
                      "or oiio-aniso (anisotropic): footprints from camera-ray differentials, "
                      "none (bilinear) for reflected and refracted rays")
-        ->check(CLI::IsMember({"nearest", "bilinear", "oiio", "oiio-aniso"}));
+        ->check(CLI::IsMember(texture_filter_names()));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--height", render_args.height, "override the image height")

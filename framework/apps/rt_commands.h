@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/source_dir.h"
@@ -16,6 +17,13 @@
 #include "view/view.h"
 
 namespace rt {
+
+// --texture-filter's values: the option's check and the override it becomes.
+inline const std::vector<std::pair<std::string, TextureLookup>> kTextureFilterNames = {
+    {"nearest", TextureLookup::Nearest},
+    {"bilinear", TextureLookup::Bilinear},
+    {"oiio", TextureLookup::Oiio},
+    {"oiio-aniso", TextureLookup::OiioAniso}};
 
 struct RenderArgs {
     std::string scene;

@@ -88,12 +88,8 @@ SceneOverrides overrides_of(const RenderArgs& args) {
     o.yaw_degrees = args.yaw_degrees;
     if (!args.accelerator.empty())
         o.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
-    const std::map<std::string, TextureLookup> lookups = {{"nearest", TextureLookup::Nearest},
-                                                          {"bilinear", TextureLookup::Bilinear},
-                                                          {"oiio", TextureLookup::Oiio},
-                                                          {"oiio-aniso", TextureLookup::OiioAniso}};
-    if (const auto it = lookups.find(args.texture_filter); it != lookups.end())
-        o.texture_lookup = it->second;
+    for (const auto& [name, lookup] : kTextureFilterNames)
+        if (args.texture_filter == name) o.texture_lookup = lookup;
     if (!args.shadows.empty()) o.shadows = args.shadows == "on";
     if (args.max_depth >= 0) o.max_depth = args.max_depth;
     if (args.spp > 0) o.samples_per_pixel = args.spp;

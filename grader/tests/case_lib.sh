@@ -50,9 +50,12 @@ stage_points() {
     mapfile -t exc < <(jq -r '(.exclude // [])[]' <<< "$group")
     count=0
     while read -r name; do
+      # A test counts when some include pattern matches and no exclude pattern does.
       # shellcheck disable=SC2053 # gtest patterns are globs
-      for p in "${inc[@]}"; do [[ $name == $p ]] && { count=$((count + 1)); break; }; done
-      for p in "${exc[@]}"; do [[ $name == $p ]] && { count=$((count - 1)); break; }; done
+      local in=0 out=0
+      for p in "${inc[@]}"; do [[ $name == $p ]] && { in=1; break; }; done
+      for p in "${exc[@]}"; do [[ $name == $p ]] && { out=1; break; }; done
+      (( in && !out )) && count=$((count + 1))
     done < <(jq -r '.[]' "$expected/$(jq -r .binary <<< "$group").json")
     total=$(awk -v t="$total" -v c="$count" -v p="$points" 'BEGIN { print t + c * p }')
   done < <(jq -c '.unit_tests[]' "$json")
