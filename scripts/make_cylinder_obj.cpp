@@ -16,13 +16,13 @@ int main() {
                     -std::sin(a));
     }
     std::printf("v 0 -1 0\nv 0 1 0\n");  // cap centres: 2n+1, 2n+2
-    const int bottom_centre = 2 * segments + 1, top_centre = 2 * segments + 2;
+    const int bottom_center = 2 * segments + 1, top_center = 2 * segments + 2;
     for (int i = 0; i < segments; ++i) {
         const int j = (i + 1) % segments;
         const int b0 = 2 * i + 1, t0 = 2 * i + 2, b1 = 2 * j + 1, t1 = 2 * j + 2;
         // Angle grows counter-clockwise seen from +y (x = cos a, z = -sin a).
         std::printf("f %d %d %d\nf %d %d %d\n", b0, b1, t1, b0, t1, t0);
-        std::printf("f %d %d %d\n", top_centre, t0, t1);
-        std::printf("f %d %d %d\n", bottom_centre, b1, b0);
+        std::printf("f %d %d %d\n", top_center, t0, t1);
+        std::printf("f %d %d %d\n", bottom_center, b1, b0);
     }
 }

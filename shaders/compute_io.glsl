@@ -6,7 +6,7 @@ uniform ivec2 image_size;
 uniform ivec4 primitive_counts;  // spheres, planes, triangles, boxes
 uniform int light_count;
 uniform int material_count;
-uniform vec3 background_colour;
+uniform vec3 background_color;
 uniform vec3 ambient_light;
 uniform bool fresnel;
 uniform int render_mode;  // RenderMode: 0 directions 1 normals 2 depth 3 primitive 4 shaded 5 bvh_visits

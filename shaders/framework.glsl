@@ -71,9 +71,9 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
     switch (primitive_kind(hit.primitive)) {
         case kSphere: {
             const vec3 c = spheres[i].center_radius.xyz;
-            const vec3 from_centre = hit.point - c;
-            const float len = length(from_centre);
-            if (len > 0.0) sp.point = c + from_centre * (spheres[i].center_radius.w / len);
+            const vec3 from_center = hit.point - c;
+            const float len = length(from_center);
+            if (len > 0.0) sp.point = c + from_center * (spheres[i].center_radius.w / len);
             sp.error = gamma_bound(8) * (abs(c) + abs(sp.point - c));
             break;
         }

@@ -132,6 +132,6 @@ vec3 background(vec3 direction) {
 #ifdef HAS_ENVIRONMENT
     return environment_radiance(direction);
 #else
-    return background_colour;
+    return background_color;
 #endif
 }

@@ -74,7 +74,7 @@ Ray camera_ray(vec2 pixel) {
 struct Frame {
     Ray ray;
     int depth;
-    vec3 colour;  // the local light
+    vec3 color;  // the local light
     bool recurse;
     SecondaryRays branches;
 };
@@ -192,11 +192,11 @@ vec3 local_light(PreparedHit p) {
     for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i)
         rt_debug_note(kDebugShadow, i, vec4(visibility[i], 0));
 #endif
-    vec3 colour = direct_light(material, p.at.point, p.lighting_normal, p.to_viewer, visibility);
+    vec3 color = direct_light(material, p.at.point, p.lighting_normal, p.to_viewer, visibility);
 #ifdef HAS_SAMPLING
-    colour += sampled_direct(p);
+    color += sampled_direct(p);
 #endif
-    return colour;
+    return color;
 }
 
 #ifdef HAS_SAMPLING
@@ -226,16 +226,16 @@ void start_frame(inout Frame f) {
     Hit hit = no_hit();
     f.recurse = false;
     if (!nearest_hit(f.ray, Interval(0.0, kInfinity), hit)) {
-        f.colour = background(f.ray.direction);
-        rt_debug_note(kDebugMiss, f.depth, vec4(f.colour, 0));
+        f.color = background(f.ray.direction);
+        rt_debug_note(kDebugMiss, f.depth, vec4(f.color, 0));
         return;
     }
     const PreparedHit p = prepare_hit(f.ray, hit);
     note_hit(f.depth, hit, p.at.point, p.lighting_normal);
-    f.colour = local_light(p);
+    f.color = local_light(p);
 #ifdef HAS_INDIRECT
     if (scene_has(kFeatureIndirect))
-        f.colour += indirect_diffuse(p.at, p.lighting_normal, p.material, rng_next2());
+        f.color += indirect_diffuse(p.at, p.lighting_normal, p.material, rng_next2());
 #endif
     bool bounces = false;
 #ifdef HAS_REFLECTION
@@ -246,7 +246,7 @@ void start_frame(inout Frame f) {
 #endif
     f.recurse = f.depth < max_depth && bounces;
     if (!f.recurse) {
-        rt_debug_note(kDebugLocal, f.depth, vec4(f.colour, 0));
+        rt_debug_note(kDebugLocal, f.depth, vec4(f.color, 0));
         return;
     }
     f.branches = secondary_rays(f.ray, p.at, p.material, fresnel);
@@ -263,7 +263,7 @@ void start_frame(inout Frame f) {
             f.branches.reflected.ray = Ray(offset_ray_origin(p.at.point, p.at.error, p.at.normal, d), d);
     }
 #endif
-    rt_debug_note(kDebugLocal, f.depth, vec4(f.colour, 0));
+    rt_debug_note(kDebugLocal, f.depth, vec4(f.color, 0));
     rt_debug_note(kDebugReflected, f.depth,
                   vec4(f.branches.reflected.weight, f.branches.reflected.valid ? 1 : 0));
     rt_debug_note(kDebugRefracted, f.depth,
@@ -277,7 +277,7 @@ void start_frame(inout Frame f) {
 // total per 8 invocations, so a ray tree much deeper than the course's max_depth 6 comes out
 // black there: stages/09-gpu/README.md.)
 vec3 trace(Ray ray) {
-    vec3 colour[MAX_DEPTH + 1];  // local light, then each branch's weighted colour as it completes
+    vec3 color[MAX_DEPTH + 1];  // local light, then each branch's weighted colour as it completes
     int next[MAX_DEPTH + 1];     // the branch to trace next: 0 reflected, 1 refracted ...
     int end[MAX_DEPTH + 1];      // ... up to (not including) end
     vec3 origin[2 * MAX_DEPTH + 2], direction[2 * MAX_DEPTH + 2];  // branch i of level k: 2k + i
@@ -290,7 +290,7 @@ vec3 trace(Ray ray) {
         f.depth = top;
         note_ray(top, f.ray, branch);
         start_frame(f);
-        colour[top] = f.colour;
+        color[top] = f.color;
         next[top] = 0, end[top] = 0;
         if (f.recurse) {
             const SecondaryRay a = f.branches.reflected, b = f.branches.refracted;
@@ -302,10 +302,10 @@ vec3 trace(Ray ray) {
         }
         // Complete levels until one has a branch left (return at the root), as returns would.
         while (!(next[top] < end[top] && top < MAX_DEPTH)) {
-            if (top == 0) return colour[0];
-            const vec3 child = colour[top];
+            if (top == 0) return color[0];
+            const vec3 child = color[top];
             --top;
-            colour[top] += weight[2 * top + next[top]] * child;
+            color[top] += weight[2 * top + next[top]] * child;
             ++next[top];
         }
         // Descend into that branch, as a recursive call would.
@@ -317,7 +317,7 @@ vec3 trace(Ray ray) {
 
 // The primitive-id view (render/render.cpp): the surface's rank when all are listed spheres,
 // planes, triangles, boxes, hashed to a colour (the same integer hash as the CPU's).
-vec3 primitive_colour(int id) {
+vec3 primitive_color(int id) {
     const int kind = primitive_kind(id);
     int rank = primitive_index(id);
     for (int k = 0; k < kind; ++k) rank += primitive_counts[k];
@@ -349,7 +349,7 @@ vec4 trace_pixel(vec2 pixel) {
         Hit hit = no_hit();
         if (nearest_hit(ray, Interval(0.0, kInfinity), hit)) {
             note_hit(0, hit, hit.point, hit.normal);
-            result.rgb = render_mode == kModePrimitiveId ? primitive_colour(hit.primitive)
+            result.rgb = render_mode == kModePrimitiveId ? primitive_color(hit.primitive)
                                           : 0.5 * (hit.normal + 1.0);
             result.a = hit.t;
         } else {
@@ -393,8 +393,8 @@ vec3 sample_pixel(ivec2 pixel, int sample_index) {
 #ifdef HAS_MOTION_BLUR
     move_spheres(shutter_time(sampling.lens_shutter.z, sampling.lens_shutter.w, rng_next()));
 #endif
-    const vec3 colour = trace(ray);
-    rt_debug_note(kDebugPixel, 0, vec4(colour, 0));
-    return colour;
+    const vec3 color = trace(ray);
+    rt_debug_note(kDebugPixel, 0, vec4(color, 0));
+    return color;
 }
 #endif

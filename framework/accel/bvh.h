@@ -31,7 +31,7 @@ struct Aabb {
         max = glm::max(max, b.max);
     }
     Vec3f extent() const { return max - min; }
-    Vec3f centre() const { return (min + max) * 0.5f; }
+    Vec3f center() const { return (min + max) * 0.5f; }
     // Surface area; 0 for the empty box (so empty bins cost nothing in the SAH).
     float surface_area() const {
         if (empty()) return 0;

@@ -374,9 +374,9 @@ TriangleMesh make_triangle_soup(std::size_t count, std::uint64_t seed, Real size
         return D3(x, y, z);
     };
     while (mesh.triangles.size() < count) {
-        D3 centre = draw(half - 1, 1 - half);
+        D3 center = draw(half - 1, 1 - half);
         D3 corner[3];
-        for (D3& p : corner) p = centre + draw(-half, half);
+        for (D3& p : corner) p = center + draw(-half, half);
         // Redraw slivers: a tiny area compared with the size makes a useless test triangle.
         D3 n = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
         if (!(glm::dot(n, n) > 1e-6 * half * half * half * half)) continue;

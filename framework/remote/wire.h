@@ -98,8 +98,13 @@ inline void normalize(bool& b) {
 // field even when trivially copyable, so its bools are checked on the way in.
 template <class T>
 inline constexpr bool kFieldByField = false;
+// Set for the trivially copyable structs with bools that cross per ray (RT_WIRE_BOOLS,
+// wire_types.h): they cross as bytes, and each named bool is made 0 or 1 on the way in.
 template <class T>
-concept PlainBytes = std::is_trivially_copyable_v<T> && !std::is_pointer_v<T> && !kFieldByField<T>;
+inline constexpr bool kBytesWithBools = false;
+template <class T>
+concept PlainBytes = std::is_trivially_copyable_v<T> && !std::is_pointer_v<T> &&
+                     !kFieldByField<T> && !kBytesWithBools<T>;
 
 template <PlainBytes T>
 void put(Writer& w, const T& value) {

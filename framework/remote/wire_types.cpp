@@ -19,38 +19,6 @@ std::uint64_t Writer::digest() const {
     return hash_ ? XXH3_64bits_digest(static_cast<const XXH3_state_t*>(hash_)) : 0;
 }
 
-// Structs with bools: read as bytes, then every bool made 0 or 1.
-void put(Writer& w, const Hit& v) {
-    w.pod(v);
-}
-void get(Reader& r, Hit& v) {
-    r.pod(v);
-    normalize(v.front_face);
-}
-void put(Writer& w, const SurfacePoint& v) {
-    w.pod(v);
-}
-void get(Reader& r, SurfacePoint& v) {
-    r.pod(v);
-    normalize(v.front_face);
-}
-void put(Writer& w, const SecondaryRays& v) {
-    w.pod(v);
-}
-void get(Reader& r, SecondaryRays& v) {
-    r.pod(v);
-    normalize(v.reflected.valid);
-    normalize(v.refracted.valid);
-    normalize(v.total_internal_reflection);
-}
-void put(Writer& w, const FogEvent& v) {
-    w.pod(v);
-}
-void get(Reader& r, FogEvent& v) {
-    r.pod(v);
-    normalize(v.scattered);
-}
-
 void check_decoded(Reader& r, Image& v) {
     if (v.width < 0 || v.height < 0 || v.pixels.size() != std::size_t(v.width) * v.height) {
         r.fail();

@@ -36,14 +36,29 @@ const T& view(const T& value) {
     return value;
 }
 
-void put(Writer& w, const Hit& v);
-void get(Reader& r, Hit& v);
-void put(Writer& w, const SurfacePoint& v);
-void get(Reader& r, SurfacePoint& v);
-void put(Writer& w, const SecondaryRays& v);
-void get(Reader& r, SecondaryRays& v);
-void put(Writer& w, const FogEvent& v);
-void get(Reader& r, FogEvent& v);
+// Structs with bools that cross per ray: as bytes, then the bools RT_WIRE_BOOLS names made 0 or 1.
+#define RT_WIRE_BOOLS(Type, ...)                        \
+    template <>                                         \
+    inline constexpr bool kBytesWithBools<Type> = true; \
+    inline auto wire_bools(Type& v) {                   \
+        return std::tie(__VA_ARGS__);                   \
+    }
+RT_WIRE_BOOLS(Hit, v.front_face)
+RT_WIRE_BOOLS(SurfacePoint, v.front_face)
+RT_WIRE_BOOLS(SecondaryRays, v.reflected.valid, v.refracted.valid, v.total_internal_reflection)
+RT_WIRE_BOOLS(FogEvent, v.scattered)
+#undef RT_WIRE_BOOLS
+template <class T>
+requires kBytesWithBools<T>
+void put(Writer& w, const T& v) {
+    w.pod(v);
+}
+template <class T>
+requires kBytesWithBools<T>
+void get(Reader& r, T& v) {
+    r.pod(v);
+    std::apply([](auto&... b) { (normalize(b), ...); }, wire_bools(v));
+}
 // Types that cross field by field name their fields once, for both directions.
 #define RT_WIRE_FIELDS(Type, ...)                       \
     template <>                                         \
@@ -60,7 +75,7 @@ RT_WIRE_FIELDS(AccelerationReport, v.requested, v.built, v.problem, v.build_ms, 
                v.nodes, v.depth)
 RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v.hit_record,
                v.surface, v.local, v.contribution, v.shadows, v.children)
-RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.colour, v.root)
+RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.color, v.root)
 RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face, v.uv)
 RT_WIRE_FIELDS(ShadertoyRun, v.compile_errors, v.draw_error, v.image)
 // Every field but the OpenImageIO texture system, which the worker makes anew from the texture

@@ -143,7 +143,7 @@ void plot(Image& image, int x, int y, const Color& c) {
 }
 
 // A 3D segment, clipped in front of a perspective camera, projected and drawn.
-void draw_segment(const Scene& scene, Vec3 a, Vec3 b, const Color& colour, Image& image) {
+void draw_segment(const Scene& scene, Vec3 a, Vec3 b, const Color& color, Image& image) {
     const Camera& cam = scene.camera;
     if (cam.projection == Projection::Perspective) {
         const Real near = Real(1e-3);
@@ -161,19 +161,19 @@ void draw_segment(const Scene& scene, Vec3 a, Vec3 b, const Color& colour, Image
     const int steps = int(std::ceil(std::max(std::abs(q.x - p.x), std::abs(q.y - p.y)))) + 1;
     for (int i = 0; i <= steps; ++i) {
         const Vec2 s = p + (q - p) * (Real(i) / Real(steps));
-        plot(image, int(std::floor(s.x)), int(std::floor(s.y)), colour);
+        plot(image, int(std::floor(s.x)), int(std::floor(s.y)), color);
     }
 }
 
 void draw_node(const Scene& scene, const RayNode& n, Real far, Image& image) {
     static const Color kCamera{1, 0, 0}, kShadow{1, 0, 1}, kReflection{0, 0, 1},
         kRefraction{1, 1, 0};
-    const Color colour = n.kind == RayNode::Kind::Camera       ? kCamera
-                         : n.kind == RayNode::Kind::Reflection ? kReflection
-                                                               : kRefraction;
+    const Color color = n.kind == RayNode::Kind::Camera       ? kCamera
+                        : n.kind == RayNode::Kind::Reflection ? kReflection
+                                                              : kRefraction;
     const Vec3 dir = glm::normalize(n.ray.direction);
     const Vec3 end = n.hit ? n.surface.point : n.ray.origin + far * dir;
-    draw_segment(scene, n.ray.origin, end, colour, image);
+    draw_segment(scene, n.ray.origin, end, color, image);
     for (const ShadowRecord& s : n.shadows) {
         Real t = std::min(s.blocked_by >= 0 ? s.blocked_t : s.t_range.max, far);
         draw_segment(scene, s.ray.origin, s.ray.at(t), kShadow, image);
@@ -200,14 +200,14 @@ std::string material_name(const Scene& scene, int m) {
 PixelTree debug_pixel(const Scene& scene, int x, int y) {
     PixelTree tree;
     tree.x = x, tree.y = y;
-    tree.colour = shade_pixel(scene, x, y, &tree.root);
+    tree.color = shade_pixel(scene, x, y, &tree.root);
     return tree;
 }
 
 std::string ray_tree_text(const Scene& scene, const PixelTree& tree) {
     std::string out =
         "pixel (" + std::to_string(tree.x) + ", " + std::to_string(tree.y) + "): colour " +
-        fmt(tree.colour) + " (linear), max_depth " + std::to_string(scene.max_depth) +
+        fmt(tree.color) + " (linear), max_depth " + std::to_string(scene.max_depth) +
         (scene.features.shadows ? ", shadows" : "") + (scene.fresnel ? ", fresnel" : "") + "\n";
     node_text(scene, tree.root, 0, out);
     return out;
@@ -216,7 +216,7 @@ std::string ray_tree_text(const Scene& scene, const PixelTree& tree) {
 std::string ray_tree_json(const Scene& scene, const PixelTree& tree) {
     json j;
     j["pixel"] = {tree.x, tree.y};
-    j["colour"] = array3(tree.colour);
+    j["color"] = array3(tree.color);
     j["max_depth"] = scene.max_depth;
     j["shadows"] = scene.features.shadows;
     j["fresnel"] = scene.fresnel;

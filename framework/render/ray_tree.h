@@ -12,7 +12,7 @@ namespace rt {
 
 struct PixelTree {
     int x = 0, y = 0;
-    Color colour{0};  // the pixel's linear colour, as the shaded render computes it
+    Color color{0};  // the pixel's linear colour, as the shaded render computes it
     RayNode root;
 };
 
@@ -27,11 +27,11 @@ PixelTree debug_pixel(const Scene& scene, int x, int y);
 // The tree as indented text, one ray or shadow ray per line.
 std::string ray_tree_text(const Scene& scene, const PixelTree& tree);
 
-// The same as JSON: {"pixel", "colour", "max_depth", "shadows", "fresnel", "tree": {ray node}}
+// The same as JSON: {"pixel", "color", "max_depth", "shadows", "fresnel", "tree": {ray node}}
 // where each node has "kind", "depth", "origin", "direction", "ray_weight", "weight", "hit"
 // (null on a miss; else t, point, normal, front_face, primitive, primitive_kind, material,
 // material_name), "local", "contribution", "shadow_rays" and "children". The contributions of
-// all nodes sum to "colour".
+// all nodes sum to "color".
 std::string ray_tree_json(const Scene& scene, const PixelTree& tree);
 
 // Where a world point lands on the image (pixel units, docs/conventions.md#pixels), or nothing

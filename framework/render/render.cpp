@@ -25,13 +25,13 @@ Color display_value(Color value) {
     return Color(srgb_to_linear(value.r), srgb_to_linear(value.g), srgb_to_linear(value.b));
 }
 
-Color unit_vector_colour(const Vec3& v) {
+Color unit_vector_color(const Vec3& v) {
     return Color(Real(0.5) * (v + Vec3(1)));
 }
 
 // A stable, well-spread colour per primitive id (an integer hash, not a random generator, so
 // the image is identical on every machine).
-Color primitive_colour(int id) {
+Color primitive_color(int id) {
     std::uint32_t h = std::uint32_t(id + 1) * 2654435761u;
     h ^= h >> 15;
     h *= 2246822519u;
@@ -44,21 +44,20 @@ Color primitive_colour(int id) {
 // known (map_depth, map_visits): the hit distance in the depth mode, the BVH nodes visited in the
 // BVH-visits mode.
 struct PixelResult {
-    Color colour{0};
+    Color color{0};
     Real measure = -1;  // < 0: nothing to map (a miss)
 };
 
 PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     PixelResult out;
     if (mode == RenderMode::Shaded) {
-        out.colour = shade_pixel(scene, x, y);
+        out.color = shade_pixel(scene, x, y);
         return out;
     }
     const Ray ray =
         camera_ray(scene.camera, Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)), scene.image);
     if (mode == RenderMode::Directions) {
-        if (all_finite(ray.direction))
-            out.colour = display_value(unit_vector_colour(ray.direction));
+        if (all_finite(ray.direction)) out.color = display_value(unit_vector_color(ray.direction));
         return out;
     }
     Hit hit;
@@ -75,15 +74,15 @@ PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
     if (!nearest_hit(scene, ray, Interval{0, kInfinity}, hit)) return out;
     switch (mode) {
         case RenderMode::Normals:
-            out.colour = display_value(unit_vector_colour(hit.normal));
+            out.color = display_value(unit_vector_color(hit.normal));
             break;
         case RenderMode::Depth:
             out.measure = hit.t;
             break;
         case RenderMode::PrimitiveId:
-            out.colour = display_value(primitive_colour(
-                scene.is_primitive(hit.primitive) ? int(scene.primitive_rank(hit.primitive))
-                                                  : hit.primitive));
+            out.color = display_value(primitive_color(scene.is_primitive(hit.primitive)
+                                                          ? int(scene.primitive_rank(hit.primitive))
+                                                          : hit.primitive));
             break;
         default:
             break;
@@ -111,7 +110,7 @@ namespace {
 
 // A heat ramp from black through purple, red and orange to pale yellow (the shape of the
 // "inferno" colour map, in five hand-picked stops: dark is cheap, bright is expensive).
-Color heat_colour(float v) {
+Color heat_color(float v) {
     static const Color stops[] = {{0.0f, 0.0f, 0.02f},
                                   {0.34f, 0.06f, 0.43f},
                                   {0.73f, 0.21f, 0.33f},
@@ -131,7 +130,7 @@ void map_visits(const std::vector<Real>& visits, Image& image) {
     for (Real v : visits) most = std::max(most, v);
     for (std::size_t i = 0; i < visits.size(); ++i) {
         if (visits[i] < 0 || image.pixels[i] == kStubColor) continue;
-        image.pixels[i] = display_value(heat_colour(float(visits[i] / most)));
+        image.pixels[i] = display_value(heat_color(float(visits[i] / most)));
     }
 }
 
@@ -167,7 +166,7 @@ Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) 
                              PixelResult p = render_pixel(scene, mode, x, y);
                              const std::size_t i = std::size_t(y) * width + x;
                              if (stub_calls_this_thread() != stubs) p = {kStubColor, -1};
-                             image.pixels[i] = p.colour;
+                             image.pixels[i] = p.color;
                              measures[i] = p.measure;
                          }
                      progress.advance();

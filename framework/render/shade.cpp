@@ -42,7 +42,7 @@ struct Frame {
     Ray ray;
     int depth = 0;
     Color weight{1};  // in the pixel (the debugger's; light transport never reads it)
-    Color colour{0};  // local light, then each branch's weighted colour as it completes
+    Color color{0};   // local light, then each branch's weighted colour as it completes
     bool recurse = false;
     SecondaryRays branches;
     int next = 0;  // the branch to trace next: 0 reflected, 1 refracted, 2 done
@@ -245,16 +245,16 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
         const FogEvent event =
             sample_fog(scene.fog, f.ray, found ? hit.t : kInfinity, stream->next());
         if (event.scattered) {
-            f.colour = fog_scattering(scene, f.ray.origin + event.t * f.ray.direction);
+            f.color = fog_scattering(scene, f.ray.origin + event.t * f.ray.direction);
             f.recurse = false;
-            if (observer) observer->miss(f.colour);
+            if (observer) observer->miss(f.color);
             return;
         }
     }
     if (!found) {
-        f.colour = background(scene, f.ray.direction);
+        f.color = background(scene, f.ray.direction);
         f.recurse = false;
-        if (observer) observer->miss(f.colour);
+        if (observer) observer->miss(f.color);
         return;
     }
     thread_local PreparedHit p;  // its Material copy is not rebuilt per hit
@@ -262,7 +262,7 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
     const Material& material = *p.material;
     const Color local = local_light(scene, p, observer, stream, true);
     if (observer) observer->hit(hit, p.at, local);
-    f.colour = local;
+    f.color = local;
     f.recurse = f.depth < std::min(scene.max_depth, kMaxTraceDepth) &&
                 ((scene.features.reflection && nonzero(material.reflective)) ||
                  (scene.features.refraction && nonzero(material.transmissive)));
@@ -343,9 +343,9 @@ Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
         }
         // This ray is complete: hand its colour to its parent, weighted, like a return would.
         if (observer) observer->end_ray();
-        if (top == 0) return f.colour;
+        if (top == 0) return f.color;
         Frame& parent = stack[--top];
-        parent.colour += branch(parent, parent.next).weight * f.colour;
+        parent.color += branch(parent, parent.next).weight * f.color;
         ++parent.next;
     }
 }
@@ -384,9 +384,9 @@ Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
     // pixels' camera rays give; the other lookups need none, so skip the two rays.
     if (scene.oiio_textures && (scene.texture_lookup == TextureLookup::Oiio ||
                                 scene.texture_lookup == TextureLookup::OiioAniso)) {
-        const Vec2 centre(Real(x) + Real(0.5), Real(y) + Real(0.5));
-        const RayDifferential rays{camera_ray(scene.camera, centre + Vec2(1, 0), scene.image),
-                                   camera_ray(scene.camera, centre + Vec2(0, 1), scene.image)};
+        const Vec2 center(Real(x) + Real(0.5), Real(y) + Real(0.5));
+        const RayDifferential rays{camera_ray(scene.camera, center + Vec2(1, 0), scene.image),
+                                   camera_ray(scene.camera, center + Vec2(0, 1), scene.image)};
         if (!tree) return trace(scene, ray, 0, Color(1), nullptr, &rays);
         RayTreeRecorder recorder(scene, *tree);
         return trace(scene, ray, 0, Color(1), &recorder, &rays);

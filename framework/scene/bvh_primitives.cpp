@@ -33,7 +33,7 @@ std::vector<BvhPrimitive> bvh_primitives(const Scene& scene) {
     auto add = [&](const Aabb& box, Scene::Kind kind, std::size_t i) {
         BvhPrimitive p;
         p.bounds = box;
-        p.centroid = box.centre();
+        p.centroid = box.center();
         p.id = std::uint32_t(scene.primitive_id(kind, i));
         out.push_back(p);
     };

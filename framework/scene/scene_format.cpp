@@ -36,8 +36,8 @@ const Order kRender{"mode",        "max_depth",         "shadows", "fresnel",
 const Order kMaterial{"name",        "ambient",      "diffuse",      "specular",  "emissive",
                       "shininess",   "reflective",   "transmissive", "ior",       "fuzz",
                       "diffuse_map", "specular_map", "emissive_map", "normal_map"};
-const Order kTexture{"name",   "image",  "checker", "checker_3d",
-                     "marble", "filter", "wrap",    "colour_space"};
+const Order kTexture{"name",   "image", "checker",     "checker_3d",  "marble",
+                     "filter", "wrap",  "color_space", "colour_space"};
 const Order kTextureSlot{"texture", "scale", "offset"};
 const Order kProcedural{"a", "b", "scale"};
 const Order kSurface{"type",   "center",     "radius",      "velocity",  "point",

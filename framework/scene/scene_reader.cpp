@@ -1,6 +1,8 @@
 // The typed reader over a scene file's JSON (scene/scene_reader.h).
 #include "scene/scene_reader.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 
@@ -58,6 +60,16 @@ const json* member(const json& object, const char* key) {
     std::size_t offset = positions_ ? positions_->key_offset(pointer) : 0;
     if (offset == JsonPositions::npos && positions_) offset = positions_->value_offset(pointer);
     fail_at(offset, what, fix);
+}
+
+void SceneReader::warn_key(const std::string& pointer, const std::string& what,
+                           const std::string& fix) const {
+    std::size_t offset = positions_ ? positions_->key_offset(pointer) : 0;
+    TextPosition at = position_of_offset(text_, offset == JsonPositions::npos ? 0 : offset);
+    std::fprintf(stderr, "%s\n",
+                 one_line(name_ + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                          ": warning: " + what + "; " + fix)
+                     .c_str());
 }
 
 std::string SceneReader::label(const std::string& pointer) {

@@ -46,6 +46,11 @@ class SceneReader {
     [[noreturn]] void fail_key(const std::string& pointer, const std::string& what,
                                const std::string& fix) const;
 
+    // ---- warnings (to stderr, loading goes on) ----
+    // At the key of `pointer`: "scene.json:12:5: warning: what; fix".
+    void warn_key(const std::string& pointer, const std::string& what,
+                  const std::string& fix) const;
+
     // How a value is named in messages: "radius", "center"[1], "surfaces"[3].
     static std::string label(const std::string& pointer);
     // The text of a scalar value as written in the file (to show 1e999 rather than "inf").

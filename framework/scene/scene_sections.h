@@ -70,6 +70,7 @@ class SceneSections : public SceneReader {
     // scene_textures.cpp
     void read_textures(const json& root);
     void read_texture(const json& object, const std::string& pointer);
+    const char* color_space_key(const json& object, const std::string& pointer) const;
     // A material's texture slot: a texture name, or {"texture", "scale", "offset"}.
     TextureSlot texture_slot(const json& value, const std::string& pointer);
     // The texture image of `path`, read once however many textures use it; errors at `pointer`.
@@ -111,7 +112,7 @@ class SceneSections : public SceneReader {
     std::map<std::string, int> material_ids_;
     std::map<std::string, int> texture_ids_;
     std::map<std::string, int> image_ids_;      // texture images by normalised path, read once
-    std::vector<int> texture_colour_space_;     // per texture: -1 unsaid, 0 linear, 1 sRGB
+    std::vector<int> texture_color_space_;      // per texture: -1 unsaid, 0 linear, 1 sRGB
     std::vector<bool> texture_float_file_;      // per texture: reads an EXR or HDR file
     std::vector<std::string> texture_pointer_;  // per texture: where errors about it point
     std::map<int, ImageInfo> image_info_;       // by texture image index: channels, float or not

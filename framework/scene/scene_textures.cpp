@@ -26,11 +26,23 @@ void SceneSections::read_textures(const json& root) {
         read_texture((*list)[i], JsonPositions::child("/textures", i));
 }
 
+// "color_space", or its old spelling "colour_space" (accepted with a warning); not both.
+const char* SceneSections::color_space_key(const json& object, const std::string& pointer) const {
+    if (!member(object, "colour_space")) return "color_space";
+    const std::string old_key = JsonPositions::child(pointer, "colour_space");
+    if (member(object, "color_space"))
+        fail_key(old_key, "a texture has \"color_space\" and its old spelling \"colour_space\"",
+                 "remove \"colour_space\"");
+    warn_key(old_key, "\"colour_space\" is the old spelling of \"color_space\"",
+             "rename the key to \"color_space\"");
+    return "colour_space";
+}
+
 void SceneSections::read_texture(const json& object, const std::string& pointer) {
     require_object(object, pointer, kTextureExample);
-    check_keys(
-        object, pointer, "a texture",
-        {"name", "image", "filter", "wrap", "colour_space", "checker", "checker_3d", "marble"});
+    check_keys(object, pointer, "a texture",
+               {"name", "image", "filter", "wrap", "color_space", "colour_space", "checker",
+                "checker_3d", "marble"});
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     const std::string name_pointer = at("name");
     const std::string name =
@@ -58,7 +70,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
                    "give one of \"image\", \"checker\", \"checker_3d\", \"marble\"");
 
     Texture t;
-    int colour_space = -1;  // -1: by file and use (finish_textures), 0 linear, 1 sRGB
+    int color_space = -1;  // -1: by file and use (finish_textures), 0 linear, 1 sRGB
     if (const json* v = member(object, "image")) {
         const std::string file = string(*v, at("image"), "\"bricks.png\"");
         if (file.empty()) fail_value(at("image"), "\"image\" is empty", "name an image file");
@@ -86,7 +98,7 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
                 "the size of a cube or vein in world units, e.g. 0.5"));
         texture_float_file_.push_back(false);
         texture_pointer_.push_back(pointer);
-        for (const char* key : {"filter", "wrap", "colour_space"})
+        for (const char* key : {"filter", "wrap", "color_space", "colour_space"})
             if (member(object, key))
                 fail_key(at(key), std::string("\"") + key + "\" applies to image textures only",
                          "remove it");
@@ -95,10 +107,11 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         t.filter = TextureFilter(choice(*v, at("filter"), {"nearest", "bilinear"}));
     if (const json* v = member(object, "wrap"))
         t.wrap = TextureWrap(choice(*v, at("wrap"), {"repeat", "clamp", "mirror"}));
-    if (const json* v = member(object, "colour_space"))
-        colour_space = int(choice(*v, at("colour_space"), {"linear", "srgb"}));
+    const char* space_key = color_space_key(object, pointer);
+    if (const json* v = member(object, space_key))
+        color_space = int(choice(*v, at(space_key), {"linear", "srgb"}));
     if (t.kind == TextureKind::Image) texture_pointer_.push_back(at("image"));
-    texture_colour_space_.push_back(colour_space);
+    texture_color_space_.push_back(color_space);
     scene_.textures.push_back(t);
     scene_.texture_names.push_back(name);
 }
@@ -141,7 +154,7 @@ TextureSlot SceneSections::mtl_texture_slot(const ObjTextureMap& map, bool data,
         index = int(scene_.textures.size());
         scene_.textures.push_back(t);
         scene_.texture_names.push_back(texture_name);
-        texture_colour_space_.push_back(t.srgb ? 1 : 0);
+        texture_color_space_.push_back(t.srgb ? 1 : 0);
         texture_pointer_.push_back(pointer);
         texture_float_file_.push_back(image_info_.at(t.image).floating);
         texture_ids_.emplace(texture_name, index);
@@ -205,7 +218,7 @@ void SceneSections::finish_textures() {
                            " is a normal map but its image has " + std::to_string(channels) +
                            (channels == 1 ? " channel (grey)" : " channels (grey and alpha)"),
                        "a normal map needs RGB (x, y, z in red, green, blue)");
-        const int said = texture_colour_space_[i];
+        const int said = texture_color_space_[i];
         t.srgb = said >= 0 ? said == 1 : !texture_float_file_[i] && !normal_map[i];
     }
 }

@@ -13,12 +13,11 @@ Vec3 abs3(const Vec3& v) {
 }  // namespace
 
 SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
-    SurfacePoint sp;
-    sp.point = hit.point;
-    sp.normal = hit.normal;
-    sp.front_face = hit.front_face;
-    sp.primitive = hit.primitive;
-    sp.material = hit.material;
+    SurfacePoint sp{.point = hit.point,
+                    .normal = hit.normal,
+                    .front_face = hit.front_face,
+                    .primitive = hit.primitive,
+                    .material = hit.material};
     if (!scene.is_primitive(hit.primitive)) {
         // Unknown primitive: the point as computed, with the error of o + t d.
         sp.error = gamma_bound(4) * (abs3(ray.origin) + abs3(hit.t * ray.direction));
@@ -28,9 +27,9 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     switch (scene.primitive_kind(hit.primitive, i)) {
         case Scene::Kind::Sphere: {
             const Sphere& s = scene.spheres[i];
-            const Vec3 from_centre = hit.point - s.center;
-            const Real length = glm::length(from_centre);
-            if (length > 0) sp.point = s.center + from_centre * (s.radius / length);
+            const Vec3 from_center = hit.point - s.center;
+            const Real length = glm::length(from_center);
+            if (length > 0) sp.point = s.center + from_center * (s.radius / length);
             sp.error = gamma_bound(8) * (abs3(s.center) + abs3(sp.point - s.center));
             break;
         }

@@ -67,12 +67,12 @@ Image make_latlong_sky() {
 }
 
 Image make_cube_face(int face) {
-    const Color colours[kCubeFaces] = {{0.8f, 0.2f, 0.2f},  {0.2f, 0.7f, 0.7f},
-                                       {0.3f, 0.5f, 0.9f},  {0.45f, 0.3f, 0.15f},
-                                       {0.85f, 0.8f, 0.2f}, {0.7f, 0.3f, 0.8f}};
+    const Color colors[kCubeFaces] = {{0.8f, 0.2f, 0.2f},  {0.2f, 0.7f, 0.7f},
+                                      {0.3f, 0.5f, 0.9f},  {0.45f, 0.3f, 0.15f},
+                                      {0.85f, 0.8f, 0.2f}, {0.7f, 0.3f, 0.8f}};
     const int n = 32;
-    Image image(n, n, colours[face]);
-    const Color dark = colours[face] * 0.4f, ink(1), black(0);
+    Image image(n, n, colors[face]);
+    const Color dark = colors[face] * 0.4f, ink(1), black(0);
     for (int k = 0; k < n; ++k)
         image.at(k, 0) = image.at(k, n - 1) = image.at(0, k) = image.at(n - 1, k) = dark;
     for (int j = 2; j < 5; ++j)  // the (u, v) = (0, 0) corner

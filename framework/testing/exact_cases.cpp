@@ -193,10 +193,10 @@ std::vector<SphereCase> small_far_sphere_cases(int count) {
     std::vector<SphereCase> cases;
     Rng rng(0x5eed0008);
     for (int i = 0; i < count; ++i) {
-        const Vec3 centre = rng.unit() * Real(1e4);
-        const Sphere s{centre, 1};
+        const Vec3 center = rng.unit() * Real(1e4);
+        const Sphere s{center, 1};
         const Vec3 o = rng.vec(-1, 1);
-        const Vec3 target = centre + rng.vec(-0.6, 0.6);
+        const Vec3 target = center + rng.vec(-0.6, 0.6);
         const Ray ray{o, glm::normalize(target - o) * Real(rng.uniform(0.5, 2))};
         const SphereTruth truth = exact_sphere(ray, s);
         if (!(truth.tangency < -0.1)) continue;
@@ -225,12 +225,12 @@ std::vector<SphereCase> large_sphere_inside_cases(int count) {
     std::vector<SphereCase> cases;
     Rng rng(0x5eed000d);
     for (int i = 0; i < count; ++i) {
-        const Vec3 centre(Real(rng.integer(-50, 50)), Real(rng.integer(-50, 50)),
+        const Vec3 center(Real(rng.integer(-50, 50)), Real(rng.integer(-50, 50)),
                           Real(rng.integer(-50, 50)));
-        const Sphere s{centre, 1000};
+        const Sphere s{center, 1000};
         Vec3 up(0);
         up[rng.integer(0, 2)] = Real(i % 2 ? 1 : -1);
-        const Vec3 o = centre + up * Real(1000 - rng.integer(1, 8));
+        const Vec3 o = center + up * Real(1000 - rng.integer(1, 8));
         const Ray ray{o, up * Real(rng.uniform(0.5, 2)) + rng.vec(-0.05, 0.05)};
         cases.push_back({ray, s, exact_sphere(ray, s)});
     }

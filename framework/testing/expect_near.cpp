@@ -22,8 +22,8 @@ void expect_vec_near(const Vec3& actual, const Vec3& expected, const std::string
     EXPECT_NEAR(actual.z, expected.z, tol) << what << ", z component" << both;
 }
 
-void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
-                        float tol, Scale scale, std::source_location where) {
+void expect_color_near(const Color& actual, const Color& expected, const std::string& what,
+                       float tol, Scale scale, std::source_location where) {
     const ::testing::ScopedTrace trace(where.file_name(), int(where.line()),
                                        "the check that failed");
     const std::string both = ": got " + text(actual) + ", expected " + text(expected);

@@ -21,9 +21,9 @@ void expect_vec_near(const Vec3& actual, const Vec3& expected, const std::string
 
 // Relative: the tolerance scales with the expected value's magnitude (when above 1).
 enum class Scale { Absolute, Relative };
-void expect_colour_near(const Color& actual, const Color& expected, const std::string& what,
-                        float tol = 1e-5f, Scale scale = Scale::Absolute,
-                        std::source_location where = std::source_location::current());
+void expect_color_near(const Color& actual, const Color& expected, const std::string& what,
+                       float tol = 1e-5f, Scale scale = Scale::Absolute,
+                       std::source_location where = std::source_location::current());
 
 }  // namespace rt::testing
 

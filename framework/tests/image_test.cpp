@@ -82,14 +82,14 @@ TEST(ImageFiles, ExrReadsBackLinearValuesExactly) {
     EXPECT_EQ(back.at(2, 1), img.at(2, 1));
 }
 
-TEST(ImageFiles, IntegerImagesDecodeAsColourOrData) {
+TEST(ImageFiles, IntegerImagesDecodeAsColorOrData) {
     // 8-bit: mid grey 188 is linear ~0.5 as colour, 188/255 as data.
     Image8 img{2, 1, {188, 188, 188, 255, 0, 0}};
     const auto file = temp_file("grey.png");
     write_image8(img, file);
-    const Image colour = read_image(file, Encoding::Srgb);
+    const Image color = read_image(file, Encoding::Srgb);
     const Image data = read_image(file, Encoding::Data);
-    EXPECT_NEAR(colour.at(0, 0).r, srgb_to_linear(188 / 255.0f), 1e-6f);
+    EXPECT_NEAR(color.at(0, 0).r, srgb_to_linear(188 / 255.0f), 1e-6f);
     EXPECT_NEAR(data.at(0, 0).r, 188 / 255.0f, 1e-6f);
     EXPECT_FLOAT_EQ(data.at(1, 0).r, 1.0f);
     EXPECT_FLOAT_EQ(data.at(1, 0).g, 0.0f);

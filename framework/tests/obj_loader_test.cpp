@@ -366,8 +366,8 @@ TEST(SceneShading, ShadingNormalInterpolatesOrFallsBack) {
     scene.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     scene.triangles.resize(1);
     scene.triangles[0].v = {0, 1, 2};
-    const rt::Vec2 centre(1.0f / 3, 1.0f / 3);
-    EXPECT_EQ(rt::shading_normal(scene, 0, centre), rt::Vec3(0, 0, 1));  // no normals: geometric
+    const rt::Vec2 center(1.0f / 3, 1.0f / 3);
+    EXPECT_EQ(rt::shading_normal(scene, 0, center), rt::Vec3(0, 0, 1));  // no normals: geometric
     rt::Vec2 ua, ub, uc;  // no uvs in the scene: the texture spans the triangle
     rt::triangle_vertex_uvs(scene, 0, ua, ub, uc);
     EXPECT_EQ(ua, rt::Vec2(0, 0));
@@ -388,10 +388,10 @@ TEST(SceneShading, ShadingNormalInterpolatesOrFallsBack) {
     EXPECT_EQ(uc, scene.uvs[2]);
     // Normals on the other side of the winding are turned to the geometric side.
     for (rt::Vec3& n : scene.normals) n = -n;
-    EXPECT_GT(rt::shading_normal(scene, 0, centre).z, 0);
+    EXPECT_GT(rt::shading_normal(scene, 0, center).z, 0);
     // A corner without a normal (the zero sentinel) means the geometric normal.
     scene.normals[2] = rt::Vec3(0);
-    EXPECT_EQ(rt::shading_normal(scene, 0, centre), rt::Vec3(0, 0, 1));
+    EXPECT_EQ(rt::shading_normal(scene, 0, center), rt::Vec3(0, 0, 1));
     // Normals that cancel out give the geometric normal too, never NaN.
     scene.normals = {{1, 0, 0}, {-1, 0, 0}, {1, 0, 0}};
     EXPECT_EQ(rt::shading_normal(scene, 0, {0.5f, 0}), rt::Vec3(0, 0, 1));

@@ -87,14 +87,14 @@ TEST(OiioTextures, RayDifferentialsGiveThePixelFootprint) {
                                        Vec3(0, 0, -1), 90, 2);
     scene.planes.push_back(Plane{Vec3(0), Vec3(0, 1, 0), 0});
     for (const auto& [x, y] : {std::pair{50, 50}, std::pair{10, 80}}) {
-        const Vec2 centre(Real(x) + Real(0.5), Real(y) + Real(0.5));
-        const Ray ray = camera_ray(scene.camera, centre, scene.image);
+        const Vec2 center(Real(x) + Real(0.5), Real(y) + Real(0.5));
+        const Ray ray = camera_ray(scene.camera, center, scene.image);
         Hit hit;
         ASSERT_TRUE(nearest_hit(scene, ray, Interval{0, kInfinity}, hit));
         SurfacePoint at = surface_point(scene, ray, hit);
         at.texcoord = surface_texcoord(scene, hit, at);
-        const RayDifferential rays{camera_ray(scene.camera, centre + Vec2(1, 0), scene.image),
-                                   camera_ray(scene.camera, centre + Vec2(0, 1), scene.image)};
+        const RayDifferential rays{camera_ray(scene.camera, center + Vec2(1, 0), scene.image),
+                                   camera_ray(scene.camera, center + Vec2(0, 1), scene.image)};
         const TexcoordDerivatives d = texcoord_derivatives(scene, hit, at, rays);
         EXPECT_NEAR(glm::length(d.dx), 0.02, 1e-5) << x << "," << y;
         EXPECT_NEAR(glm::length(d.dy), 0.02, 1e-5) << x << "," << y;

@@ -114,8 +114,8 @@ TEST(ProceduralMesh, IcosphereFacesOutwardsWithTheSphereVolume) {
         EXPECT_GT(volume, previous) << "finer meshes fill more of the sphere";
         previous = volume;
         for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {  // every face, not just the sum
-            glm::dvec3 centre(mesh.vertices[mesh.triangles[i][0]]);
-            ASSERT_GT(glm::dot(face_normal(mesh, i), centre), 0) << "triangle " << i;
+            glm::dvec3 center(mesh.vertices[mesh.triangles[i][0]]);
+            ASSERT_GT(glm::dot(face_normal(mesh, i), center), 0) << "triangle " << i;
         }
     }
     EXPECT_NEAR(previous / sphere, 1.0, 0.002);  // 20480 triangles: within 0.2%

@@ -106,7 +106,7 @@ const BadScene kBadScenesTable[] = {
     {"76-sky-sun-narrower-than-a-texel", 2, 49, R"(narrower than a texel of the baked sky)"},
     {"77-environment-sky-and-latlong", 2, 79,
      R"(an environment is one of "latlong", "cube" and "sky")"},
-    {"78-sky-unknown-key", 2, 27, R"(unknown key "sun_colour" in "sky")"},
+    {"78-sky-unknown-key", 2, 27, R"(unknown key "sun_color" in "sky")"},
     {"79-environment-negative-ambient", 2, 41, R"("ambient" must be >= 0, got -0.5)"},
     {"80-fog-without-density", 3, 10, R"(the fog needs "density")"},
     {"81-fog-albedo-above-one", 3, 43, R"("albedo" must be between 0 and 1, got 1.2)"},

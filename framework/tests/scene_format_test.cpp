@@ -190,7 +190,7 @@ TEST(SceneFormat, RefusesWhatTheLoaderRefusesWithItsMessage) {
         "[1, 2]",
         R"({"surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1},]})",
         R"({"surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})",
-        R"({"surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "colour": 1}]})",
+        R"({"surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "color": 1}]})",
         R"({"camera": {"fov": 45, "fov": 50}})",
         R"({"comment": "unknown keys are errors, as in the loader"})",
         "{\"image\": {\"width\": 10}} // no comments",

@@ -26,18 +26,50 @@ void write_two_texel_png(const fs::path& file) {
     write_image8(image, file);
 }
 
+// Scene keys are spelled as identifiers are (docs/conventions.md): "color_space". The old key
+// "colour_space" still loads, with a warning at its line; both at once are an error.
+TEST(TextureLoading, OldColourSpaceKeyLoadsWithAWarning) {
+    TempDir dir("textures");
+    write_two_texel_png(dir.path() / "t.png");
+    const fs::path old = dir.write("old.json", R"({
+  "textures": [{"name": "t", "image": "t.png", "colour_space": "linear"}],
+  "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]
+})");
+    ::testing::internal::CaptureStderr();
+    const Scene s = load_scene(old);
+    const std::string warned = ::testing::internal::GetCapturedStderr();
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_FALSE(s.textures[0].srgb) << "the old key's value is used";
+    EXPECT_NE(warned.find("old.json:2:"), std::string::npos) << warned;
+    EXPECT_NE(warned.find("warning: \"colour_space\" is the old spelling of \"color_space\""),
+              std::string::npos)
+        << warned;
+    const fs::path both = dir.write("both.json", R"({
+  "textures": [{"name": "t", "image": "t.png", "color_space": "srgb", "colour_space": "linear"}],
+  "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]
+})");
+    try {
+        load_scene(both);
+        ADD_FAILURE() << "both spellings loaded";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("both.json:2:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("remove \"colour_space\""), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
     TempDir dir("textures");
     write_two_texel_png(dir.path() / "t.png");
     const fs::path scene = dir.write("s.json", R"({
   "textures": [
-    {"name": "colour", "image": "t.png", "filter": "nearest", "wrap": "mirror"},
+    {"name": "color", "image": "t.png", "filter": "nearest", "wrap": "mirror"},
     {"name": "bumps", "image": "t.png"},
-    {"name": "forced", "image": "t.png", "colour_space": "linear"},
+    {"name": "forced", "image": "t.png", "color_space": "linear"},
     {"name": "checks", "checker": {"a": [1, 0, 0]}}
   ],
   "materials": [
-    {"name": "m", "diffuse_map": {"texture": "colour", "scale": [4, 2], "offset": [0.5, 0]},
+    {"name": "m", "diffuse_map": {"texture": "color", "scale": [4, 2], "offset": [0.5, 0]},
      "normal_map": "bumps", "emissive_map": "checks"}
   ],
   "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]
@@ -51,7 +83,7 @@ TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
     EXPECT_EQ(s.textures[0].wrap, TextureWrap::Mirror);
     EXPECT_TRUE(s.textures[0].srgb) << "a colour texture from a PNG is sRGB";
     EXPECT_FALSE(s.textures[1].srgb) << "a texture used as a normal map is data";
-    EXPECT_FALSE(s.textures[2].srgb) << "\"colour_space\": \"linear\" wins";
+    EXPECT_FALSE(s.textures[2].srgb) << "\"color_space\": \"linear\" wins";
     EXPECT_EQ(s.textures[3].kind, TextureKind::Checker2D);
     EXPECT_EQ(s.textures[3].a, Color(1, 0, 0));
     EXPECT_EQ(s.textures[3].b, Color(1)) << "b defaults to white";

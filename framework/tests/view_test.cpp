@@ -89,7 +89,7 @@ TEST(ViewSettings, BadNamesAndValuesSayWhatIsAccepted) {
     EXPECT_NE(set_by_name(s, "mode", "shady").find("shaded"), std::string::npos);
     EXPECT_NE(set_by_name(s, "shadows", "maybe").find("on or off"), std::string::npos);
     EXPECT_NE(set_by_name(s, "max-depth", "65").find("0..64"), std::string::npos);
-    EXPECT_NE(set_by_name(s, "colour", "red").find("settings:"), std::string::npos);
+    EXPECT_NE(set_by_name(s, "color", "red").find("settings:"), std::string::npos);
     EXPECT_EQ(set_by_name(s, "filter", "nearest"), "");
     EXPECT_EQ(s.texture_lookup, TextureLookup::Nearest);
 }

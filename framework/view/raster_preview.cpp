@@ -54,7 +54,7 @@ uniform bool orthographic;
 uniform int light_count;
 uniform int light_kind[8];  // 0 point, 1 directional
 uniform vec3 light_position[8], light_direction[8], light_intensity[8], light_attenuation[8];
-out vec4 colour;
+out vec4 color;
 float encode(float c) {
     c = clamp(c, 0.0, 1.0);
     return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
@@ -80,7 +80,7 @@ void main() {
         c += light_intensity[i] * attenuation *
              (d * ndl + s * pow(max(dot(N, H), 0.0), shininess));
     }
-    colour = vec4(encode(c.r), encode(c.g), encode(c.b), 1.0);
+    color = vec4(encode(c.r), encode(c.g), encode(c.b), 1.0);
 }
 )";
 
@@ -122,7 +122,7 @@ class MeshBuilder {
 };
 
 // The scene's extent, for plane sizes and the depth range.
-Real scene_radius(const Scene& scene, Vec3& centre) {
+Real scene_radius(const Scene& scene, Vec3& center) {
     Vec3 lo(kInfinity), hi(-kInfinity);
     const auto grow = [&](const Vec3& p) { lo = glm::min(lo, p), hi = glm::max(hi, p); };
     for (const Sphere& s : scene.spheres)
@@ -131,7 +131,7 @@ Real scene_radius(const Scene& scene, Vec3& centre) {
     for (const Vec3& v : scene.vertices) grow(v);
     for (const Plane& p : scene.planes) grow(p.point);
     grow(scene.camera.eye);
-    centre = (lo + hi) * Real(0.5);
+    center = (lo + hi) * Real(0.5);
     return std::max(Real(1), glm::length(hi - lo) * Real(0.5));
 }
 
@@ -142,8 +142,8 @@ std::vector<Vertex> tessellate(const Scene& scene) {
         for (const auto& t : ball.triangles)
             for (std::uint32_t i : t)
                 mesh.add(s.center + ball.vertices[i] * s.radius, ball.normals[i], s.material);
-    Vec3 centre;
-    const Real size = 20 * scene_radius(scene, centre);
+    Vec3 center;
+    const Real size = 20 * scene_radius(scene, center);
     for (const Plane& p : scene.planes) {
         const Vec3 helper = std::abs(p.normal.x) < Real(0.9) ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
         const Vec3 a = glm::normalize(glm::cross(p.normal, helper)) * size;
@@ -210,8 +210,8 @@ RasterPreview::RasterPreview(const Scene& scene) {
     glBindVertexArray(0);
 
     width_ = scene.image.width, height_ = scene.image.height;
-    glGenTextures(1, &colour_);
-    glBindTexture(GL_TEXTURE_2D, colour_);
+    glGenTextures(1, &color_);
+    glBindTexture(GL_TEXTURE_2D, color_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -221,7 +221,7 @@ RasterPreview::RasterPreview(const Scene& scene) {
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -229,7 +229,7 @@ RasterPreview::RasterPreview(const Scene& scene) {
 RasterPreview::~RasterPreview() {
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(1, &depth_);
-    glDeleteTextures(1, &colour_);
+    glDeleteTextures(1, &color_);
     glDeleteBuffers(1, &vbo_);
     glDeleteVertexArrays(1, &vao_);
     glDeleteProgram(program_);
@@ -237,9 +237,9 @@ RasterPreview::~RasterPreview() {
 
 void RasterPreview::draw(const Scene& scene) {
     const Camera& cam = scene.camera;
-    Vec3 centre;
-    const Real radius = scene_radius(scene, centre);
-    const float far = float(40 * radius + glm::length(cam.eye - centre));
+    Vec3 center;
+    const Real radius = scene_radius(scene, center);
+    const float far = float(40 * radius + glm::length(cam.eye - center));
     const float aspect = float(width_) / float(height_);
     const glm::mat4 view = glm::lookAt(f3(cam.eye), f3(cam.eye - cam.w), f3(cam.v));
     const bool ortho = cam.projection == Projection::Orthographic;

@@ -21,11 +21,11 @@ class RasterPreview {
     // Draws the scene through `scene.camera` and its lights into the preview's texture
     // (scene.image size, row 0 at the bottom as GL stores it), restoring the default framebuffer.
     void draw(const Scene& scene);
-    GLuint texture() const { return colour_; }
+    GLuint texture() const { return color_; }
     std::size_t triangles() const { return vertex_count_ / 3; }
 
   private:
-    GLuint program_ = 0, vao_ = 0, vbo_ = 0, fbo_ = 0, colour_ = 0, depth_ = 0;
+    GLuint program_ = 0, vao_ = 0, vbo_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
     GLsizei vertex_count_ = 0;
     int width_ = 0, height_ = 0;
 };

@@ -27,7 +27,7 @@ const char* kind_label(RayNode::Kind kind) {
 }
 
 // The colours draw_ray_tree uses, so the list and the overlay read alike.
-ImVec4 kind_colour(RayNode::Kind kind) {
+ImVec4 kind_color(RayNode::Kind kind) {
     switch (kind) {
         case RayNode::Kind::Camera:
             return {1, 0.35f, 0.35f, 1};
@@ -55,7 +55,7 @@ std::string what_was_hit(const Scene& scene, const RayNode& n) {
 
 void ray_list(const Scene& scene, const RayNode& n) {
     ImGui::PushID(&n);
-    ImGui::TextColored(kind_colour(n.kind), "%*s%s d%d", n.depth * 2, "", kind_label(n.kind),
+    ImGui::TextColored(kind_color(n.kind), "%*s%s d%d", n.depth * 2, "", kind_label(n.kind),
                        n.depth);
     ImGui::SameLine();
     ImGui::TextUnformatted(what_was_hit(scene, n).c_str());
@@ -202,8 +202,8 @@ void draw_panel(Viewer& viewer, float width, float height) {
     if (const auto& tree = viewer.selected()) {
         ImGui::Separator();
         ImGui::Text("pixel (%d, %d): %d rays, colour (%.4f, %.4f, %.4f)", tree->x, tree->y,
-                    count_rays(tree->root), double(tree->colour.r), double(tree->colour.g),
-                    double(tree->colour.b));
+                    count_rays(tree->root), double(tree->color.r), double(tree->color.g),
+                    double(tree->color.b));
         ImGui::BeginChild("rays", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
         ray_list(viewer.scene(), tree->root);
         ImGui::EndChild();

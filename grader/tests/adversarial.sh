@@ -215,7 +215,7 @@ CPP
   edit_tests)  # edits tests and CMake files, plants a symlink and an odd name, submits stubs
     mkdir -p "$sub/$s1/tests"
     stub "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
-    printf '#include <gtest/gtest.h>\nTEST(Perspective, CentreLooksAlongViewDirection) {}\n' \
+    printf '#include <gtest/gtest.h>\nTEST(Perspective, CenterLooksAlongViewDirection) {}\n' \
       > "$sub/$s1/tests/camera_rays_test.cpp"
     echo 'message(FATAL_ERROR "edited")' > "$sub/$s1/CMakeLists.txt"
     echo 'project(evil)' > "$sub/CMakeLists.txt"
@@ -296,7 +296,7 @@ CPP
       "$src/$s1/camera_rays.cpp" > "$sub/$s1/camera_rays.cpp"
     # The direction images are smooth gradients: half a pixel moves them by at most 2 levels,
     # within the tolerance, so the unit tests are what catches this bug (docs/grading.md).
-    checks=(--test-failed "Perspective.PixelCentresAreSymmetric" --score-max 12) ;;
+    checks=(--test-failed "Perspective.PixelCentersAreSymmetric" --score-max 12) ;;
   calib_flipped_normals)  # stores the outward normal instead of the one facing the ray
     solution2; stages=2; limit=()
     grep -q 'set_face_normal' "$src/framework/core/hit.h" || { echo "hit.h changed"; exit 1; }

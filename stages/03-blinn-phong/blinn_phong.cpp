@@ -63,14 +63,14 @@ Color blinn_phong(const Material& material, const Vec3& normal, const Vec3& to_v
 Color direct_light(const Scene& scene, const Material& material, const Vec3& point,
                    const Vec3& normal, const Vec3& to_viewer, LightVisibility visibility) {
     // BEGIN SOLUTION
-    Color colour = material.emissive + material.ambient * scene.ambient_light;
+    Color color = material.emissive + material.ambient * scene.ambient_light;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const LightSample sample = illuminate(scene.lights[i], point);
         const Color shading =
             blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity);
-        colour += visibility[i] * shading;
+        color += visibility[i] * shading;
     }
-    return colour;
+    return color;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/03-blinn-phong/README.md#summing-the-terms");
     // (void)scene; (void)material; (void)point; (void)normal; (void)to_viewer; (void)visibility;

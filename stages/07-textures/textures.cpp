@@ -45,9 +45,9 @@ Vec2 plane_texcoord(const Plane& plane, const Vec3& point) {
 Vec2 box_texcoord(const Box& box, const Vec3& point, const Vec3& outward_normal) {
     // BEGIN SOLUTION
     const PlaneFrame f = plane_frame(outward_normal);
-    const Vec3 centre = (box.min + box.max) / Real(2);
+    const Vec3 center = (box.min + box.max) / Real(2);
     const Vec3 size = box.max - box.min;
-    const Vec3 d = point - centre;
+    const Vec3 d = point - center;
     // t and b are axis directions (+-1 on one axis), so |t|.size is the edge along t.
     const Real width = glm::dot(glm::abs(f.t), size), height = glm::dot(glm::abs(f.b), size);
     return Vec2(Real(0.5) + glm::dot(d, f.t) / width, Real(0.5) + glm::dot(d, f.b) / height);

@@ -49,11 +49,11 @@ CubeFaceUv cube_face_uv(vec3 direction) {
     // END SOLUTION
 }
 
-// Rotate, map to an image position, filter, scale. background_colour when there is none.
+// Rotate, map to an image position, filter, scale. background_color when there is none.
 vec3 environment_radiance(vec3 direction) {
     // BEGIN SOLUTION
     const Environment env = environment[0];
-    if (env.kind_image.x == kEnvironmentNone) return background_colour;
+    if (env.kind_image.x == kEnvironmentNone) return background_color;
     // The environment turned by +rotate_y: look up the direction turned back by -rotate_y.
     const float angle = env.intensity_rotate_y.y * kPi / 180.0;
     const float c = cos(angle), s = sin(angle);

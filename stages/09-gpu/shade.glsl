@@ -50,12 +50,12 @@ vec3 blinn_phong(Material material, vec3 normal, vec3 to_viewer, vec3 to_light, 
 vec3 direct_light(Material material, vec3 point, vec3 normal, vec3 to_viewer,
                   vec3 visibility[MAX_LIGHTS]) {
     // BEGIN SOLUTION
-    vec3 colour = material.emissive.rgb + material.ambient.rgb * ambient_light;
+    vec3 color = material.emissive.rgb + material.ambient.rgb * ambient_light;
     for (int i = 0; i < light_count; ++i) {
         const LightSample s = illuminate(i, point);
-        colour += visibility[i] * blinn_phong(material, normal, to_viewer, s.direction, s.intensity);
+        color += visibility[i] * blinn_phong(material, normal, to_viewer, s.direction, s.intensity);
     }
-    return colour;
+    return color;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
     // return vec3(0);

@@ -35,9 +35,9 @@ vec2 plane_texcoord(vec3 plane_point, vec3 plane_normal, vec3 point) {
 vec2 box_texcoord(vec3 box_min, vec3 box_max, vec3 point, vec3 outward_normal) {
     // BEGIN SOLUTION
     const PlaneFrame f = plane_frame(outward_normal);
-    const vec3 centre = (box_min + box_max) / 2.0;
+    const vec3 center = (box_min + box_max) / 2.0;
     const vec3 size = box_max - box_min;
-    const vec3 d = point - centre;
+    const vec3 d = point - center;
     const float width = dot(abs(f.t), size), height = dot(abs(f.b), size);
     return vec2(0.5 + dot(d, f.t) / width, 0.5 + dot(d, f.b) / height);
     // STUB

@@ -58,7 +58,7 @@ struct RenderPoint {
     int spp = 1;
     double ms = 0;           // summed over the scenes, one thread
     double rmse = 0;         // 8-bit units against the 256-sample reference, mean over scenes
-    double centre_diff = 0;  // % pixels off by > 2/255 from the double pixel-centre image
+    double center_diff = 0;  // % pixels off by > 2/255 from the double pixel-centre image
 };
 
 struct AccuracyResults {

@@ -57,7 +57,7 @@ Framing frame_mesh(const Scene& scene, int width, int height) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    const Vec3 centre = (lo + hi) * Real(0.5);
+    const Vec3 center = (lo + hi) * Real(0.5);
     Real radius = Real(0.5) * glm::length(hi - lo);
     if (!(radius > 0)) radius = 1;
     constexpr Real fov = 40;
@@ -66,20 +66,20 @@ Framing frame_mesh(const Scene& scene, int width, int height) {
     // The frame first (it does not depend on the distance), then the distance each corner needs.
     const Vec3 view = glm::normalize(Vec3(0.3, 0.25, 1));
     const Camera frame =
-        make_look_at_camera(Projection::Perspective, centre + view, centre, Vec3(0, 1, 0), fov, 2);
+        make_look_at_camera(Projection::Perspective, center + view, center, Vec3(0, 1, 0), fov, 2);
     Real distance = 0;
     for (int k = 0; k < 8; ++k) {
         const Vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        const Vec3 c = corner - centre;
+        const Vec3 c = corner - center;
         const Real depth = glm::dot(c, frame.w);  // towards the eye
         distance = std::max({distance, depth + std::abs(glm::dot(c, frame.u)) / tan_h,
                              depth + std::abs(glm::dot(c, frame.v)) / tan_v});
     }
     if (!(distance > 0)) distance = radius / tan_v;
     Framing f;
-    f.camera = make_look_at_camera(Projection::Perspective, centre + Real(1.02) * distance * view,
-                                   centre, Vec3(0, 1, 0), fov, 2);
-    f.light = centre + radius * Vec3(1.5, 2.5, 2.0);
+    f.camera = make_look_at_camera(Projection::Perspective, center + Real(1.02) * distance * view,
+                                   center, Vec3(0, 1, 0), fov, 2);
+    f.light = center + radius * Vec3(1.5, 2.5, 2.0);
     return f;
 }
 

@@ -404,7 +404,7 @@ void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
         res.render_width_sum += sf.width;
         res.render_height_sum += sf.height;
         const Pixels reference = render_t<double>(sd, 16, &watertight<double>, 2);
-        const Pixels centre = render_t<double>(sd, 1, &watertight<double>, 2);
+        const Pixels center = render_t<double>(sd, 1, &watertight<double>, 2);
         for (std::size_t k = 0; k < series.size(); ++k) {
             const Series& s = series[k];
             Pixels img;
@@ -422,7 +422,7 @@ void rendering(const AccuracyConfig& cfg, AccuracyResults& res) {
                     }));
             points[k].ms += ms;
             points[k].rmse += rmse8(img, reference) / double(files.size());
-            points[k].centre_diff += percent_off(img, centre) / double(files.size());
+            points[k].center_diff += percent_off(img, center) / double(files.size());
         }
         if (cfg.progress) cfg.progress("rendered " + name);
     }

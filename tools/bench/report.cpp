@@ -370,7 +370,7 @@ void write_rendering(std::ostream& m, const AccuracyResults& r, const std::strin
         for (const RenderPoint& p : r.render)
             m << "| " << p.series << " | " << p.spp << " | " << fmt("%.1f", p.ms) << " | "
               << fmt("%.3f", p.rmse) << " | "
-              << (p.spp == 1 ? fmt("%.3f", p.centre_diff) + "%" : "—") << " |\n";
+              << (p.spp == 1 ? fmt("%.3f", p.center_diff) + "%" : "—") << " |\n";
         const RenderPoint* wf = nullptr;
         const RenderPoint* wd = nullptr;
         const RenderPoint* s4 = nullptr;
@@ -382,7 +382,7 @@ void write_rendering(std::ostream& m, const AccuracyResults& r, const std::strin
         m << "<!-- end table -->\n\n**Reading.** ";
         if (wf && wd && s4)
             m << "Float takes " << fmt("%.1f", wf->ms) << " ms, double " << fmt("%.1f", wd->ms)
-              << " ms; float changes " << fmt("%.3f", wf->centre_diff)
+              << " ms; float changes " << fmt("%.3f", wf->center_diff)
               << "% of the pixels of the double image, and the RMSE against the converged image "
                  "moves from "
               << fmt("%.2f", wf->rmse) << " to " << fmt("%.2f", wd->rmse) << ". Spending "

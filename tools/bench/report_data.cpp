@@ -38,10 +38,10 @@ std::string csv_report(const AccuracyResults& r) {
         s << "self," << x.strategy << ',' << x.precision << ',' << x.scale << ',' << x.rays << ','
           << x.self_hits << ',' << x.occluder_rays << ',' << x.missed_gap_1e2 << ','
           << x.missed_gap_1e4 << '\n';
-    s << "\nsection,series,spp,ms,rmse,centre_diff_percent\n";
+    s << "\nsection,series,spp,ms,rmse,center_diff_percent\n";
     for (const RenderPoint& p : r.render)
         s << "render," << p.series << ',' << p.spp << ',' << p.ms << ',' << p.rmse << ','
-          << p.centre_diff << '\n';
+          << p.center_diff << '\n';
     return s.str();
 }
 

@@ -63,7 +63,7 @@ struct PlotPoint {
     std::string label;
     double x, y;
     std::string group;  // points of one group (in order) are joined by a line
-    std::string colour;
+    std::string color;
 };
 
 std::string svg_plot(const std::string& title, const std::string& xlabel, const std::string& ylabel,
@@ -133,21 +133,21 @@ std::string svg_plot(const std::string& title, const std::string& xlabel, const 
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const PlotPoint& p = pts[i];
         s << "<circle cx=\"" << fmt("%.1f", X(p.x)) << "\" cy=\"" << fmt("%.1f", Y(p.y))
-          << "\" r=\"4\" fill=\"" << p.colour << "\"/>\n";
+          << "\" r=\"4\" fill=\"" << p.color << "\"/>\n";
         if (p.label.empty()) continue;
         ++legend;
         s << "<text x=\"" << fmt("%.1f", X(p.x) + 5) << "\" y=\"" << fmt("%.1f", Y(p.y) - 5)
           << "\" font-size=\"10\">" << legend << "</text>\n";
         const double lx = W - R - 175, ly = T + 14 + 13 * double(legend - 1);
         s << "<circle cx=\"" << lx << "\" cy=\"" << fmt("%.1f", ly - 4) << "\" r=\"4\" fill=\""
-          << p.colour << "\"/>\n<text x=\"" << lx + 8 << "\" y=\"" << fmt("%.1f", ly) << "\">"
+          << p.color << "\"/>\n<text x=\"" << lx + 8 << "\" y=\"" << fmt("%.1f", ly) << "\">"
           << legend << "  " << p.label << "</text>\n";
     }
     s << "</svg>\n";
     return s.str();
 }
 
-std::string colour_of(const std::string& label) {
+std::string color_of(const std::string& label) {
     if (label.find("CGAL") != std::string::npos) return "#000000";
     if (label.find("float") != std::string::npos) return "#d62728";
     return "#1f77b4";
@@ -156,7 +156,7 @@ std::string colour_of(const std::string& label) {
 std::vector<PlotPoint> family_points(const AccuracyResults& r, const std::string& family) {
     std::vector<PlotPoint> pts;
     for (const Summary& s : summarize(r, family))
-        pts.push_back({s.label, s.ns, s.wrong_pct, "", colour_of(s.label)});
+        pts.push_back({s.label, s.ns, s.wrong_pct, "", color_of(s.label)});
     return pts;
 }
 
@@ -196,15 +196,15 @@ void write_svgs(const AccuracyResults& r, const std::string& dir) {
                  "wrong = false miss + false hit over all sphere scenarios; 0 drawn at 0.001"));
     if (!r.render.empty()) put("render.svg", render_svg(r));
     if (!r.sampling.points.empty()) {
-        static const char* const colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c",
-                                              "#d62728", "#9467bd", "#8c564b"};
+        static const char* const colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c",
+                                             "#d62728", "#9467bd", "#8c564b"};
         std::vector<PlotPoint> pts;
         std::vector<std::string> scenes;
         double top = 0;
         for (const SamplingPoint& p : r.sampling.points) {
             if (scenes.empty() || scenes.back() != p.scene) scenes.push_back(p.scene);
             pts.push_back({p.spp == 1 ? p.scene : "", double(p.spp), p.rmse, p.scene,
-                           colours[(scenes.size() - 1) % 6]});
+                           colors[(scenes.size() - 1) % 6]});
             top = std::max(top, p.rmse);
         }
         // The 1/sqrt(N) line from the largest error at 1 sample.

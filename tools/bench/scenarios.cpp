@@ -233,47 +233,47 @@ void make_spheres(Scenario& s, Rng& rng, int n, const std::string& key) {
         if (key == "sphere-random" || key == "sphere-offset-1e3" || key == "sphere-offset-1e5") {
             const double off = key == "sphere-random" ? 0 : key == "sphere-offset-1e3" ? 1e3 : 1e5;
             const V3d offset = rvec(rng, -off, off);
-            const V3d centre = rvec(rng, -5, 5) + offset;
+            const V3d center = rvec(rng, -5, 5) + offset;
             const double r = rng.uniform(0.5, 2);
             const V3d o = rvec(rng, -10, 10) + offset;
-            const V3d target = centre + rvec(rng, -1.3, 1.3) * r;
-            c = {to_f(o), to_f((target - o) * rng.uniform(0.5, 2)), to_f(centre), float(r)};
+            const V3d target = center + rvec(rng, -1.3, 1.3) * r;
+            c = {to_f(o), to_f((target - o) * rng.uniform(0.5, 2)), to_f(center), float(r)};
         } else if (key == "sphere-grazing") {
             // Lines passing the centre at r (1 +- 1e-7 .. 1e-2): near tangent.
-            const V3d centre = rvec(rng, -5, 5);
+            const V3d center = rvec(rng, -5, 5);
             const double r = rng.uniform(0.5, 2);
             const double dist = rng.uniform(5, 20);
-            const V3d o = centre + runit(rng) * dist;
-            const V3d to_c = glm::normalize(centre - o);
+            const V3d o = center + runit(rng) * dist;
+            const V3d to_c = glm::normalize(center - o);
             const V3d side = glm::normalize(glm::cross(to_c, runit(rng)));
             const double off = r * (1 + (rng.integer(0, 1) ? 1 : -1) * log_uniform(rng, -7, -2));
             const double sin_a = off / dist;  // the line passes the centre at distance off
             const V3d dir = to_c * std::sqrt(1 - sin_a * sin_a) + side * sin_a;
-            c = {to_f(o), to_f(dir * rng.uniform(0.5, 2)), to_f(centre), float(r)};
+            c = {to_f(o), to_f(dir * rng.uniform(0.5, 2)), to_f(center), float(r)};
         } else if (key == "far-small") {
             // Radius 1 at 1e3 .. 3e4; the line passes within 0.95 r or beyond 1.05 r of the
             // centre: clear hits and clear misses, no ties.
             const V3d o = rvec(rng, -1, 1);
-            const V3d centre = o + runit(rng) * log_uniform(rng, 3, 4.5);
-            const V3d to_c = glm::normalize(centre - o);
+            const V3d center = o + runit(rng) * log_uniform(rng, 3, 4.5);
+            const V3d to_c = glm::normalize(center - o);
             const V3d side = glm::normalize(glm::cross(to_c, runit(rng)));
             const double off = rng.integer(0, 1) ? rng.uniform(0, 0.95) : rng.uniform(1.05, 1.5);
-            c = {to_f(o), to_f(centre + side * off - o), to_f(centre), 1.0f};
+            c = {to_f(o), to_f(center + side * off - o), to_f(center), 1.0f};
         } else if (key == "sphere-inside") {
             // The origin anywhere inside (up to 0.95 r from the centre), any direction: every ray
             // leaves through the sphere, half of them with the centre behind the origin.
-            const V3d centre = rvec(rng, -5, 5);
+            const V3d center = rvec(rng, -5, 5);
             const double r = rng.uniform(0.5, 2);
-            const V3d o = centre + runit(rng) * (r * rng.uniform(0, 0.95));
-            c = {to_f(o), to_f(runit(rng) * rng.uniform(0.5, 2)), to_f(centre), float(r)};
+            const V3d o = center + runit(rng) * (r * rng.uniform(0, 0.95));
+            c = {to_f(o), to_f(runit(rng) * rng.uniform(0.5, 2)), to_f(center), float(r)};
         } else {  // large-near: radius 1e3 .. 1e4, origin 1e-2 .. 1 above the surface
-            const V3d centre = rvec(rng, -10, 10);
+            const V3d center = rvec(rng, -10, 10);
             const double r = log_uniform(rng, 3, 4);
             const V3d up = runit(rng);
-            const V3d o = centre + up * (r + log_uniform(rng, -2, 0));
+            const V3d o = center + up * (r + log_uniform(rng, -2, 0));
             const V3d dir = glm::normalize(-up * rng.uniform(rng.integer(0, 4) ? 0.05 : -0.05, 1) +
                                            runit(rng) * 0.5);
-            c = {to_f(o), to_f(dir), to_f(centre), float(r)};
+            c = {to_f(o), to_f(dir), to_f(center), float(r)};
         }
         s.spheres.push_back(c);
     }

@@ -70,13 +70,13 @@ std::string draw_fragment_shader(const GlApi& gl, const std::string& fragment, i
         gl.DeleteProgram(program);
         return error;
     }
-    GLuint framebuffer = 0, colour = 0, vertex_array = 0;
-    gl.GenRenderbuffers(1, &colour);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, colour);
+    GLuint framebuffer = 0, color = 0, vertex_array = 0;
+    gl.GenRenderbuffers(1, &color);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, color);
     gl.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
     gl.GenFramebuffers(1, &framebuffer);
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
     if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         error = "an RGBA8 framebuffer of " + std::to_string(width) + "x" + std::to_string(height) +
                 " is not complete";
@@ -97,7 +97,7 @@ std::string draw_fragment_shader(const GlApi& gl, const std::string& fragment, i
         error = "OpenGL error " + std::to_string(status) + " while drawing";
     gl.DeleteVertexArrays(1, &vertex_array);
     gl.DeleteFramebuffers(1, &framebuffer);
-    gl.DeleteRenderbuffers(1, &colour);
+    gl.DeleteRenderbuffers(1, &color);
     gl.DeleteProgram(program);
     const std::size_t row = std::size_t(width) * 4;
     rgba.resize(bottom_up.size());

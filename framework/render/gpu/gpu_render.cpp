@@ -88,7 +88,7 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
                  int(scene.triangles.size()), int(scene.boxes.size()));
     gl.Uniform1i(at("light_count"), int(scene.lights.size()));
     gl.Uniform1i(at("material_count"), int(scene.materials.size()));
-    gl.Uniform3f(at("background_colour"), scene.background.r, scene.background.g,
+    gl.Uniform3f(at("background_color"), scene.background.r, scene.background.g,
                  scene.background.b);
     gl.Uniform3f(at("ambient_light"), scene.ambient_light.r, scene.ambient_light.g,
                  scene.ambient_light.b);

@@ -101,7 +101,7 @@ std::string uniform_constants(const Scene& scene, RenderMode mode) {
          ", " + std::to_string(scene.boxes.size()) + ");\n";
     s += "const int light_count = " + std::to_string(scene.lights.size()) + ";\n";
     s += "const int material_count = " + std::to_string(scene.materials.size()) + ";\n";
-    s += "const vec3 background_colour = " + vec("vec3", scene.background, 3) + ";\n";
+    s += "const vec3 background_color = " + vec("vec3", scene.background, 3) + ";\n";
     s += "const vec3 ambient_light = " + vec("vec3", scene.ambient_light, 3) + ";\n";
     s += std::string("const bool fresnel = ") + (scene.fresnel ? "true" : "false") + ";\n";
     s += "const int render_mode = " + std::to_string(int(mode)) + ";\n";

@@ -37,11 +37,11 @@ const char* const kShadertoyHead =
     "uniform float iSampleRate;\nuniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\n"
     "uniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
 const char* const kShadertoyTail =
-    "\nout vec4 rt_frag_colour;\n"
+    "\nout vec4 rt_frag_color;\n"
     "void main() {\n"
-    "    mainImage(rt_frag_colour, gl_FragCoord.xy);\n"
+    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
     "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
-    "    rt_frag_colour.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
+    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
     "}\n";
 
 // A compiler's log of the wrapped export with each line number it names ("ERROR: x.frag:379:"

@@ -32,7 +32,7 @@ constexpr const char* kFlipHint =
 RT_TEST_SUITE(Perspective);
 
 // The centre of the image (W/2, H/2) looks straight ahead along -w.
-TEST_F(Perspective, CentreLooksAlongViewDirection) {
+TEST_F(Perspective, CenterLooksAlongViewDirection) {
     const Camera cam = canonical(Projection::Perspective, 60);
     const Ray ray = perspective_ray(cam, Vec2(320, 240), ImageSize{640, 480});
     expect_vec_near(ray.origin, Vec3(0), "origin of the ray through the image centre (320, 240)");
@@ -83,7 +83,7 @@ TEST_F(Perspective, AspectRatioWidensHorizontally) {
 // Pixel (0, 0) has its centre at (0.5, 0.5): the renderer passes pixel centres, and y grows
 // downwards, so the ray through pixel (0, 0)'s centre goes up and to the left, symmetric to
 // the one through the last pixel's centre.
-TEST_F(Perspective, PixelCentresAreSymmetric) {
+TEST_F(Perspective, PixelCentersAreSymmetric) {
     const Camera cam = canonical(Projection::Perspective, 50);
     const ImageSize size{4, 2};
     const Vec3 first = perspective_ray(cam, Vec2(0.5, 0.5), size).direction;
@@ -109,10 +109,10 @@ TEST_F(Perspective, PixelCentresAreSymmetric) {
 TEST_F(Perspective, FollowsCameraFrame) {
     const Camera cam = make_look_at_camera(Projection::Perspective, Vec3(1, 2, 3),
                                            Vec3(1, 2, 3) + Vec3(1, 0, 0), Vec3(0, 1, 0), 90, 2);
-    const Ray centre = perspective_ray(cam, Vec2(50, 50), ImageSize{100, 100});
-    expect_vec_near(centre.origin, Vec3(1, 2, 3),
+    const Ray center = perspective_ray(cam, Vec2(50, 50), ImageSize{100, 100});
+    expect_vec_near(center.origin, Vec3(1, 2, 3),
                     "origin of the centre ray, camera at (1, 2, 3) looking along +x: camera.eye");
-    expect_vec_near(centre.direction, Vec3(1, 0, 0),
+    expect_vec_near(center.direction, Vec3(1, 0, 0),
                     "direction of the centre ray, camera looking along +x (-camera.w)");
     // Looking along +x with y up, the camera's right (u) is +z.
     const Ray right_edge = perspective_ray(cam, Vec2(100, 50), ImageSize{100, 100});

@@ -273,7 +273,7 @@ void cast_at_mesh(const Ray& ray, const Mesh& mesh, LeakCount& count, const char
 
 // Rays at points on (or, for non-dyadic vertices, within rounding of) every edge and at every
 // vertex: from outside, along roughly the inward direction, and from interior points.
-LeakCount shoot_edges_and_vertices(const Mesh& mesh, const Vec3& centre, Real lateral, Rng& rng,
+LeakCount shoot_edges_and_vertices(const Mesh& mesh, const Vec3& center, Real lateral, Rng& rng,
                                    int samples_per_edge, const char* what) {
     LeakCount count;
     std::vector<Vec3> targets(mesh.vertices);
@@ -287,15 +287,15 @@ LeakCount shoot_edges_and_vertices(const Mesh& mesh, const Vec3& centre, Real la
             targets.push_back(p + s * (q - p));
         }
     for (const Vec3& p : targets) {
-        const Vec3 radial = p - centre;
+        const Vec3 radial = p - center;
         for (int j = 0; j < 2; ++j) {  // from outside, two jittered origins
             Vec3 jitter(Real(rng.integer(-8, 8)), Real(rng.integer(-8, 8)),
                         Real(rng.integer(-8, 8)));
-            const Vec3 o = centre + Real(3) * radial + lateral * jitter;
+            const Vec3 o = center + Real(3) * radial + lateral * jitter;
             cast_at_mesh(Ray{o, p - o}, mesh, count, what);
         }
-        cast_at_mesh(Ray{centre, radial}, mesh, count, what);  // from the centre
-        const Vec3 inner = centre + radial * Real(0.25) + Vec3(lateral * Real(rng.integer(-2, 2)));
+        cast_at_mesh(Ray{center, radial}, mesh, count, what);  // from the centre
+        const Vec3 inner = center + radial * Real(0.25) + Vec3(lateral * Real(rng.integer(-2, 2)));
         cast_at_mesh(Ray{inner, p - inner}, mesh, count, what);  // from another interior point
     }
     return count;
@@ -335,7 +335,7 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
     struct Case {
         const char* name;
         Mesh mesh;
-        Vec3 centre;
+        Vec3 center;
         int samples;
         Real lateral;  // jitter step of the origins; dyadic, so dyadic meshes get exact rays
         bool dyadic;   // vertices and ray data small dyadic numbers: Cramer is exact too
@@ -356,7 +356,7 @@ TEST_F(ClosedMesh, WatertightNeverLeaksCramerLeakRateIsBounded) {
     LeakCount total;
     for (const Case& c : cases) {
         const LeakCount count =
-            shoot_edges_and_vertices(c.mesh, c.centre, c.lateral, rng, c.samples, c.name);
+            shoot_edges_and_vertices(c.mesh, c.center, c.lateral, rng, c.samples, c.name);
         if (HasFatalFailure()) return;
         std::printf("[leaks] %-28s rays %5d  Cramer leaks %4d (%.3f%%)  watertight leaks %d\n",
                     c.name, count.rays, count.leaks[0], 100.0 * count.leaks[0] / count.rays,

@@ -57,7 +57,7 @@ SurfacePoint floor_point(const Scene& scene, Real x, Real z) {
     return surface_point(scene, Ray{Vec3(x, 1, z), Vec3(0, -1, 0)}, hit);
 }
 
-using rt::testing::expect_colour_near;
+using rt::testing::expect_color_near;
 
 // The origin is the framework's robust offset origin, the direction the light's, and the range
 // ends at the light (point) or never (directional).
@@ -160,12 +160,12 @@ TEST_F(Transmittance, ThinOccluderCloseToSurface) {
     Scene scene = floor_scene();
     scene.boxes = {Box{Vec3(-0.5f, 1e-5f, -0.5f), Vec3(0.5f, 2e-5f, 0.5f), 0}};
     const SurfacePoint at = floor_point(scene, 0.2f, 0.1f);
-    expect_colour_near(
+    expect_color_near(
         light_transmittance(scene, at, illuminate(point_light(Vec3(0.2f, 3, 0.1f)), at.point)),
         Color(0), "floor under an opaque slab 1e-5 above it: in shadow (no epsilon of your own)");
     // Beside the slab the floor is lit.
     const SurfacePoint beside = floor_point(scene, 0.7f, 0.1f);
-    expect_colour_near(
+    expect_color_near(
         light_transmittance(scene, beside,
                             illuminate(point_light(Vec3(0.7f, 3, 0.1f)), beside.point)),
         Color(1), "floor beside the thin slab: lit");
@@ -177,19 +177,19 @@ TEST_F(Transmittance, OnlyBetweenPointAndLight) {
     Scene scene = floor_scene();
     scene.spheres = {Sphere{Vec3(0, 6, 0), 1, 0}, Sphere{Vec3(0, -3, 0), 1, 0}};
     const SurfacePoint at = floor_point(scene, 0, 0);
-    expect_colour_near(
+    expect_color_near(
         light_transmittance(scene, at, illuminate(point_light(Vec3(0, 4, 0)), at.point)), Color(1),
         "point light at height 4, spheres beyond it and below the floor: lit (t_range ends at "
         "the light)");
     // A directional light has no end: the sphere 6 units up blocks it.
-    expect_colour_near(
+    expect_color_near(
         light_transmittance(scene, at, illuminate(directional_light(Vec3(0, -1, 0)), at.point)),
         Color(0), "directional light from above, sphere 6 up: in shadow (t_range (0, inf))");
 }
 
 // Thin-shell shadows: a glass triangle filters once, a glass sphere twice (in and out), and
 // several filters multiply.
-TEST_F(Transmittance, ColouredShadowsThroughGlass) {
+TEST_F(Transmittance, ColoredShadowsThroughGlass) {
     Scene scene = floor_scene();
     scene.materials.push_back(glass(Color(0.9f, 0.5f, 0.2f)));
     scene.materials.push_back(glass(Color(0.5f, 1, 0.8f)));
@@ -197,28 +197,28 @@ TEST_F(Transmittance, ColouredShadowsThroughGlass) {
     scene.triangles = {Triangle{{0, 1, 2}, 1}};
     const Light light = point_light(Vec3(0, 4, 0));
     SurfacePoint at = floor_point(scene, 0, 0);
-    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.9f, 0.5f, 0.2f), "one glass triangle: k_t once");
+    expect_color_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                      Color(0.9f, 0.5f, 0.2f), "one glass triangle: k_t once");
 
     scene.triangles.clear();
     scene.vertices.clear();
     scene.spheres = {Sphere{Vec3(0, 2, 0), 0.5f, 2}};
     at = floor_point(scene, 0, 0);
-    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.25f, 1, 0.64f), "one glass sphere: k_t^2 (in and out)");
+    expect_color_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                      Color(0.25f, 1, 0.64f), "one glass sphere: k_t^2 (in and out)");
 
     scene.vertices = {Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(0, 1, 2)};
     scene.triangles = {Triangle{{0, 1, 2}, 1}};
     at = floor_point(scene, 0, 0);
-    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)),
-                       Color(0.9f * 0.25f, 0.5f, 0.2f * 0.64f),
-                       "glass triangle and glass sphere: the filters multiply");
+    expect_color_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                      Color(0.9f * 0.25f, 0.5f, 0.2f * 0.64f),
+                      "glass triangle and glass sphere: the filters multiply");
 
     // An opaque box behind the glass (seen from the floor) blocks everything.
     scene.boxes = {Box{Vec3(-0.2f, 3, -0.2f), Vec3(0.2f, 3.2f, 0.2f), 0}};
     at = floor_point(scene, 0, 0);
-    expect_colour_near(light_transmittance(scene, at, illuminate(light, at.point)), Color(0),
-                       "an opaque box behind the glass: blocked");
+    expect_color_near(light_transmittance(scene, at, illuminate(light, at.point)), Color(0),
+                      "an opaque box behind the glass: blocked");
 }
 
 }  // namespace

@@ -39,9 +39,9 @@ TEST_F(Debugger, WhittedPixelTreeSumsToPixel) {
     // The colour the debugger reports is the rendered pixel's, and the nodes add up to it.
     const Image image = render(scene, RenderMode::Shaded);
     const Color pixel = image.at(kX, kY);
-    const auto& colour = json.at("colour");
+    const auto& color = json.at("color");
     for (int k = 0; k < 3; ++k) {
-        EXPECT_FLOAT_EQ(colour[std::size_t(k)].get<float>(), pixel[k]);
+        EXPECT_FLOAT_EQ(color[std::size_t(k)].get<float>(), pixel[k]);
         EXPECT_NEAR(sum[k], pixel[k], 1e-4f * std::max(1.0f, pixel[k])) << "channel " << k;
     }
     EXPECT_NE(ray_tree_text(scene, tree).find("refraction ray"), std::string::npos);

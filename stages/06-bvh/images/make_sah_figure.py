@@ -20,12 +20,12 @@ def perimeter(b):
     return 2 * ((b[2] - b[0]) + (b[3] - b[1]))
 
 
-def centre_x(b):
+def center_x(b):
     return (b[0] + b[2]) / 2
 
 
 node = union(BOXES)
-lo, hi = min(map(centre_x, BOXES)), max(map(centre_x, BOXES))
+lo, hi = min(map(center_x, BOXES)), max(map(center_x, BOXES))
 
 
 def bin_of(c):
@@ -34,8 +34,8 @@ def bin_of(c):
 
 costs = []
 for k in range(1, BINS):
-    left = [b for b in BOXES if bin_of(centre_x(b)) < k]
-    right = [b for b in BOXES if bin_of(centre_x(b)) >= k]
+    left = [b for b in BOXES if bin_of(center_x(b)) < k]
+    right = [b for b in BOXES if bin_of(center_x(b)) >= k]
     if not left or not right:
         costs.append(None)
         continue
@@ -56,14 +56,14 @@ for k in range(BINS + 1):
     out.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="%s" stroke-width="%d"%s/>'
                % (x, oy - 8, x, oy + H * S + 8, colour, width, dash))
 for b in BOXES:
-    left = bin_of(centre_x(b)) < best
+    left = bin_of(center_x(b)) < best
     fill = "#9ecae1" if left else "#fdae6b"
     out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="%s" stroke="#333"/>'
                % (ox + S * b[0], oy + S * b[1], S * (b[2] - b[0]), S * (b[3] - b[1]), fill))
     out.append('<circle cx="%.1f" cy="%.1f" r="3" fill="#000"/>'
-               % (ox + S * centre_x(b), oy + S * (b[1] + b[3]) / 2))
+               % (ox + S * center_x(b), oy + S * (b[1] + b[3]) / 2))
 for side, colour in ((True, "#3182bd"), (False, "#e6550d")):
-    u = union([b for b in BOXES if (bin_of(centre_x(b)) < best) == side])
+    u = union([b for b in BOXES if (bin_of(center_x(b)) < best) == side])
     out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="%s" stroke-width="2"/>'
                % (ox + S * u[0] - 3, oy + S * u[1] - 3, S * (u[2] - u[0]) + 6, S * (u[3] - u[1]) + 6, colour))
 # Cost of each candidate as bars under its plane.

@@ -18,7 +18,7 @@ RT_TEST_SUITE(BvhBuild);
 BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
     BvhPrimitive p;
     p.bounds = Aabb{lo, hi};
-    p.centroid = p.bounds.centre();
+    p.centroid = p.bounds.center();
     p.id = id;
     return p;
 }

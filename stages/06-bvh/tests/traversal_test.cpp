@@ -146,18 +146,18 @@ void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t see
     Comparison c;
     Aabb box;
     for (const Vec3& p : scene.vertices) box.grow(Vec3f(p));
-    const Vec3 centre = Vec3(box.centre()), extent = Vec3(box.extent());
+    const Vec3 center = Vec3(box.center()), extent = Vec3(box.extent());
     const Real radius = glm::length(extent);
     for (int i = 0; i < 3000; ++i) {  // from outside towards a point in the box
-        const Vec3 origin = centre + random.unit() * radius * Real(1.5);
-        const Vec3 target = centre + (random.vec(-1, 1) * extent) * Real(0.5);
+        const Vec3 origin = center + random.unit() * radius * Real(1.5);
+        const Vec3 target = center + (random.vec(-1, 1) * extent) * Real(0.5);
         compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c);
     }
     for (int i = 0; i < 2000; ++i)  // from inside, in every direction
-        compare_ray(scene, Ray{centre + random.vec(-1, 1) * extent * Real(0.3), random.unit()},
+        compare_ray(scene, Ray{center + random.vec(-1, 1) * extent * Real(0.3), random.unit()},
                     Interval{0, kInfinity}, c);
     for (int i = 0; i < 1000; ++i) {  // short segments, as shadow rays are
-        const Vec3 origin = centre + random.vec(-1, 1) * extent;
+        const Vec3 origin = center + random.vec(-1, 1) * extent;
         compare_ray(scene, Ray{origin, random.unit()},
                     Interval{0, Real(random.uniform(0, radius * Real(0.3)))}, c);
     }
@@ -166,7 +166,7 @@ void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t see
         Vec3 a, b, cc;
         scene.triangle_vertices(t, a, b, cc);
         for (const Vec3& target : {a, (a + b) * Real(0.5), (a + b + cc) / Real(3)}) {
-            const Vec3 origin = centre + random.unit() * radius * Real(1.5);
+            const Vec3 origin = center + random.unit() * radius * Real(1.5);
             compare_ray(scene, Ray{origin, target - origin}, Interval{0, kInfinity}, c, 64);
             Vec3 axis_dir(0);
             axis_dir[int(t % 3)] = t % 2 ? 1 : -1;

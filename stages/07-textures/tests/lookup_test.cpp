@@ -10,12 +10,12 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(ColourSpace);
+RT_TEST_SUITE(ColorSpace);
 RT_TEST_SUITE(Wrap);
 RT_TEST_SUITE(Nearest);
 RT_TEST_SUITE(Bilinear);
 
-void expect_colour(const Color& got, const Color& want, const char* what, float tol = 1e-5f) {
+void expect_color(const Color& got, const Color& want, const char* what, float tol = 1e-5f) {
     EXPECT_NEAR(got.r, want.r, tol) << what << " (red)";
     EXPECT_NEAR(got.g, want.g, tol) << what << " (green)";
     EXPECT_NEAR(got.b, want.b, tol) << what << " (blue)";
@@ -32,7 +32,7 @@ struct Grid {
     }
 };
 
-TEST_F(ColourSpace, SrgbDecodingMatchesTheStandard) {
+TEST_F(ColorSpace, SrgbDecodingMatchesTheStandard) {
     EXPECT_NEAR(srgb_to_linear_value(0), 0, 1e-7);
     EXPECT_NEAR(srgb_to_linear_value(1), 1, 1e-6);
     EXPECT_NEAR(srgb_to_linear_value(0.04045f), 0.04045f / 12.92f, 1e-7) << "the linear segment";
@@ -42,11 +42,11 @@ TEST_F(ColourSpace, SrgbDecodingMatchesTheStandard) {
     EXPECT_NEAR(srgb_to_linear_value(0.0404f), srgb_to_linear_value(0.0405f), 1e-5);
 }
 
-TEST_F(ColourSpace, ColourTexelsAreDecodedDataTexelsAreNot) {
+TEST_F(ColorSpace, ColorTexelsAreDecodedDataTexelsAreNot) {
     std::vector<Color> texels = {Color(0.5f, 1, 0)};
-    const TextureView colour{texels.data(), 1, 1, true}, data{texels.data(), 1, 1, false};
-    expect_colour(decoded_texel(colour, 0, 0), Color(0.214041f, 1, 0), "sRGB texel decoded");
-    expect_colour(decoded_texel(data, 0, 0), Color(0.5f, 1, 0), "data texel as stored");
+    const TextureView color{texels.data(), 1, 1, true}, data{texels.data(), 1, 1, false};
+    expect_color(decoded_texel(color, 0, 0), Color(0.214041f, 1, 0), "sRGB texel decoded");
+    expect_color(decoded_texel(data, 0, 0), Color(0.5f, 1, 0), "data texel as stored");
 }
 
 TEST_F(Wrap, RepeatClampMirror) {
@@ -70,48 +70,48 @@ TEST_F(Wrap, RepeatClampMirror) {
 TEST_F(Nearest, TexelSquares) {
     Grid g;
     // Texel (i, j) covers [i/3, (i+1)/3) x [j/2, (j+1)/2).
-    expect_colour(sample_nearest(g.view, Vec2(0.1f, 0.1f), TextureWrap::Repeat), Color(0, 0, 0.5f),
-                  "top-left texel");
-    expect_colour(sample_nearest(g.view, Vec2(0.5f, 0.75f), TextureWrap::Repeat),
-                  Color(0.25f, 0.25f, 0.5f), "middle column, bottom row (row 0 is the top)");
-    expect_colour(sample_nearest(g.view, Vec2(0.99f, 0.01f), TextureWrap::Repeat),
-                  Color(0.5f, 0, 0.5f), "top-right texel");
-    expect_colour(sample_nearest(g.view, Vec2(1.0f / 3, 0.5f), TextureWrap::Repeat),
-                  Color(0.25f, 0.25f, 0.5f), "an edge belongs to the texel on its right/below");
+    expect_color(sample_nearest(g.view, Vec2(0.1f, 0.1f), TextureWrap::Repeat), Color(0, 0, 0.5f),
+                 "top-left texel");
+    expect_color(sample_nearest(g.view, Vec2(0.5f, 0.75f), TextureWrap::Repeat),
+                 Color(0.25f, 0.25f, 0.5f), "middle column, bottom row (row 0 is the top)");
+    expect_color(sample_nearest(g.view, Vec2(0.99f, 0.01f), TextureWrap::Repeat),
+                 Color(0.5f, 0, 0.5f), "top-right texel");
+    expect_color(sample_nearest(g.view, Vec2(1.0f / 3, 0.5f), TextureWrap::Repeat),
+                 Color(0.25f, 0.25f, 0.5f), "an edge belongs to the texel on its right/below");
 }
 
 TEST_F(Nearest, OutsideTheImage) {
     Grid g;
-    expect_colour(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Repeat), Color(0, 0, 0.5f),
-                  "repeat: u = 1.1 is u = 0.1");
-    expect_colour(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Clamp),
-                  Color(0.5f, 0, 0.5f), "clamp: the right edge");
-    expect_colour(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Mirror),
-                  Color(0.5f, 0, 0.5f), "mirror: the right column again");
-    expect_colour(sample_nearest(g.view, Vec2(-0.1f, -0.1f), TextureWrap::Repeat),
-                  Color(0.5f, 0.25f, 0.5f), "repeat: negative coordinates wrap to the far side");
+    expect_color(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Repeat), Color(0, 0, 0.5f),
+                 "repeat: u = 1.1 is u = 0.1");
+    expect_color(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Clamp), Color(0.5f, 0, 0.5f),
+                 "clamp: the right edge");
+    expect_color(sample_nearest(g.view, Vec2(1.1f, 0.2f), TextureWrap::Mirror),
+                 Color(0.5f, 0, 0.5f), "mirror: the right column again");
+    expect_color(sample_nearest(g.view, Vec2(-0.1f, -0.1f), TextureWrap::Repeat),
+                 Color(0.5f, 0.25f, 0.5f), "repeat: negative coordinates wrap to the far side");
     // Far away coordinates (a big uv scale) must not overflow or crash.
     const Color far = sample_nearest(g.view, Vec2(3e9f, -3e9f), TextureWrap::Repeat);
     EXPECT_FALSE(std::isnan(far.r)) << "uv = (3e9, -3e9)";
     const Color clamped = sample_nearest(g.view, Vec2(3e9f, -3e9f), TextureWrap::Clamp);
-    expect_colour(clamped, Color(0.5f, 0, 0.5f), "clamp far away: the top-right corner");
+    expect_color(clamped, Color(0.5f, 0, 0.5f), "clamp far away: the top-right corner");
 }
 
 TEST_F(Nearest, DecodesSrgb) {
     Grid g(3, 2, true);
-    expect_colour(sample_nearest(g.view, Vec2(0.5f, 0.75f), TextureWrap::Repeat),
-                  Color(float(srgb_to_linear_value(0.25f)), float(srgb_to_linear_value(0.25f)),
-                        float(srgb_to_linear_value(0.5f))),
-                  "every channel decoded", 1e-5f);
+    expect_color(sample_nearest(g.view, Vec2(0.5f, 0.75f), TextureWrap::Repeat),
+                 Color(float(srgb_to_linear_value(0.25f)), float(srgb_to_linear_value(0.25f)),
+                       float(srgb_to_linear_value(0.5f))),
+                 "every channel decoded", 1e-5f);
 }
 
-TEST_F(Bilinear, ExactAtTexelCentres) {
+TEST_F(Bilinear, ExactAtTexelCenters) {
     Grid g;
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 3; ++i) {
-            const Vec2 centre((i + Real(0.5)) / 3, (j + Real(0.5)) / 2);
-            expect_colour(sample_bilinear(g.view, centre, TextureWrap::Clamp), g.view.stored(i, j),
-                          "at a texel centre the texel itself");
+            const Vec2 center((i + Real(0.5)) / 3, (j + Real(0.5)) / 2);
+            expect_color(sample_bilinear(g.view, center, TextureWrap::Clamp), g.view.stored(i, j),
+                         "at a texel centre the texel itself");
         }
 }
 
@@ -119,20 +119,20 @@ TEST_F(Bilinear, WeightsByDistance) {
     Grid g;
     // Halfway between the centres of texels (0, 0) and (1, 0), a quarter down to row 1.
     const Vec2 uv(Real(1) / 3, Real(0.25) + Real(0.25) * Real(0.5));
-    expect_colour(sample_bilinear(g.view, uv, TextureWrap::Clamp), Color(0.125f, 0.0625f, 0.5f),
-                  "weights 1/2 in u and 3/4, 1/4 in v");
+    expect_color(sample_bilinear(g.view, uv, TextureWrap::Clamp), Color(0.125f, 0.0625f, 0.5f),
+                 "weights 1/2 in u and 3/4, 1/4 in v");
 }
 
 TEST_F(Bilinear, EdgesFollowTheWrapMode) {
     Grid g;
     // At u = 0 the four texels straddle the left edge: column -1 and column 0.
     const Vec2 uv(0, Real(0.25));
-    expect_colour(sample_bilinear(g.view, uv, TextureWrap::Clamp), Color(0, 0, 0.5f),
-                  "clamp: column 0 twice");
-    expect_colour(sample_bilinear(g.view, uv, TextureWrap::Repeat), Color(0.25f, 0, 0.5f),
-                  "repeat: halfway between the last and the first column");
-    expect_colour(sample_bilinear(g.view, uv, TextureWrap::Mirror), Color(0, 0, 0.5f),
-                  "mirror: column 0 mirrored onto itself");
+    expect_color(sample_bilinear(g.view, uv, TextureWrap::Clamp), Color(0, 0, 0.5f),
+                 "clamp: column 0 twice");
+    expect_color(sample_bilinear(g.view, uv, TextureWrap::Repeat), Color(0.25f, 0, 0.5f),
+                 "repeat: halfway between the last and the first column");
+    expect_color(sample_bilinear(g.view, uv, TextureWrap::Mirror), Color(0, 0, 0.5f),
+                 "mirror: column 0 mirrored onto itself");
 }
 
 TEST_F(Bilinear, ReproducesALinearRamp) {
@@ -144,8 +144,8 @@ TEST_F(Bilinear, ReproducesALinearRamp) {
     for (int k = 0; k <= 12; ++k) {
         const Real u = Real(0.125) + Real(k) * Real(0.75 / 12);  // centre of texel 0 to texel 3
         const float expected = float((u * 4 - Real(0.5)) / 3);
-        expect_colour(sample_bilinear(view, Vec2(u, 0.5f), TextureWrap::Clamp),
-                      Color(expected, 0.5f, 1 - expected), "on the ramp", 2e-6f);
+        expect_color(sample_bilinear(view, Vec2(u, 0.5f), TextureWrap::Clamp),
+                     Color(expected, 0.5f, 1 - expected), "on the ramp", 2e-6f);
     }
 }
 
@@ -153,8 +153,8 @@ TEST_F(Bilinear, DecodesEachTexelBeforeWeighting) {
     std::vector<Color> texels = {Color(0), Color(1)};
     const TextureView view{texels.data(), 2, 1, true};
     // Halfway: the mean of the decoded values (0.5), not the decoding of the mean (0.214).
-    expect_colour(sample_bilinear(view, Vec2(0.5f, 0.5f), TextureWrap::Clamp), Color(0.5f),
-                  "decode, then interpolate");
+    expect_color(sample_bilinear(view, Vec2(0.5f, 0.5f), TextureWrap::Clamp), Color(0.5f),
+                 "decode, then interpolate");
 }
 
 }  // namespace

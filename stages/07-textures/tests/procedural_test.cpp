@@ -83,7 +83,7 @@ TEST_F(Noise, ContinuousBoundedAndNotConstant) {
     EXPECT_GT(highest - lowest, 0.5f) << "noise over 400 points should vary";
 }
 
-TEST_F(Marble, BetweenItsColoursAndVaried) {
+TEST_F(Marble, BetweenItsColorsAndVaried) {
     Real reds = 0, blues = 0;
     for (int i = 0; i < 200; ++i) {
         const Color c = marble(Vec3(Real(i) * 0.05f, 0.3f, 0.7f), kA, kB, 1);

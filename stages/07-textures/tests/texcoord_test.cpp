@@ -90,8 +90,8 @@ TEST_F(BoxTexcoord, EachFaceSpansTheImageUpright) {
     // Every face: the centre at (0.5, 0.5), the range [0, 1].
     const Vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (const Vec3& n : normals) {
-        const Vec3 centre = Vec3(1, 1, 0) + n * Vec3(2, 1, 2);
-        expect_uv(box_texcoord(box, centre, n), Vec2(0.5f, 0.5f), "face centre");
+        const Vec3 center = Vec3(1, 1, 0) + n * Vec3(2, 1, 2);
+        expect_uv(box_texcoord(box, center, n), Vec2(0.5f, 0.5f), "face centre");
     }
 }
 

@@ -24,7 +24,7 @@ void expect_face(const Vec3& d, int face, Real u, Real v) {
     EXPECT_NEAR(r.uv.y, v, kFaceTol) << what << ": v";
 }
 
-TEST_F(CubeMap, AxesHitTheCentreOfTheirFace) {
+TEST_F(CubeMap, AxesHitTheCenterOfTheirFace) {
     expect_face(Vec3(1, 0, 0), 0, 0.5f, 0.5f);
     expect_face(Vec3(-1, 0, 0), 1, 0.5f, 0.5f);
     expect_face(Vec3(0, 1, 0), 2, 0.5f, 0.5f);

@@ -20,7 +20,7 @@ namespace {
 
 // The hook: a scene without an environment never reaches stage 08 code (no stub is counted even
 // in a starter tree), one with an environment gets environment_radiance.
-TEST(Background, WithoutAnEnvironmentIsTheScenesColourAndCallsNoStageCode) {
+TEST(Background, WithoutAnEnvironmentIsTheScenesColorAndCallsNoStageCode) {
     Scene scene;
     scene.background = Color(0.1f, 0.2f, 0.3f);
     scene.update_features();

@@ -19,7 +19,7 @@ RT_TEST_SUITE(Radiance);
 
 constexpr Real kPi = std::numbers::pi_v<Real>;
 
-void expect_colour(const Color& got, const Color& want, const std::string& what) {
+void expect_color(const Color& got, const Color& want, const std::string& what) {
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(got[c], want[c], 1e-4f * std::max(1.0f, want[c])) << what << ", channel " << c;
 }
@@ -41,13 +41,13 @@ Color texel(int i, int j) {
     return Color(float(i), float(j), float(1 + i + j)) / 10.0f;
 }
 
-TEST_F(Radiance, LatLongTexelCentresGiveTheirTexel) {
+TEST_F(Radiance, LatLongTexelCentersGiveTheirTexel) {
     const Scene scene = latlong_scene(8, 4);
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 8; ++i) {
             const Vec3 d = latlong_direction((Real(i) + 0.5f) / 8, (Real(j) + 0.5f) / 4);
-            expect_colour(environment_radiance(scene, Real(2) * d), texel(i, j),
-                          "texel (" + std::to_string(i) + ", " + std::to_string(j) + ")");
+            expect_color(environment_radiance(scene, Real(2) * d), texel(i, j),
+                         "texel (" + std::to_string(i) + ", " + std::to_string(j) + ")");
         }
 }
 
@@ -55,8 +55,8 @@ TEST_F(Radiance, LatLongWrapsAcrossTheSeam) {
     // At -z (u = 0) on row 1's centre: half of column 0, half of column 7.
     const Scene scene = latlong_scene(8, 4);
     const Vec3 d = latlong_direction(0, 1.5f / 4);
-    expect_colour(environment_radiance(scene, d), (texel(0, 1) + texel(7, 1)) * 0.5f,
-                  "u = 0 blends the first and the last column");
+    expect_color(environment_radiance(scene, d), (texel(0, 1) + texel(7, 1)) * 0.5f,
+                 "u = 0 blends the first and the last column");
 }
 
 TEST_F(Radiance, PolesDoNotBlendWithTheOtherEdge) {
@@ -73,23 +73,23 @@ TEST_F(Radiance, RotationTurnsTheEnvironmentAboutY) {
     const Scene unrotated = scene;
     scene.environment.rotate_y = 90;
     // Turned by +90 degrees (right-hand rule about +y): +z goes to +x, +x to -z.
-    expect_colour(environment_radiance(scene, Vec3(1, 0.3f, 0)),
-                  environment_radiance(unrotated, Vec3(0, 0.3f, 1)), "+x shows what was at +z");
-    expect_colour(environment_radiance(scene, Vec3(0, -0.2f, -1)),
-                  environment_radiance(unrotated, Vec3(1, -0.2f, 0)), "-z shows what was at +x");
+    expect_color(environment_radiance(scene, Vec3(1, 0.3f, 0)),
+                 environment_radiance(unrotated, Vec3(0, 0.3f, 1)), "+x shows what was at +z");
+    expect_color(environment_radiance(scene, Vec3(0, -0.2f, -1)),
+                 environment_radiance(unrotated, Vec3(1, -0.2f, 0)), "-z shows what was at +x");
     scene.environment.rotate_y = -45;
     const Vec3 d(0.3f, 0.1f, -0.8f);
     const Real c = std::cos(kPi / 4), s = std::sin(kPi / 4);  // turning d by +45 degrees
-    expect_colour(environment_radiance(scene, d),
-                  environment_radiance(unrotated, Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z)),
-                  "-45 degrees");
+    expect_color(environment_radiance(scene, d),
+                 environment_radiance(unrotated, Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z)),
+                 "-45 degrees");
 }
 
 TEST_F(Radiance, IntensityScalesTheImage) {
     Scene scene = latlong_scene(8, 4);
     scene.environment.intensity = 2.5f;
     const Vec3 d = latlong_direction(2.5f / 8, 2.5f / 4);
-    expect_colour(environment_radiance(scene, d), texel(2, 2) * 2.5f, "intensity 2.5");
+    expect_color(environment_radiance(scene, d), texel(2, 2) * 2.5f, "intensity 2.5");
 }
 
 // Six 2x2 faces; face f's texel (i, j) is colour (f + 1, i, j) / 10.
@@ -112,17 +112,17 @@ TEST_F(Radiance, CubeFacesAreLookedUpWithClampAndNoBleeding) {
     const Vec3 axes[6] = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
                           Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
     for (int f = 0; f < 6; ++f)  // the centre: the four texels equally
-        expect_colour(environment_radiance(scene, Real(3) * axes[f]),
-                      Color(float(f + 1), 0.5f, 0.5f) / 10.0f,
-                      "centre of face " + std::to_string(f));
+        expect_color(environment_radiance(scene, Real(3) * axes[f]),
+                     Color(float(f + 1), 0.5f, 0.5f) / 10.0f,
+                     "centre of face " + std::to_string(f));
     // The corner (u, v) = (0, 0) of +x, (1, 1, 1): texel (0, 0) of +x alone, nothing of +y or +z.
-    expect_colour(environment_radiance(scene, Vec3(1, 1, 1)), Color(0.1f, 0, 0), "corner of +x");
+    expect_color(environment_radiance(scene, Vec3(1, 1, 1)), Color(0.1f, 0, 0), "corner of +x");
     // Texel centres: (u, v) = (0.25, 0.75) on -z is texel (0, 1).
-    expect_colour(environment_radiance(scene, Vec3(0.5f, -0.5f, -1)), Color(0.6f, 0, 0.1f),
-                  "texel (0, 1) of -z");
+    expect_color(environment_radiance(scene, Vec3(0.5f, -0.5f, -1)), Color(0.6f, 0, 0.1f),
+                 "texel (0, 1) of -z");
 }
 
-TEST_F(Radiance, NoEnvironmentIsTheBackgroundColour) {
+TEST_F(Radiance, NoEnvironmentIsTheBackgroundColor) {
     Scene scene;
     scene.background = Color(0.1f, 0.2f, 0.3f);
     scene.update_features();

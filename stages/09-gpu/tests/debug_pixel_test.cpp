@@ -71,7 +71,7 @@ TEST(GpuDebugPixel, FollowsTheCpuRayTree) {
     ASSERT_TRUE(tree.root.hit);
     EXPECT_EQ((int(hits[0].value.y) << 28) | int(hits[0].value.z), tree.root.hit_record.primitive);
     EXPECT_NEAR(hits[0].value.x, tree.root.hit_record.t, 1e-3 * tree.root.hit_record.t);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[0].value[c], tree.colour[c], 1e-3);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[0].value[c], tree.color[c], 1e-3);
     const std::string text = gpu_pixel_text(scene, probe);
     EXPECT_NE(text.find("camera ray (depth 0) from (0, 1.4, 7)"), std::string::npos) << text;
     EXPECT_NE(text.find("    refraction ray (depth 1)"), std::string::npos) << text;

@@ -146,11 +146,11 @@ std::vector<double> estimates(const Scene& scene, const SurfacePoint& at, const 
     Material white;
     white.diffuse = Color(1), white.specular = Color(0);
     stats::Uniform random(seed);
-    const auto colours = testing::call_for<&area_light_estimate>(kSamples, [&](int) {
+    const auto colors = testing::call_for<&area_light_estimate>(kSamples, [&](int) {
         return std::tuple(std::cref(scene), white, at, at.normal, at.normal, light, random.next2());
     });
     std::vector<double> values;
-    for (const Color& c : colours) values.push_back(c.r);
+    for (const Color& c : colors) values.push_back(c.r);
     return values;
 }
 
