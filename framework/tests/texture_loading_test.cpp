@@ -28,7 +28,7 @@ void write_two_texel_png(const fs::path& file) {
 
 // Scene keys are spelled as identifiers are (docs/conventions.md): "color_space". The old key
 // "colour_space" still loads, with a warning at its line; both at once are an error.
-TEST(TextureLoading, OldColourSpaceKeyLoadsWithAWarning) {
+TEST(TextureLoading, OldSpellingOfColorSpaceLoadsWithAWarning) {
     TempDir dir("textures");
     write_two_texel_png(dir.path() / "t.png");
     const fs::path old = dir.write("old.json", R"({
