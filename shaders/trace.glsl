@@ -47,6 +47,15 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
 }
 
 #include "bvh.glsl"
+
+// stage_api/stage06.h's nearest_hit (shade.glsl's shadow rays use it too): the BVH when the scene has one, stage 02's loop otherwise.
+bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
+#ifdef HAS_BVH
+    if (scene_has(kFeatureBvh)) return bvh_intersect_nearest(ray, t_range, hit);
+#endif
+    return intersect_nearest(ray, t_range, hit);
+}
+
 #include "shade.glsl"
 #include "recursion.glsl"
 #if defined(HAS_MAPS) || defined(HAS_ENVIRONMENT)
@@ -57,14 +66,6 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
 #include "environment.glsl"
 #endif
 #include "texturing.glsl"
-
-// render/accelerate.h's nearest_hit: the BVH when the scene has one, stage 02's loop otherwise.
-bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
-#ifdef HAS_BVH
-    if (scene_has(kFeatureBvh)) return bvh_intersect_nearest(ray, t_range, hit);
-#endif
-    return intersect_nearest(ray, t_range, hit);
-}
 
 Ray camera_ray(vec2 pixel) {
     return camera.projection == kProjectionPerspective ? perspective_ray(pixel) : orthographic_ray(pixel);

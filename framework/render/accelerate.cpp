@@ -52,19 +52,4 @@ AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& optio
     return report;
 }
 
-void count_missing_bvh() {
-    static std::atomic<bool> reported{true};  // build_bvh's own stub already printed where to read
-    report_not_implemented("build_bvh", __FILE__, __LINE__,
-                           "stages/06-bvh/README.md#building-the-tree", reported);
-}
-
-bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit) {
-    if (uses_bvh(scene)) return bvh_intersect_nearest(scene, ray, t_range, hit);
-    if (scene.accelerator == Accelerator::Bvh) {  // asked for, but build_bvh is a stub
-        count_missing_bvh();
-        return false;
-    }
-    return intersect_nearest(ray, scene, t_range, hit);
-}
-
 }  // namespace rt

@@ -26,15 +26,7 @@ struct AccelerationReport {
 // every query as a stub call, so the image is magenta at once, like any other stub.
 AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options = {});
 
-// The nearest hit: the BVH (stage 06) when the scene has one, else stage 02's intersect_nearest.
-bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit);
-
-// Counts a stub call for a query that needed the BVH that a stubbed build_bvh did not make.
-void count_missing_bvh();
-
-// True when the scene's queries go through a built BVH.
-inline bool uses_bvh(const Scene& scene) {
-    return scene.accelerator == Accelerator::Bvh && scene.bvh.built();
-}
+// The renderer's nearest-hit query, nearest_hit, is in stage_api/stage06.h: the stage 04 and 10
+// student code traces its rays through it too.
 
 }  // namespace rt

@@ -28,7 +28,8 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
 // shadow ray crosses multiplies it by that surface's transmissive colour k_t ("thin shell": a
 // glass sphere is crossed twice); an opaque surface (k_t = 0) gives (0, 0, 0). After a
 // transparent surface continue from it with offset_ray_origin (surface_point gives its error
-// bound), at most kMaxShadowSurfaces surfaces.
+// bound), at most kMaxShadowSurfaces surfaces. Find each surface with nearest_hit
+// (stage_api/stage06.h): stage 02's intersect_nearest until a scene has a BVH, then the tree.
 Color light_transmittance(const Scene& scene, const SurfacePoint& at, const LightSample& sample);
 
 }  // namespace rt

@@ -106,4 +106,22 @@ inline bool intersect_primitive(const Scene& scene, std::uint32_t id, const Ray&
     return found;
 }
 
+// True when the scene's queries go through a built BVH.
+inline bool uses_bvh(const Scene& scene) {
+    return scene.accelerator == Accelerator::Bvh && scene.bvh.built();
+}
+
+// Given (framework): the scene's nearest hit, as the renderer finds it: your BVH traversal when
+// the scene has a tree, else your stage 02 intersect_nearest (the same answer, faster). Stages 04
+// and 10 trace their rays through it, so a scene with a BVH uses it for every ray. A scene that
+// asks for a tree a stubbed build_bvh did not make counts a stub call (the image is magenta).
+inline bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit) {
+    if (uses_bvh(scene)) return bvh_intersect_nearest(scene, ray, t_range, hit);
+    if (scene.accelerator == Accelerator::Bvh) {
+        count_missing_bvh();
+        return false;
+    }
+    return intersect_nearest(ray, scene, t_range, hit);
+}
+
 }  // namespace rt

@@ -7,6 +7,7 @@
 #include "core/not_implemented.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage04.h"
+#include "stage_api/stage06.h"
 
 namespace rt {
 
@@ -38,7 +39,7 @@ Color light_transmittance(const Scene& scene, const SurfacePoint& at, const Ligh
     Color transmittance(1);
     for (int crossed = 0; crossed < kMaxShadowSurfaces; ++crossed) {
         Hit hit;
-        if (!intersect_nearest(shadow.ray, scene, shadow.t_range, hit)) return transmittance;
+        if (!nearest_hit(scene, shadow.ray, shadow.t_range, hit)) return transmittance;
         transmittance *= scene.materials[std::size_t(hit.material)].transmissive;
         if (transmittance == Color(0)) return transmittance;
         // Continue past this surface, from the robust origin on its far side.

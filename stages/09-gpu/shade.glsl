@@ -86,14 +86,14 @@ ShadowRay shadow_ray(SurfacePoint at, LightSample s) {
 
 // Stage 04's light_transmittance: each surface crossed multiplies by its k_t, an opaque one
 // gives 0; continue past a transparent one from offset_ray_origin, at most 64 surfaces.
-// intersect_nearest here is stage 02's loop (not the BVH), as on the CPU.
+// nearest_hit (shaders/trace.glsl) is the BVH when the scene has one, as on the CPU.
 vec3 light_transmittance(SurfacePoint at, LightSample s) {
     // BEGIN SOLUTION
     ShadowRay shadow = shadow_ray(at, s);
     vec3 transmittance = vec3(1);
     for (int crossed = 0; crossed < 64; ++crossed) {
         Hit hit = no_hit();
-        if (!intersect_nearest(shadow.ray, shadow.t_range, hit)) return transmittance;
+        if (!nearest_hit(shadow.ray, shadow.t_range, hit)) return transmittance;
         transmittance *= material_at(hit.material).transmissive_ior.rgb;
         if (transmittance == vec3(0)) return transmittance;
         const SurfacePoint through = surface_point(shadow.ray, hit);

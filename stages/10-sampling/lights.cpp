@@ -13,6 +13,7 @@
 #include "geometry/onb.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage04.h"
+#include "stage_api/stage06.h"
 #include "stage_api/stage10.h"
 
 namespace rt {
@@ -165,9 +166,8 @@ Real ambient_occlusion(const Scene& scene, const SurfacePoint& at, const Vec3& n
                        Real max_distance, Vec2 u) {
     // BEGIN SOLUTION
     Hit hit;
-    return intersect_nearest(cosine_ray(at, normal, u), scene, Interval{0, max_distance}, hit)
-               ? Real(0)
-               : Real(1);
+    return nearest_hit(scene, cosine_ray(at, normal, u), Interval{0, max_distance}, hit) ? Real(0)
+                                                                                         : Real(1);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
     // (void)scene, (void)at, (void)normal, (void)max_distance, (void)u;

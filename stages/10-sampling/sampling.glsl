@@ -1,7 +1,7 @@
 // Stage 10 on the GPU (optional): sampling.cpp and lights.cpp in GLSL, for `rt render --gpu` and
 // the viewer's GPU mode on stage 10 scenes. Handout: stages/10-sampling/README.md#optional-the-gpu.
 // Needs stage 09's GLSL (stages/09-gpu/): Ray, SurfacePoint, LightSample, blinn_phong,
-// light_transmittance, intersect_nearest, offset_ray_origin come from there and from
+// light_transmittance, nearest_hit, offset_ray_origin come from there and from
 // shaders/framework.glsl. As in C++, every u is uniform in [0, 1): the framework draws it
 // (shaders/trace.glsl, a PCG hash of the pixel, the sample and the scene's seed); these functions
 // only warp it. The contracts are framework/stage_api/stage10.h's, in float.
@@ -272,12 +272,12 @@ Ray cosine_ray(SurfacePoint at, vec3 normal, vec2 u) {
     // END SOLUTION
 }
 
-// 1 when the cosine_ray meets nothing (intersect_nearest) closer than max_distance, else 0.
+// 1 when the cosine_ray meets nothing (nearest_hit: the BVH when the scene has one) closer than
+// max_distance, else 0.
 float ambient_occlusion(SurfacePoint at, vec3 normal, float max_distance, vec2 u) {
     // BEGIN SOLUTION
     Hit hit = no_hit();
-    return intersect_nearest(cosine_ray(at, normal, u), Interval(0.0, max_distance), hit) ? 0.0
-                                                                                          : 1.0;
+    return nearest_hit(cosine_ray(at, normal, u), Interval(0.0, max_distance), hit) ? 0.0 : 1.0;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
     // return 1.0;
