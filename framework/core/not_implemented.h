@@ -25,6 +25,24 @@ void report_endless_loop(const char* file, int line, int limit, std::atomic<bool
 std::uint64_t stub_calls_total();
 std::uint64_t stub_calls_this_thread();
 
+// While one lives, this thread's stubs are counted and tell it they were reached, but print
+// nothing (the call site's one message is kept for a real use). For a framework probe of optional student work (the viewer tries stage 06's build_bvh on a big
+// scene), so a starter tree that has not reached that stage hears nothing of it.
+class QuietStubs {
+  public:
+    QuietStubs();
+    ~QuietStubs();
+    QuietStubs(const QuietStubs&) = delete;
+    QuietStubs& operator=(const QuietStubs&) = delete;
+    bool reached() const { return reached_; }
+
+  private:
+    friend void report_not_implemented(const char*, const char*, int, const char*,
+                                       std::atomic<bool>&);
+    QuietStubs* outer_;
+    bool reached_ = false;
+};
+
 // Counts `n` stub calls made on this thread's behalf by another process: the grading worker
 // that runs the student's code for a judge (framework/remote/).
 void count_stub_calls(std::uint64_t n);

@@ -35,10 +35,14 @@ ViewSettings settings_of(const Scene& scene);
 class SceneSource {
   public:
     explicit SceneSource(Scene loaded);
-    const ViewSettings& initial() const { return initial_; }  // the scene file's settings
+    // The scene file's settings, with the BVH on for a big scene when stage 06 is written.
+    const ViewSettings& initial() const { return initial_; }
     Scene make(const ViewSettings& settings);
 
   private:
+    static bool worth_a_tree(const Scene& scene);
+    void try_tree();
+
     ViewSettings initial_;
     Scene loaded_;
     std::optional<Scene> with_bvh_;  // loaded_ with its BVH built

@@ -92,8 +92,9 @@ bool run_view_latency(const ViewLatencyConfig& config, std::ostream& out) {
     const std::string path = config.gpu ? "the GPU path (stage 09's shader, headless EGL)"
                                         : std::to_string(renderer.threads()) + " CPU threads";
     out << "Viewer latency: " << file.filename().string() << " at " << config.width << "x"
-        << config.height << ", " << path << ", " << config.changes
-        << " camera changes (orbits of 3 degrees), milliseconds\n\n"
+        << config.height << ", " << path << ", "
+        << (settings.accelerator == Accelerator::Bvh ? "stage 06's BVH" : "no BVH") << ", "
+        << config.changes << " camera changes (orbits of 3 degrees), milliseconds\n\n"
         << "| from a camera change to | median | fastest | slowest |\n|---|---|---|---|\n"
         << row(("the first frame (1/" + std::to_string(block) + " resolution)").c_str(),
                stats(firsts))
