@@ -55,6 +55,9 @@ float srgb_to_linear(float encoded);
 
 // Linear to 8-bit sRGB with rounding to nearest. NaN becomes 0; values outside [0, 1] clamp.
 Image8 to_image8(const Image& image);
+// One channel as to_image8 stores it: lround(linear_to_srgb(linear) * 255), the same bit for
+// bit, from a table instead of pow (image/image.cpp says how).
+std::uint8_t encode_srgb8(float linear);
 
 // Writes by extension: .png (8-bit sRGB) or .exr (linear float). Throws ImageError naming the
 // file on failure (unknown extension, unwritable folder, ...).
