@@ -29,8 +29,9 @@ cmake --build "$build" --target rt -j "${RT_CALIBRATION_JOBS:-2}" > "$root/build
   { tail -40 "$root/build.log"; echo "FAIL: building rt with the students' files at $flags"; exit 1; }
 built=$(date +%s)
 # The flags really reached the students' files (an override in the tree would make this vacuous).
-grep -- "$flags" "$build/compile_commands.json" | grep -q "stages/" ||
-  { echo "FAIL: $flags not in the students' compile commands"; exit 1; }
+# (grep -c, not -q: -q stops reading early, the first grep dies of SIGPIPE, and pipefail fails.)
+students=$(grep -- "$flags" "$build/compile_commands.json" | grep -c "stages/")
+[ "$students" -gt 0 ] || { echo "FAIL: $flags not in the students' compile commands"; exit 1; }
 echo "$name: rt built with the students' files at '$flags' in $(( built - start )) s"
 "$bin/rt-grade" compare --source "$src" --renderer "$build/bin/rt" --threads 2 ${RT_CALIBRATION_STAGES:+--stages "$RT_CALIBRATION_STAGES"}
 code=$?

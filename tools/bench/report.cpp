@@ -9,11 +9,14 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "bench/accuracy.h"
 #include "bench/machine.h"
 #include "bench/report_format.h"
 #include "core/parallel_for.h"
+#include "core/source_dir.h"
+#include "core/text_file.h"
 
 namespace rt::bench {
 namespace {
@@ -155,162 +158,76 @@ void write_table(std::ostream& m, const AccuracyResults& r, const std::string& f
 using F = long Counts::*;
 const F leak = &Counts::leak, fmiss = &Counts::false_miss, fhit = &Counts::false_hit;
 
+// One figure of the run for a template placeholder {{kind|scenario|method|precision}}.
+std::string figure(const AccuracyResults& r, const std::vector<std::string>& p,
+                   const std::string& where) {
+    const std::string& kind = p[0];
+    if (kind == "leak") return say(r, p[1], p[2], p[3], leak);
+    if (kind == "false-miss") return say(r, p[1], p[2], p[3], fmiss);
+    if (kind == "false-hit") return say(r, p[1], p[2], p[3], fhit);
+    if (kind == "ns") return say_ns(r, p[1], p[2], p[3]);
+    if (kind == "median-ulps") return say_ulps(r, p[1], p[2], p[3], false);
+    if (kind == "max-ulps") return say_ulps(r, p[1], p[2], p[3], true);
+    throw std::runtime_error(where + ": unknown figure \"" + kind +
+                             "\"; use leak, false-miss, false-hit, ns, median-ulps or max-ulps");
+}
+
+// The text with each {{kind|scenario|method|precision}} replaced by its figure.
+std::string fill_figures(const AccuracyResults& r, const std::string& text,
+                         const std::string& where) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = text.find("{{", at)) != std::string::npos;) {
+        const std::size_t close = text.find("}}", open);
+        if (close == std::string::npos)
+            throw std::runtime_error(where + ": a \"{{\" without \"}}\"; close the placeholder");
+        std::vector<std::string> parts;
+        std::istringstream fields(text.substr(open + 2, close - open - 2));
+        for (std::string field; std::getline(fields, field, '|');) parts.push_back(field);
+        if (parts.size() != 4)
+            throw std::runtime_error(where + ": \"" + text.substr(open, close + 2 - open) +
+                                     "\" needs four fields: {{kind|scenario|method|precision}}");
+        out += text.substr(at, open - at) + figure(r, parts, where);
+        at = close + 2;
+    }
+    return out + text.substr(at);
+}
+
+// A section of tools/bench/accuracy_reading.md with this run's figures: the report's prose lives
+// there, not in C++ strings.
+void write_prose(std::ostream& m, const AccuracyResults& r, const std::string& section) {
+    const std::filesystem::path file = source_dir() / "tools/bench/accuracy_reading.md";
+    const std::string text = read_text(file);
+    const std::string begin = "<!-- section: " + section + " -->\n";
+    std::size_t from = text.find(begin);
+    if (from == std::string::npos)
+        throw std::runtime_error(file.string() + ": no \"" + begin.substr(0, begin.size() - 1) +
+                                 "\" line; add the section");
+    from += begin.size();
+    const std::size_t to = text.find("<!-- section:", from);
+    m << fill_figures(r, text.substr(from, to - from), file.string());
+}
+
 void write_triangles(std::ostream& m, const AccuracyResults& r, const std::string& svg) {
     m << "\n## Triangles\n\n";
     if (!svg.empty())
         m << "![speed against wrong decisions, triangles](" << svg << "/triangles.svg)\n";
     write_table(m, r, "triangle");
-    m << "\n**Reading.**\n\n"
-      << "- *Why float Cramer leaks at edges.* A ray exactly through a shared edge has barycentric "
-         "weight 0 "
-         "for that edge in both faces. Cramer computes it in each face from that face's own "
-         "determinants "
-         "(its own `a - b`, `a - c`, `a - o`), rounded differently, so one face may see a tiny "
-         "negative value "
-         "and the other one too: the ray falls between them. Float Cramer leaks on "
-      << say(r, "through-edge", "Cramer", "float", leak) << " exactly through an edge and "
-      << say(r, "through-vertex", "Cramer", "float", leak) << " through a vertex; Moeller-Trumbore "
-      << say(r, "through-edge", "Moeller-Trumbore", "float", leak) << " and "
-      << say(r, "through-vertex", "Moeller-Trumbore", "float", leak)
-      << ". Double makes the gap narrower, not closed: Cramer double leaks on "
-      << say(r, "through-edge", "Cramer", "double", leak) << " and "
-      << say(r, "through-vertex", "Cramer", "double", leak) << ".\n"
-      << "- *Why the watertight test does not.* It moves the ray to the z axis and decides with 2D "
-         "edge "
-         "functions that depend only on the edge's two vertices, so the two faces of an edge "
-         "compute the same "
-         "products and get exactly negated values (exact zeros are recomputed in higher "
-         "precision). Watertight "
-         "float leaks on "
-      << say(r, "through-edge", "watertight", "float", leak) << " and "
-      << say(r, "through-vertex", "watertight", "float", leak) << ", and on "
-      << say(r, "offset-1e5", "watertight", "float", leak) << " at offset 1e5, at "
-      << say_ns(r, "through-edge", "watertight", "float") << " ns per test against "
-      << say_ns(r, "through-edge", "Cramer", "float") << " for Cramer.\n"
-      << "- *Why FMA contraction matters.* With `-ffp-contract=fast` (and an FMA unit) the "
-         "compiler may turn "
-         "`x*y - z*w` into `fma(x, y, -(z*w))`: one rounding of the first product is skipped, but "
-         "not of the "
-         "second, so the neighbour's `z*w - x*y` is no longer the exact negation, and the argument "
-         "above breaks. "
-         "The row *watertight FMA* is the same code with the three edge functions written that "
-         "way: it leaks on "
-      << say(r, "through-edge", "watertight FMA", "float", leak) << " in float and "
-      << say(r, "through-edge", "watertight FMA", "double", leak)
-      << " in double exactly through an edge (float Cramer: "
-      << say(r, "through-edge", "Cramer", "float", leak)
-      << "; its time is that of a library call: "
-         "the default x86-64 target has no FMA instruction). The project compiles everything with "
-         "`-ffp-contract=off`; the test `Accuracy.Build.ContractionIsOff` proves it on this build "
-         "(see the last "
-         "section).\n"
-      << "- *Far from the origin.* At 1e5 floats are 2^-7 apart, so the meshes themselves are "
-         "stored that "
-         "coarsely; inside the tests, differences of nearby coordinates are then exact (Sterbenz's "
-         "lemma), so "
-         "moving the camera along costs little more: float Cramer leaks on "
-      << say(r, "offset-1e5", "Cramer", "float", leak) << " at 1e5 and "
-      << say(r, "offset-1e3", "Cramer", "float", leak) << " at 1e3, with a median t error of "
-      << say_ulps(r, "offset-1e5", "Cramer", "float", false) << " ulps (max "
-      << say_ulps(r, "offset-1e5", "Cramer", "float", true)
-      << "). The damage is done when positions are stored: keep them relative to a nearby origin, "
-         "or in double.\n"
-      << "- *Grazing rays and slivers* are ill-conditioned for every method: a rounding error "
-         "across the "
-         "ray moves the hit point along the plane by (rounding)/cos, and a sliver is thinner than "
-         "that. "
-         "Watertight float wrongly misses "
-      << say(r, "sliver", "watertight", "float", fmiss) << " on slivers and "
-      << say(r, "grazing", "watertight", "float", fmiss)
-      << " on grazing rays (Cramer float: " << say(r, "sliver", "Cramer", "float", fmiss) << " and "
-      << say(r, "grazing", "Cramer", "float", fmiss)
-      << "). Watertight means no gaps between neighbours, not exact answers for one triangle: the "
-         "2D test is "
-         "exact only for the rounded, sheared vertices. Double removes these: "
-      << say(r, "sliver", "watertight", "double", fmiss) << " and "
-      << say(r, "grazing", "watertight", "double", fmiss) << ".\n";
+    m << "\n**Reading.**\n\n";
+    write_prose(m, r, "triangles");
 }
 
 void write_spheres(std::ostream& m, const AccuracyResults& r, const std::string& svg) {
     m << "\n## Spheres\n\n";
     if (!svg.empty()) m << "![speed against wrong decisions, spheres](" << svg << "/spheres.svg)\n";
     write_table(m, r, "sphere");
-    m << "\n**Reading.**\n\n"
-      << "- *Why the far sphere fails without the reformulation.* For a sphere of radius r at "
-         "distance D the "
-         "textbook discriminant b^2 - 4ac subtracts two numbers of size D^4 to get one of size r^2 "
-         "D^2: at "
-         "D = 1e4 and r = 1 in float the difference is below the rounding of either term, and the "
-         "answer is "
-         "noise. Textbook float gets "
-      << say(r, "far-small", "textbook", "float", fhit) << " false hits and "
-      << say(r, "far-small", "textbook", "float", fmiss)
-      << " false misses although every ray passes at least 5% of the radius inside or outside the "
-         "silhouette. "
-         "The q-form fixes the roots, not the discriminant: "
-      << say(r, "far-small", "q-form", "float", fhit)
-      << " false hits. Ray Tracing Gems' form r^2 - |l|^2, "
-         "with l the vector from the centre to the closest point of the line, subtracts numbers of "
-         "size r^2 "
-         "instead: "
-      << say(r, "far-small", "RTG ch. 7", "float", fhit) << " false hits and "
-      << say(r, "far-small", "RTG ch. 7", "float", fmiss) << " false misses, at "
-      << say_ns(r, "far-small", "RTG ch. 7", "float") << " ns against "
-      << say_ns(r, "far-small", "textbook", "float") << " ns.\n"
-      << "- *Large sphere seen from just above.* c = |o - c|^2 - r^2 cancels when the origin is "
-         "close to a "
-         "big sphere, for every form; the textbook root (-b - sqrt(disc)) / 2a cancels a second "
-         "time. Median t "
-         "error in float: textbook "
-      << say_ulps(r, "large-near", "textbook", "float", false) << " ulps, q-form "
-      << say_ulps(r, "large-near", "q-form", "float", false) << ", RTG "
-      << say_ulps(r, "large-near", "RTG ch. 7", "float", false) << " (max "
-      << say_ulps(r, "large-near", "textbook", "float", true) << ", "
-      << say_ulps(r, "large-near", "q-form", "float", true) << ", "
-      << say_ulps(r, "large-near", "RTG ch. 7", "float", true) << ").\n"
-      << "- *Near-tangent rays* are a tie within rounding for every method (sphere-grazing): RTG "
-         "float "
-      << say(r, "sphere-grazing", "RTG ch. 7", "float", fhit) << " false hits, textbook float "
-      << say(r, "sphere-grazing", "textbook", "float", fhit) << ".\n"
-      << "- *The seeds' geometric method* (the Arizona lecture: t_ca = L.d, give up when t_ca < 0) "
-         "assumes the origin is outside. From inside a sphere whose centre lies behind the origin "
-         "it misses a surface that is there: "
-      << say(r, "sphere-inside", "geometric (Arizona)", "float", fmiss)
-      << " false misses in sphere-inside, against "
-      << say(r, "sphere-inside", "RTG ch. 7", "float", fmiss)
-      << " for RTG. Refraction rays start inside spheres, so glass goes black with it. Outside, "
-         "d2 = L.L - t_ca^2 cancels as the textbook discriminant does (far-small: "
-      << say(r, "far-small", "geometric (Arizona)", "float", fhit) << " false hits and "
-      << say(r, "far-small", "geometric (Arizona)", "float", fmiss) << " false misses).\n"
-      << "- *The seeds' plane and same-side triangle test* (the Leeds tracer) decides each edge "
-         "from a point it has already rounded: "
-      << say(r, "through-edge", "plane + same side (Leeds)", "float", leak)
-      << " leaks exactly through an edge and "
-      << say(r, "near-edge", "plane + same side (Leeds)", "float", leak)
-      << " near one, against Cramer's " << say(r, "through-edge", "Cramer", "float", leak)
-      << " and " << say(r, "near-edge", "Cramer", "float", leak) << ".\n";
+    m << "\n**Reading.**\n\n";
+    write_prose(m, r, "spheres");
 }
 
 void write_self_intersection(std::ostream& m, const AccuracyResults& r) {
-    m << "\n## Self-intersection\n\n"
-         "A ray hits a triangle (watertight test), and a new ray leaves the hit point in a random "
-         "direction "
-         "on the same side (cosine to the normal from 1e-3 to 1). *fixed tmin*: origin o + t d, "
-         "accepted "
-         "t > 1e-4. *normal offset*: origin o + t d + 1e-4 n. *robust offset*: the hit point "
-         "rebuilt from the "
-         "barycentrics with its rounding-error bound, moved past that bound along the normal and "
-         "rounded "
-         "away (pbrt-v4's OffsetRayOrigin; the bench's copy in `tools/bench/methods.h`, the "
-         "renderer's in "
-         "`framework/geometry/offset.h`). Self-hit: the new ray hits the triangle it left. Missed "
-         "occluder: "
-         "a larger copy of the triangle lifted by a gap of 1e-2 or 1e-4 times the scene scale is "
-         "not hit "
-         "(rays with cosine >= 0.3).\n\n"
-         "<!-- table:self -->\n| strategy | precision | scale | rays | self-hits | occluder rays | "
-         "missed, gap 1e-2 | "
-         "missed, gap 1e-4 |\n|---|---|--:|--:|--:|--:|--:|--:|\n";
+    m << "\n## Self-intersection\n\n";
+    write_prose(m, r, "self-intersection");  // ends with the table's header
     for (const SelfRow& x : r.self)
         m << "| " << x.strategy << " | " << x.precision << " | " << fmt("%g", x.scale) << " | "
           << x.rays << " | " << self_cell(x.self_hits, x.rays) << " | " << x.occluder_rays << " | "
@@ -356,17 +273,8 @@ void write_rendering(std::ostream& m, const AccuracyResults& r, const std::strin
         m << "The " << r.render_scenes.size() << " stage 02 scenes (";
         for (std::size_t i = 0; i < r.render_scenes.size(); ++i)
             m << (i ? ", " : "") << r.render_scenes[i];
-        m << ") in normals mode at 1/" << c.render_divisor
-          << " of their size, with the bench's methods "
-             "(spheres: RTG form), one thread. Time is summed over the scenes; errors are means "
-             "over them. "
-             "RMSE is in 8-bit units against a 256-sample (16x16) double reference; the last "
-             "column is the share "
-             "of pixels off by more than 2/255 from the double pixel-centre image (the precision "
-             "error alone).\n\n"
-             "<!-- table:render -->\n| series | samples per pixel | ms | RMSE vs 256 spp | pixels "
-             "off the double "
-             "centre image |\n|---|--:|--:|--:|--:|\n";
+        m << ") in normals mode at 1/" << c.render_divisor << " of their size, ";
+        write_prose(m, r, "rendering");  // ends with the table's header
         for (const RenderPoint& p : r.render)
             m << "| " << p.series << " | " << p.spp << " | " << fmt("%.1f", p.ms) << " | "
               << fmt("%.3f", p.rmse) << " | "
