@@ -197,7 +197,7 @@ std::string fill_figures(const AccuracyResults& r, const std::string& text,
 // there, not in C++ strings.
 void write_prose(std::ostream& m, const AccuracyResults& r, const std::string& section) {
     const std::filesystem::path file = source_dir() / "tools/bench/accuracy_reading.md";
-    const std::string text = read_text(file);
+    static const std::string text = read_text(file);  // read once for the four sections
     const std::string begin = "<!-- section: " + section + " -->\n";
     std::size_t from = text.find(begin);
     if (from == std::string::npos)
