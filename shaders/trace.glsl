@@ -364,15 +364,16 @@ vec4 trace_pixel(vec2 pixel) {
 
 #ifdef HAS_SAMPLING
 #ifdef HAS_MOTION_BLUR
-// The spheres at `time` (render/sampled.cpp's scene_at_time): moving ones where stage 10's
-// sphere_center_at puts them.
+// The spheres at `time`, as C++'s Scene::sphere_at sees them: the moving ones moved along their
+// velocity. The C++ renderer gives each ray its time; here each invocation moves its private
+// copy of the spheres once per camera sample, which every ray of that sample then meets.
 void move_spheres(float time) {
     for (int i = 0; i < primitive_counts.x && i < MAX_SPHERES; ++i) spheres[i] = spheres_at_rest[i];
     for (int m = 0; m < int(sampling.seed_counts.w) && m < MAX_MOVING_SPHERES; ++m) {
         const int i = floatBitsToInt(moving_spheres[m].velocity_sphere.w);
         if (i >= 0 && i < MAX_SPHERES)
-            spheres[i].center_radius.xyz = sphere_center_at(
-                spheres_at_rest[i].center_radius.xyz, moving_spheres[m].velocity_sphere.xyz, time);
+            spheres[i].center_radius.xyz =
+                spheres_at_rest[i].center_radius.xyz + time * moving_spheres[m].velocity_sphere.xyz;
     }
 }
 #endif

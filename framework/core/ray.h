@@ -10,6 +10,10 @@ namespace rt {
 struct Ray {
     Vec3 origin{0};
     Vec3 direction{0, 0, -1};
+    // When the ray travels: the shutter time of its camera sample (stage 10's motion blur moves
+    // spheres with it, Scene::sphere_at), 0 without motion blur. Rays spawned at a surface keep
+    // the time of the ray that found it (spawn_ray in scene/surface_point.h).
+    Real time = 0;
 
     Vec3 at(Real t) const { return origin + t * direction; }
 };

@@ -98,7 +98,7 @@ void get(Reader& r, Owned<LightVisibility>& v) {
 }
 
 // sizeof(Scene) (with float) when its field list was written.
-static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 768,
+static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 760,
               "Scene changed: add its new field to RT_WIRE_FIELDS(Scene) in wire_types.h");
 
 }  // namespace rt::remote

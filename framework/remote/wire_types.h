@@ -85,7 +85,7 @@ RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambie
                v.planes, v.boxes, v.vertices, v.normals, v.uvs, v.triangles, v.materials,
                v.material_names, v.lights, v.area_lights, v.moving_spheres, v.sampling, v.fog,
                v.textures, v.texture_names, v.texture_images, v.texels, v.environment, v.features,
-               v.revision, v.bvh)
+               v.bvh)
 #undef RT_WIRE_FIELDS
 
 template <class T>

@@ -24,22 +24,6 @@ Real SampleStream::next() {
     return Real(rng_() >> (32 - kBits)) * (Real(1) / Real(std::uint64_t(1) << kBits));
 }
 
-const Scene& scene_at_time(const Scene& scene, Real time) {
-    if (scene.moving_spheres.empty()) return scene;
-    // One copy per thread, made again when the thread meets another scene (or a changed one).
-    thread_local Scene copy;
-    thread_local const Scene* of = nullptr;
-    thread_local std::uint64_t revision = 0;
-    if (of != &scene || revision != scene.revision) {
-        copy = scene;
-        of = &scene, revision = scene.revision;
-    }
-    for (const MovingSphere& m : scene.moving_spheres)
-        copy.spheres[m.sphere].center =
-            sphere_center_at(scene.spheres[m.sphere].center, m.velocity, time);
-    return copy;
-}
-
 Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* observer) {
     const SamplingSettings& settings = scene.sampling;
     SampleStream stream(settings.seed, std::uint64_t(y) * std::uint64_t(scene.image.width) + x,
@@ -52,12 +36,10 @@ Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* 
     if (scene.features.depth_of_field)
         ray = thin_lens_ray(scene.camera, ray, settings.aperture, settings.focus_distance,
                             stream.next2());
-    const Scene& now =
-        scene.features.motion_blur
-            ? scene_at_time(
-                  scene, shutter_time(settings.shutter_open, settings.shutter_close, stream.next()))
-            : scene;
-    return trace_sample(now, ray, stream, observer);
+    // The ray's time moves the spheres it meets, and those of every ray spawned from it.
+    if (scene.features.motion_blur)
+        ray.time = shutter_time(settings.shutter_open, settings.shutter_close, stream.next());
+    return trace_sample(scene, ray, stream, observer);
 }
 
 Color shade_sampled_pixel(const Scene& scene, int x, int y) {

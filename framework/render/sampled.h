@@ -30,10 +30,6 @@ class SampleStream {
     pcg32 rng_;
 };
 
-// The scene as it is at `time`: `scene` itself when nothing moves, else a per-thread copy whose
-// moving spheres are where stage 10's sphere_center_at puts them.
-const Scene& scene_at_time(const Scene& scene, Real time);
-
 class TraceObserver;  // render/shade.h
 
 // Camera sample `sample` of pixel (x, y): the jittered, filtered image point, the thin-lens ray

@@ -229,7 +229,7 @@ void make_glossy(const SurfacePoint& at, Real fuzz, SecondaryRay& reflected, Sam
         reflected.valid = false;
         return;
     }
-    reflected.ray = Ray{offset_ray_origin(at.point, at.error, at.normal, d), d};
+    reflected.ray = spawn_ray(at, at.normal, d);
 }
 
 // A frame's own work: the nearest hit, its local light, and the secondary rays (stage 05) when

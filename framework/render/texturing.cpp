@@ -35,7 +35,7 @@ Vec2 surface_texcoord(const Scene& scene, const Hit& hit, const SurfacePoint& at
     if (!scene.is_primitive(hit.primitive)) return Vec2(0);
     switch (scene.primitive_kind(hit.primitive, i)) {
         case Scene::Kind::Sphere: {
-            const Sphere& s = scene.spheres[i];
+            const Sphere s = scene.sphere_at(i, at.time);
             return sphere_texcoord(glm::normalize(at.point - s.center));
         }
         case Scene::Kind::Plane:

@@ -1,7 +1,6 @@
 #include "scene/scene.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 namespace rt {
@@ -113,8 +112,12 @@ void Scene::update_features() {
     f.indirect_diffuse = sampling.indirect == IndirectLight::Diffuse;
     f.fog = fog.density > 0;
     features = f;
-    static std::atomic<std::uint64_t> revisions{0};
-    revision = ++revisions;
+}
+
+Vec3 Scene::moved_center(std::size_t i, Real time) const {
+    for (const MovingSphere& m : moving_spheres)
+        if (m.sphere == i) return spheres[i].center + time * m.velocity;
+    return spheres[i].center;
 }
 
 std::string Features::describe() const {

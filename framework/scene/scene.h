@@ -90,8 +90,8 @@ struct AreaLight {
 };
 
 // Stage 10: a sphere whose centre moves while the shutter is open. It is Scene::spheres[sphere]
-// at time 0 (so every query, id and debug view sees it there) and is at
-// spheres[sphere].center + time * velocity at `time` (render/sampled.h moves it per sample).
+// at time 0 and spheres[sphere].center + time * velocity at `time`: a ray of that time meets it
+// there (Ray::time, Scene::sphere_at).
 struct MovingSphere {
     std::size_t sphere = 0;
     Vec3 velocity{0};
@@ -224,10 +224,7 @@ struct Scene {
     Environment environment;
 
     Features features;  // filled by update_features()
-    // A new number each update_features(): tells the per-thread copies of a scene with moving
-    // spheres (render/sampled.cpp) that it changed.
-    std::uint64_t revision = 0;
-    Bvh bvh;  // built by build_acceleration when accelerator == Bvh
+    Bvh bvh;            // built by build_acceleration when accelerator == Bvh
 
     // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding
     // a kind renumbers nothing (and a shader decodes an id with a shift and a mask). Ids of one
@@ -258,6 +255,15 @@ struct Scene {
     // and boxes: the number debug colours are made from (the primitive-id view).
     std::size_t primitive_rank(int id) const;
 
+    // Sphere i as a ray of time `time` meets it: moved along its velocity when it is one of the
+    // moving_spheres (stage 10's motion blur), else as stored. Every sphere test reads spheres
+    // through it; without moving spheres it is spheres[i].
+    Sphere sphere_at(std::size_t i, Real time) const {
+        Sphere s = spheres[i];
+        if (!moving_spheres.empty()) s.center = moved_center(i, time);
+        return s;
+    }
+
     void triangle_vertices(std::size_t i, Vec3& a, Vec3& b, Vec3& c) const {
         a = vertices[triangles[i].v[0]];
         b = vertices[triangles[i].v[1]];
@@ -265,6 +271,8 @@ struct Scene {
     }
 
     void update_features();
+    // The centre of sphere i at `time` (sphere_at, when the scene has moving spheres).
+    Vec3 moved_center(std::size_t i, Real time) const;
     // The texels of texture_images[i] (no bounds check).
     TextureView texture_view(std::size_t image, bool srgb) const {
         const TextureImage& t = texture_images[image];

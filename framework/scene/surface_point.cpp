@@ -17,7 +17,8 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
                     .normal = hit.normal,
                     .front_face = hit.front_face,
                     .primitive = hit.primitive,
-                    .material = hit.material};
+                    .material = hit.material,
+                    .time = ray.time};
     if (!scene.is_primitive(hit.primitive)) {
         // Unknown primitive: the point as computed, with the error of o + t d.
         sp.error = gamma_bound(4) * (abs3(ray.origin) + abs3(hit.t * ray.direction));
@@ -26,7 +27,7 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     std::size_t i = 0;
     switch (scene.primitive_kind(hit.primitive, i)) {
         case Scene::Kind::Sphere: {
-            const Sphere& s = scene.spheres[i];
+            const Sphere s = scene.sphere_at(i, ray.time);
             const Vec3 from_center = hit.point - s.center;
             const Real length = glm::length(from_center);
             if (length > 0) sp.point = s.center + from_center * (s.radius / length);

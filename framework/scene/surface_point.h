@@ -20,6 +20,7 @@ struct SurfacePoint {
     // (render/texturing.h) when the scene has textures, (0, 0) otherwise. Distinct from Hit::uv,
     // which holds the barycentrics for triangles.
     Vec2 texcoord{0};
+    Real time = 0;  // of the ray that found it (Ray::time); rays spawned here keep it
 };
 
 // Refines hit.point onto the primitive hit.primitive and bounds its error. Per primitive:
@@ -33,5 +34,13 @@ struct SurfacePoint {
 // written here; they do not depend on how accurately stage 02 computed hit.point, because the
 // refinement puts the point back on the surface.
 SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit);
+
+// The ray leaving `at` in `direction`: from offset_ray_origin(at.point, at.error, normal,
+// direction), at the time of the ray that found `at`, so a moving sphere (stage 10) is where
+// that ray saw it. `normal` is the one the offset follows: at.normal, or the face a refracted
+// ray crosses. Every shadow, reflected, refracted and sampled ray starts here.
+inline Ray spawn_ray(const SurfacePoint& at, const Vec3& normal, const Vec3& direction) {
+    return Ray{offset_ray_origin(at.point, at.error, normal, direction), direction, at.time};
+}
 
 }  // namespace rt

@@ -74,7 +74,6 @@
     X(Vec3, sample_uniform_sphere, (Vec2 u), (u)) \
     X(Ray, thin_lens_ray, (const Camera& camera, const Ray& pinhole, Real aperture, Real focus_distance, Vec2 u), (camera, pinhole, aperture, focus_distance, u)) \
     X(Real, shutter_time, (Real open, Real close, Real u), (open, close, u)) \
-    X(Vec3, sphere_center_at, (const Vec3& center, const Vec3& velocity, Real time), (center, velocity, time)) \
     X(Real, sample_free_flight, (Real sigma_t, Real u), (sigma_t, u)) \
     X(AreaSample, sample_rectangle, (const AreaLight& light, const Vec3& from, Vec2 u), (light, from, u)) \
     X(Real, rectangle_pdf, (const AreaLight& light, const Vec3& from, const Vec3& direction), (light, from, direction)) \

@@ -35,7 +35,8 @@ bool intersect_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3
 bool intersect_box(const Ray& ray, const Box& box, Interval t_range, Hit& hit);
 
 // The nearest hit among all surfaces of the scene within t_range. Also fills hit.primitive
-// (Scene::primitive_id) and hit.material.
+// (Scene::primitive_id) and hit.material. Spheres are tested as scene.sphere_at(i, ray.time),
+// where the ray meets them (stage 10's motion blur moves some; the others are spheres[i]).
 bool intersect_nearest(const Ray& ray, const Scene& scene, Interval t_range, Hit& hit);
 
 }  // namespace rt

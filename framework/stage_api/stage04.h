@@ -18,8 +18,9 @@ struct ShadowRay {
 };
 
 // The shadow ray from the surface point `at` towards the light of `sample`:
-//   origin    = offset_ray_origin(at.point, at.error, at.normal, sample.direction)
-//   direction = sample.direction (unit)
+//   ray       = spawn_ray(at, at.normal, sample.direction): its origin is
+//               offset_ray_origin(at.point, at.error, at.normal, sample.direction), its
+//               direction sample.direction (unit), its time at.time
 //   t_range   = (0, distance from the origin to the light): the open interval already excludes
 //               the light itself; (0, kInfinity) for a directional light.
 ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
@@ -27,8 +28,8 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
 // How much light of `sample` reaches `at`: (1, 1, 1) when nothing is in the way. Each surface the
 // shadow ray crosses multiplies it by that surface's transmissive colour k_t ("thin shell": a
 // glass sphere is crossed twice); an opaque surface (k_t = 0) gives (0, 0, 0). After a
-// transparent surface continue from it with offset_ray_origin (surface_point gives its error
-// bound), at most kMaxShadowSurfaces surfaces. Find each surface with nearest_hit
+// transparent surface move the ray's origin to offset_ray_origin from it (surface_point gives
+// its error bound; the ray keeps its direction and time), at most kMaxShadowSurfaces surfaces. Find each surface with nearest_hit
 // (stage_api/stage06.h): stage 02's intersect_nearest until a scene has a BVH, then the tree.
 Color light_transmittance(const Scene& scene, const SurfacePoint& at, const LightSample& sample);
 

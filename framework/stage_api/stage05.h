@@ -40,8 +40,9 @@ struct SecondaryRays {
 //   On total internal reflection there is no refracted ray and k_t is added to the reflected
 //   weight. With `fresnel`, F = schlick_reflectance(...) moves F k_t from refraction to
 //   reflection. So the two weights always sum to k_r + k_t: no energy is created.
-//   A ray with zero weight is not valid. Origins come from offset_ray_origin, on the side each
-//   ray leaves to.
+//   A ray with zero weight is not valid. Make each ray with spawn_ray(at, n, direction)
+//   (scene/surface_point.h): its origin is offset_ray_origin on the side it leaves to, its time
+//   the incoming ray's.
 SecondaryRays secondary_rays(const Ray& incoming, const SurfacePoint& at, const Material& material,
                              bool fresnel);
 

@@ -79,10 +79,12 @@ inline bool intersect_primitive(const Scene& scene, std::uint32_t id, const Ray&
     bool found = false;
     int material = -1;
     switch (scene.primitive_kind(int(id), i)) {
-        case Scene::Kind::Sphere:
-            found = intersect_sphere(ray, scene.spheres[i], t_range, hit);
-            material = scene.spheres[i].material;
+        case Scene::Kind::Sphere: {
+            const Sphere sphere = scene.sphere_at(i, ray.time);
+            found = intersect_sphere(ray, sphere, t_range, hit);
+            material = sphere.material;
             break;
+        }
         case Scene::Kind::Plane:
             found = intersect_plane(ray, scene.planes[i], t_range, hit);
             material = scene.planes[i].material;

@@ -46,10 +46,10 @@ Vec3 sample_uniform_sphere(Vec2 u);
 Ray thin_lens_ray(const Camera& camera, const Ray& pinhole, Real aperture, Real focus_distance,
                   Vec2 u);
 
-// The time of a camera sample, uniform over the shutter interval [open, close].
+// The time of a camera sample, uniform over the shutter interval [open, close]. The framework
+// gives it to the camera ray (Ray::time); rays spawned from its hits keep it, and every
+// intersection sees a moving sphere where it is then (Scene::sphere_at).
 Real shutter_time(Real open, Real close, Real u);
-// Where a moving sphere's centre is at `time`: center at time 0 plus time * velocity.
-Vec3 sphere_center_at(const Vec3& center, const Vec3& velocity, Real time);
 
 // Optional (fog): a free-flight distance in a medium of density sigma_t > 0, the distance a
 // ray travels before it is scattered or absorbed: density sigma_t exp(-sigma_t s) on [0, inf).
@@ -97,8 +97,8 @@ Color area_light_estimate(const Scene& scene, const Material& material, const Su
 Vec3 glossy_direction(const Vec3& mirror, Real fuzz, Vec2 u);
 
 // A ray leaving `at` in a cosine-distributed direction about the unit `normal` (facing the
-// viewer): sample_cosine_hemisphere turned into the frame of `normal` (geometry/onb.h), the
-// origin from offset_ray_origin.
+// viewer): sample_cosine_hemisphere turned into the frame of `normal` (geometry/onb.h), made
+// with spawn_ray(at, at.normal, direction) (scene/surface_point.h).
 Ray cosine_ray(const SurfacePoint& at, const Vec3& normal, Vec2 u);
 
 // One-sample ambient occlusion: 1 when the cosine_ray meets nothing (nearest_hit,

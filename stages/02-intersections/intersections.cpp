@@ -159,6 +159,7 @@ bool intersect_box(const Ray& ray, const Box& box, Interval t_range, Hit& hit) {
 // The nearest hit over every surface of the scene: spheres, planes, triangles, boxes.
 // Shrink the range as you find hits, so each later test only accepts something nearer.
 // On a hit also set hit.primitive = scene.primitive_id(kind, index) and hit.material.
+// Take sphere i as scene.sphere_at(i, ray.time): in stage 10 some spheres move with time.
 bool intersect_nearest(const Ray& ray, const Scene& scene, Interval t_range, Hit& hit) {
     // BEGIN SOLUTION
     bool found = false;
@@ -168,9 +169,11 @@ bool intersect_nearest(const Ray& ray, const Scene& scene, Interval t_range, Hit
         hit.primitive = scene.primitive_id(kind, index);
         hit.material = material;
     };
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        if (intersect_sphere(ray, scene.spheres[i], t_range, hit))
-            record(Scene::Kind::Sphere, i, scene.spheres[i].material);
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere sphere = scene.sphere_at(i, ray.time);
+        if (intersect_sphere(ray, sphere, t_range, hit))
+            record(Scene::Kind::Sphere, i, sphere.material);
+    }
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
         if (intersect_plane(ray, scene.planes[i], t_range, hit))
             record(Scene::Kind::Plane, i, scene.planes[i].material);

@@ -15,8 +15,7 @@ namespace rt {
 ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample) {
     // BEGIN SOLUTION
     ShadowRay shadow;
-    shadow.ray.origin = offset_ray_origin(at.point, at.error, at.normal, sample.direction);
-    shadow.ray.direction = sample.direction;
+    shadow.ray = spawn_ray(at, at.normal, sample.direction);
     shadow.t_range = Interval{0, kInfinity};
     if (sample.distance < kInfinity) {
         // The light's distance from the offset origin, not from the surface point.

@@ -85,12 +85,9 @@ SecondaryRays secondary_rays(const Ray& incoming, const SurfacePoint& at, const 
     }
     if (k_r != Color(0)) {
         const Vec3 r = reflect(d, n);
-        out.reflected = {Ray{offset_ray_origin(at.point, at.error, n, r), r}, k_r, true};
+        out.reflected = {spawn_ray(at, n, r), k_r, true};
     }
-    if (k_t != Color(0))
-        out.refracted = {
-            Ray{offset_ray_origin(at.point, at.error, n, refracted_direction), refracted_direction},
-            k_t, true};
+    if (k_t != Color(0)) out.refracted = {spawn_ray(at, n, refracted_direction), k_t, true};
     return out;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/05-recursion/README.md#secondary-rays-and-their-weights");

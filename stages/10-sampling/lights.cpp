@@ -154,7 +154,7 @@ Vec3 glossy_direction(const Vec3& mirror, Real fuzz, Vec2 u) {
 Ray cosine_ray(const SurfacePoint& at, const Vec3& normal, Vec2 u) {
     // BEGIN SOLUTION
     const Vec3 direction = onb_around(normal).to_world(sample_cosine_hemisphere(u));
-    return Ray{offset_ray_origin(at.point, at.error, at.normal, direction), direction};
+    return spawn_ray(at, at.normal, direction);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
     // (void)at, (void)normal, (void)u;

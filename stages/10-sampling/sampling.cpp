@@ -126,16 +126,6 @@ Real shutter_time(Real open, Real close, Real u) {
     // END SOLUTION
 }
 
-Vec3 sphere_center_at(const Vec3& center, const Vec3& velocity, Real time) {
-    // BEGIN SOLUTION
-    return center + time * velocity;
-    // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#3-depth-of-field-and-motion-blur");
-    // (void)velocity, (void)time;
-    // return center;
-    // END SOLUTION
-}
-
 // Optional (fog): invert the cumulative distribution 1 - exp(-sigma_t s).
 Real sample_free_flight(Real sigma_t, Real u) {
     // BEGIN SOLUTION

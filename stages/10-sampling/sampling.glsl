@@ -105,15 +105,6 @@ float shutter_time(float open, float close, float u) {
     // END SOLUTION
 }
 
-vec3 sphere_center_at(vec3 center, vec3 velocity, float time) {
-    // BEGIN SOLUTION
-    return center + time * velocity;
-    // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#3-depth-of-field-and-motion-blur");
-    // return center;
-    // END SOLUTION
-}
-
 // ---------------------------------------------------------------- as lights.cpp
 
 struct AreaSample {

@@ -56,6 +56,25 @@ TEST_F(Nearest, EmptySceneMisses) {
     EXPECT_TRUE(untouched(hit));
 }
 
+// Stage 10's motion blur: a moving sphere is met where it is at the ray's time
+// (scene.sphere_at(i, ray.time)), not where it is stored.
+TEST_F(Nearest, AMovingSphereIsWhereItIsAtTheRaysTime) {
+    Scene s;
+    s.materials.resize(1);
+    s.spheres.push_back(rt::Sphere{Vec3(0, 0, -10), 1, 0});
+    s.moving_spheres.push_back(rt::MovingSphere{0, Vec3(0, 4, 0)});
+    Hit hit;
+    Ray up{Vec3(0, 2, 0), Vec3(0, 0, -1)};
+    EXPECT_FALSE(intersect_nearest(up, s, {}, hit))
+        << "at time 0 the sphere is at (0, 0, -10): a ray at y = 2 passes above it";
+    up.time = 0.5;
+    ASSERT_TRUE(intersect_nearest(up, s, {}, hit))
+        << "at time 0.5 the sphere is at (0, 2, -10): read spheres as scene.sphere_at(i, "
+           "ray.time)";
+    EXPECT_NEAR(hit.t, 9, kTol);
+    EXPECT_NEAR(hit.normal.y, 0, kTol);
+}
+
 TEST_F(Nearest, TMaxExcludesEverything) {
     const Scene s = row_scene();
     Hit hit;

@@ -78,6 +78,15 @@ TEST_F(ShadowRayContract, RobustOriginAndRange) {
     EXPECT_TRUE(std::isinf(d.t_range.max));
 }
 
+// Stage 10's motion blur gives rays a time; a shadow ray sees the scene at its point's time.
+TEST_F(ShadowRayContract, KeepsThePointsTime) {
+    const Scene scene = floor_scene();
+    SurfacePoint at = floor_point(scene, 0.3f, -0.2f);
+    at.time = 0.75f;
+    const ShadowRay s = shadow_ray(at, illuminate(point_light(Vec3(0.3f, 4, -0.2f)), at.point));
+    EXPECT_EQ(s.ray.time, at.time) << "make the ray with spawn_ray(at, at.normal, direction)";
+}
+
 // Renders `scene` with and without shadows and counts the pixels that differ (`acne`) and the
 // pixels lit without shadows (`lit`). With nothing that can cast a shadow on the lit surface the
 // two images must be identical: any difference is shadow acne.

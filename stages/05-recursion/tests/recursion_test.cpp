@@ -119,6 +119,18 @@ TEST_F(Secondary, Mirror) {
     EXPECT_GT(s.reflected.ray.origin.y, at.point.y);
 }
 
+// Stage 10's motion blur gives rays a time; reflected and refracted rays keep their point's.
+TEST_F(Secondary, RaysKeepThePointsTime) {
+    SurfacePoint at = flat_point(Vec3(0, 1, 0), true);
+    at.time = 0.5f;
+    const Ray in{at.point + Vec3(-1, 1, 0), Vec3(1, -1, 0), at.time};
+    const SecondaryRays s =
+        secondary_rays(in, at, mirror_glass(Color(0.5f), Color(0.5f), 1.5f), false);
+    ASSERT_TRUE(s.reflected.valid && s.refracted.valid);
+    EXPECT_EQ(s.reflected.ray.time, at.time) << "make rays with spawn_ray(at, n, direction)";
+    EXPECT_EQ(s.refracted.ray.time, at.time) << "make rays with spawn_ray(at, n, direction)";
+}
+
 // Entering glass (front face) bends towards the normal with eta = 1/ior and starts below the
 // surface; leaving (back face) uses eta = ior.
 TEST_F(Secondary, EnteringAndLeaving) {

@@ -262,6 +262,15 @@ TEST_F(Indirect, AmbientOcclusionUnderACeiling) {
             << "nothing to occlude";
 }
 
+// Motion blur: a sampled ray sees the scene at the time of the point it leaves.
+TEST_F(Indirect, CosineRaysKeepThePointsTime) {
+    SurfacePoint at = point_at(Vec3(0, 0, 0), Vec3(0, 1, 0));
+    at.time = 0.25f;
+    const Ray r = cosine_ray(at, at.normal, Vec2(0.3f, 0.6f));
+    EXPECT_EQ(r.time, at.time) << "make the ray with spawn_ray(at, at.normal, direction)";
+    EXPECT_EQ(r.origin, offset_ray_origin(at.point, at.error, at.normal, r.direction));
+}
+
 // Incoming radiance max(0, d.n) over a surface with normal n: the reflected light is
 // k_d / pi * integral of cos^2 over the hemisphere = 2/3 k_d. (Uniform hemisphere directions
 // weighted as if cosine-distributed give 1/2: the wrong pdf fails.)

@@ -221,7 +221,7 @@ TEST_F(Lens, ApertureZeroIsThePinhole) {
     }
 }
 
-TEST_F(Lens, ShutterTimesAreUniformAndSpheresMoveLinearly) {
+TEST_F(Lens, ShutterTimesAreUniform) {
     constexpr int kBins = 20;
     std::vector<double> observed(kBins, 0);
     stats::Uniform random(8);
@@ -233,10 +233,6 @@ TEST_F(Lens, ShutterTimesAreUniformAndSpheresMoveLinearly) {
     }
     stats::expect_chi_square(observed, std::vector<double>(kBins, double(kSamples) / kBins),
                              "shutter_time");
-    const Vec3 c = sphere_center_at(Vec3(1, 2, 3), Vec3(0.5f, 0, -1), 2);
-    EXPECT_NEAR(c.x, 2, 1e-6);
-    EXPECT_NEAR(c.y, 2, 1e-6);
-    EXPECT_NEAR(c.z, 1, 1e-6);
 }
 
 }  // namespace
