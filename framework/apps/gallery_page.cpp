@@ -223,8 +223,7 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
         const fs::path stage_out = out / stage.filename();
         fs::create_directories(stage_out);
         for (const fs::path& scene_file : scenes) {
-            Scene scene = load_scene(scene_file);
-            prepare_scene(scene);
+            const PreparedScene scene = prepare_scene(load_scene(scene_file));
             RenderOptions options;
             options.threads = threads;
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");

@@ -49,7 +49,8 @@ using namespace rt;
 namespace {
 
 // "X,Y" inside the image, or a usage error.
-std::pair<int, int> parse_pixel(const std::string& text, const char* option, const Scene& scene) {
+std::pair<int, int> parse_pixel(const std::string& text, const char* option,
+                                const PreparedScene& scene) {
     int x = -1, y = -1;
     char rest = 0;
     if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &rest) != 2 || x < 0 || y < 0 ||
@@ -66,7 +67,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // --debug-pixel: the CPU's ray tree (text or JSON), or with --gpu what the shader computed.
-std::string debug_pixel_text(const RenderArgs& args, const Scene& scene, RenderMode mode,
+std::string debug_pixel_text(const RenderArgs& args, const PreparedScene& scene, RenderMode mode,
                              const GpuRenderOptions& gpu, int x, int y) {
     if (args.gpu) {
         if (args.debug_format == "json")
@@ -101,8 +102,9 @@ int run_render(const RenderArgs& args) {
     if (args.uber && !args.gpu)
         throw std::runtime_error("rt: error: --uber chooses the GPU shader; add --gpu");
     if (!args.output.empty()) check_image_output(args.output);
-    Scene scene = load_scene(args.scene);
-    const AccelerationReport accel = prepare_scene(scene, overrides_of(args));
+    AccelerationReport accel;
+    const PreparedScene scene =
+        prepare_scene(load_scene(args.scene), overrides_of(args), {}, &accel);
     const RenderMode mode = args.mode.value_or(scene.mode);
     if (accel.built && !args.quiet)
         std::printf("BVH: %zu primitives, %zu nodes, depth %d, built in %.1f ms\n",
@@ -152,8 +154,8 @@ int run_compare(const std::string& actual, const std::string& reference, int tol
 }
 
 int run_info(const std::string& file) {
-    Scene scene = load_scene(file);
-    const AccelerationReport accel = prepare_scene(scene);
+    AccelerationReport accel;
+    const PreparedScene scene = prepare_scene(load_scene(file), {}, {}, &accel);
     std::printf(
         "%s\n  image %dx%d, mode %s\n  %zu spheres, %zu planes, %zu triangles (%zu "
         "vertices), %zu boxes\n  %zu materials, %zu lights\n  features: %s\n",
@@ -177,8 +179,7 @@ int run_info(const std::string& file) {
 // `rt export-shadertoy`: the scene and stages/09-gpu's GLSL as one Shadertoy fragment shader.
 int run_export_shadertoy(const std::string& file, const fs::path& output,
                          std::optional<RenderMode> mode) {
-    Scene scene = load_scene(file);
-    prepare_scene(scene);
+    const PreparedScene scene = prepare_scene(load_scene(file));
     const ShadertoyExport shader = export_shadertoy(scene, mode.value_or(scene.mode));
     std::ofstream out(output, std::ios::binary);
     if (!(out << shader.text))

@@ -12,7 +12,7 @@ glm::vec4 v4(const Vec3& v, float w = 0) {
 
 }  // namespace
 
-GpuScene pack_scene(const Scene& scene) {
+GpuScene pack_scene(const PreparedScene& scene) {
     GpuScene g;
     for (const Sphere& s : scene.spheres)
         g.spheres.push_back({v4(s.center, float(s.radius)), glm::ivec4(s.material, 0, 0, 0)});

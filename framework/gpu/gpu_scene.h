@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt::gpu {
 
@@ -159,6 +159,6 @@ struct GpuScene {
 std::vector<unsigned char> sampled_block(const GpuScene& scene, int area_slots, int moving_slots);
 
 // Every array of `scene`, converted to float and packed as above.
-GpuScene pack_scene(const Scene& scene);
+GpuScene pack_scene(const PreparedScene& scene);
 
 }  // namespace rt::gpu

@@ -8,6 +8,7 @@
 #include "render/gpu/gpu_cases.h"
 #include "render/gpu/gpu_render.h"
 #include "render/gpu/shadertoy_run.h"
+#include "render/prepare.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
 #include "render/sampled.h"

@@ -41,8 +41,10 @@ bool already_sent(std::uint64_t key);
 using Callback = std::function<void(Reader&, Writer&)>;
 std::uint32_t add_callback(Callback callback);
 
-// Worker side (worker_serve.cpp): the scene of handle `key`, decoded from `r` when `r` holds it.
-const Scene& held_scene(std::uint64_t key, bool in_request, Reader& r);
+// Worker side (worker_serve.cpp): the scene of handle `key`, decoded from `r` when `r` holds it;
+// a description (Scene) or a prepared scene, each kept apart.
+template <class S>
+const S& held_scene(std::uint64_t key, bool in_request, Reader& r);
 // Worker side: calls back the judge's callback `index` with `arguments`; returns its result.
 std::string call_judge(std::uint32_t index, const std::string& arguments);
 
@@ -104,9 +106,9 @@ struct Param<T*> : InOutPointer<T> {};
 
 // A scene crosses once per connection: afterwards by its hash (a test calls with one scene
 // thousands of times). The worker keeps what it was sent; it cannot change the judge's copy.
-template <>
-struct Input<Scene> {
-    static void send(Writer& w, const Scene& scene) {
+template <class S>  // Scene or PreparedScene
+struct SceneInput {
+    static void send(Writer& w, const S& scene) {
         Writer hash{Writer::HashOnly{}};
         put(hash, scene);
         const std::uint64_t key = hash.digest();
@@ -115,33 +117,37 @@ struct Input<Scene> {
         put(w, !held);
         if (!held) put(w, scene);
     }
-    static void receive(Reader&, const Scene&) {}
+    static void receive(Reader&, const S&) {}
     struct Holder {
-        const Scene* scene = nullptr;
+        const S* scene = nullptr;
         void read(Reader& r) {
             std::uint64_t key = 0;
             bool in_request = false;
             get(r, key);
             get(r, in_request);
-            scene = &held_scene(key, in_request, r);
+            scene = &held_scene<S>(key, in_request, r);
         }
-        const Scene& arg() { return *scene; }
+        const S& arg() { return *scene; }
         void write(Writer&) {}
     };
 };
+template <>
+struct Input<Scene> : SceneInput<Scene> {};
+template <>
+struct Input<PreparedScene> : SceneInput<PreparedScene> {};
 
 // A scene the function may change (build_acceleration) crosses in full, both ways.
 template <>
-struct InOut<Scene> {
-    static void send(Writer& w, const Scene& v) { put(w, v); }
-    static void receive(Reader& r, Scene& v) { get(r, v); }
+struct InOut<PreparedScene> {
+    static void send(Writer& w, const PreparedScene& v) { put(w, v); }
+    static void receive(Reader& r, PreparedScene& v) { get(r, v); }
     struct Holder {
-        Scene value;
+        PreparedScene value;
         void read(Reader& r) {
             get(r, value);
             load_texture_system(value);  // OpenImageIO's cannot cross (wire_types.cpp)
         }
-        Scene& arg() { return value; }
+        PreparedScene& arg() { return value; }
         void write(Writer& w) { put(w, value); }
     };
 };

@@ -97,8 +97,21 @@ void get(Reader& r, Owned<LightVisibility>& v) {
     v.view.per_light = v.data;
 }
 
-// sizeof(Scene) (with float) when its field list was written.
-static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 760,
+void put(Writer& w, const PreparedScene& v) {
+    put(w, static_cast<const Scene&>(v));
+    put(w, v.features);
+    put(w, v.bvh);
+}
+void get(Reader& r, PreparedScene& v) {
+    get(r, static_cast<Scene&>(v));
+    get(r, v.features);
+    get(r, v.bvh);
+}
+
+// sizeof(Scene) and sizeof(PreparedScene) (with float) when their field lists were written.
+static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 664,
               "Scene changed: add its new field to RT_WIRE_FIELDS(Scene) in wire_types.h");
+static_assert(sizeof(Real) != sizeof(float) || sizeof(PreparedScene) == 760,
+              "PreparedScene changed: add its new field to put/get(PreparedScene) above");
 
 }  // namespace rt::remote

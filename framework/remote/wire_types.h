@@ -16,7 +16,7 @@
 #include "render/ray_tree.h"
 #include "render/render.h"
 #include "render/shade.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 #include "stage_api/stage03.h"
 #include "stage_api/stage05.h"
 #include "stage_api/stage10.h"
@@ -84,8 +84,7 @@ RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambie
                v.max_depth, v.shadows, v.fresnel, v.accelerator, v.texture_lookup, v.spheres,
                v.planes, v.boxes, v.vertices, v.normals, v.uvs, v.triangles, v.materials,
                v.material_names, v.lights, v.area_lights, v.moving_spheres, v.sampling, v.fog,
-               v.textures, v.texture_names, v.texture_images, v.texels, v.environment, v.features,
-               v.bvh)
+               v.textures, v.texture_names, v.texture_images, v.texels, v.environment)
 #undef RT_WIRE_FIELDS
 
 template <class T>
@@ -109,6 +108,11 @@ void get(Reader& r, T& v) {
     std::apply([&](auto&... field) { (get(r, field), ...); }, wire_fields(v));
     check_decoded(r, v);
 }
+
+// A prepared scene: its description, then what prepare_scene built but the OpenImageIO texture
+// system, which the worker loads anew (load_texture_system).
+void put(Writer& w, const PreparedScene& v);
+void get(Reader& r, PreparedScene& v);
 
 // A render's options without its cancel flag (nothing in a test cancels across processes).
 void put(Writer& w, const RenderOptions& v);

@@ -17,7 +17,6 @@ namespace rt::remote {
 namespace {
 
 int g_fd = -1;
-std::map<std::uint64_t, std::unique_ptr<Scene>> g_scenes;
 
 using Handler = void (*)(Reader&, Writer&);
 
@@ -67,16 +66,20 @@ std::string serve_one(const std::string& request) {
 
 }  // namespace
 
-const Scene& held_scene(std::uint64_t key, bool in_request, Reader& r) {
-    auto& held = g_scenes[key];
+template <class S>
+const S& held_scene(std::uint64_t key, bool in_request, Reader& r) {
+    static std::map<std::uint64_t, std::unique_ptr<S>> scenes;
+    auto& held = scenes[key];
     if (in_request) {
-        held = std::make_unique<Scene>();
+        held = std::make_unique<S>();
         get(r, *held);
-        load_texture_system(*held);
+        if constexpr (std::is_same_v<S, PreparedScene>) load_texture_system(*held);
     }
     if (!held) throw RemoteError("the judge named a scene the worker does not hold");
     return *held;
 }
+template const Scene& held_scene<Scene>(std::uint64_t, bool, Reader&);
+template const PreparedScene& held_scene<PreparedScene>(std::uint64_t, bool, Reader&);
 
 std::string call_judge(std::uint32_t index, const std::string& arguments) {
     Writer w;

@@ -8,7 +8,7 @@
 
 namespace rt {
 
-AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options) {
+AccelerationReport build_acceleration(PreparedScene& scene, const BvhBuildOptions& options) {
     AccelerationReport report;
     scene.bvh = Bvh{};
     if (scene.accelerator != Accelerator::Bvh) return report;

@@ -24,7 +24,7 @@ struct AccelerationReport {
 // scene.accelerator becomes None, and rendering uses stage 02's loop (same image, slower).
 // A stubbed build_bvh leaves the scene asking for a tree it has not got: nearest_hit then counts
 // every query as a stub call, so the image is magenta at once, like any other stub.
-AccelerationReport build_acceleration(Scene& scene, const BvhBuildOptions& options = {});
+AccelerationReport build_acceleration(PreparedScene& scene, const BvhBuildOptions& options = {});
 
 // The renderer's nearest-hit query, nearest_hit, is in stage_api/stage06.h: the stage 04 and 10
 // student code traces its rays through it too.

@@ -4,7 +4,7 @@
 
 namespace rt {
 
-Color background(const Scene& scene, const Vec3& direction) {
+Color background(const PreparedScene& scene, const Vec3& direction) {
     if (!scene.features.environment) return scene.background;
     return environment_radiance(scene, direction);
 }

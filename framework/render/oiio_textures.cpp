@@ -21,7 +21,7 @@ std::runtime_error failure(const std::string& why) {
 
 }  // namespace
 
-OiioTextures::OiioTextures(const Scene& scene, bool anisotropic)
+OiioTextures::OiioTextures(const PreparedScene& scene, bool anisotropic)
     : anisotropic_(anisotropic ? kMaxAnisotropy : 0) {
     const image_files::OiioPlugin& plugin = image_files::oiio_plugin();
     if (!plugin.textures_create) throw failure("needs " + plugin.problem);
@@ -76,7 +76,7 @@ Color OiioTextures::lookup(std::size_t texture, Vec2 uv, const TexcoordDerivativ
     return Color(rgb[0], rgb[1], rgb[2]);
 }
 
-void use_oiio_textures(Scene& scene, bool anisotropic) {
+void use_oiio_textures(PreparedScene& scene, bool anisotropic) {
     scene.oiio_textures = std::make_shared<const OiioTextures>(scene, anisotropic);
     scene.texture_lookup = anisotropic ? TextureLookup::OiioAniso : TextureLookup::Oiio;
 }

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 struct RtOiioTextures;
 
@@ -29,7 +29,7 @@ class OiioTextures {
     // Mip-maps every image texture of `scene` (sRGB ones decoded to linear first, since averaging
     // encoded values darkens edges). Throws std::runtime_error, one line, when the plug-in is
     // missing or OpenImageIO fails.
-    OiioTextures(const Scene& scene, bool anisotropic);
+    OiioTextures(const PreparedScene& scene, bool anisotropic);
     ~OiioTextures();
     OiioTextures(const OiioTextures&) = delete;
     OiioTextures& operator=(const OiioTextures&) = delete;
@@ -48,6 +48,6 @@ class OiioTextures {
 
 // Sets scene.texture_lookup to Oiio (or OiioAniso) and builds scene.oiio_textures. Throws
 // std::runtime_error naming --texture-filter when the plug-in cannot be loaded.
-void use_oiio_textures(Scene& scene, bool anisotropic);
+void use_oiio_textures(PreparedScene& scene, bool anisotropic);
 
 }  // namespace rt

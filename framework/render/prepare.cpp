@@ -21,7 +21,7 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
 
 }  // namespace
 
-void load_texture_system(Scene& scene) {
+void load_texture_system(PreparedScene& scene) {
     // OpenImageIO's TextureSystem (and the plug-in) are loaded only when asked for, once.
     const TextureLookup lookup = scene.texture_lookup;
     if ((lookup == TextureLookup::Oiio || lookup == TextureLookup::OiioAniso) &&
@@ -29,12 +29,15 @@ void load_texture_system(Scene& scene) {
         use_oiio_textures(scene, lookup == TextureLookup::OiioAniso);
 }
 
-AccelerationReport prepare_scene(Scene& scene, const SceneOverrides& overrides,
-                                 const BvhBuildOptions& bvh_options) {
-    apply_overrides(scene, overrides);
+PreparedScene prepare_scene(Scene description, const SceneOverrides& overrides,
+                            const BvhBuildOptions& bvh_options, AccelerationReport* acceleration) {
+    apply_overrides(description, overrides);
+    PreparedScene scene{std::move(description), {}, {}, {}};
     load_texture_system(scene);
-    scene.update_features();
-    return build_acceleration(scene, bvh_options);
+    refresh_features(scene);
+    const AccelerationReport report = build_acceleration(scene, bvh_options);
+    if (acceleration) *acceleration = report;
+    return scene;
 }
 
 }  // namespace rt

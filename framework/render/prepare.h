@@ -1,12 +1,13 @@
 // A loaded scene made ready to render, in one place for every program: `rt render`, `rt info`,
 // `rt gallery`, `rt export-shadertoy`, the image tests and the benchmarks.
 //
-// load_scene (scene/scene_loader.h) gives the description as the file says it. prepare_scene
-// then, in this order:
-//   1. applies the overrides (a command line's options, the grader's unseen views);
+// load_scene (scene/scene_loader.h) gives the description as the file says it (a Scene).
+// prepare_scene makes the PreparedScene everything renders (scene/prepared_scene.h), in order:
+//   1. applies the overrides to the description (a command line's options, the grader's unseen
+//      views);
 //   2. loads OpenImageIO's texture system when the texture lookup asks for it;
-//   3. works out what the renderer must model (Scene::update_features), after the overrides,
-//      which can switch shadows, bounces or samples;
+//   3. works out what the renderer must model (scene_features), after the overrides, which can
+//      switch shadows, bounces or samples;
 //   4. builds stage 06's BVH when the scene asks for one (build_acceleration).
 // The viewer keeps its own copies of a scene (view/view_settings.h) but makes each through this
 // function too.
@@ -16,7 +17,7 @@
 #include <optional>
 
 #include "render/accelerate.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -34,10 +35,12 @@ struct SceneOverrides {
 
 // Step 2 alone, for a scene that arrives prepared (the grading worker's, framework/remote/):
 // OpenImageIO's texture system when the scene's lookup asks for it and it is not loaded yet.
-void load_texture_system(Scene& scene);
+void load_texture_system(PreparedScene& scene);
 
-// Steps 1-4 above. Throws std::runtime_error when OpenImageIO's plug-in cannot be loaded.
-AccelerationReport prepare_scene(Scene& scene, const SceneOverrides& overrides = {},
-                                 const BvhBuildOptions& bvh_options = {});
+// Steps 1-4 above. `acceleration`, when given, receives step 4's report. Throws
+// std::runtime_error when OpenImageIO's plug-in cannot be loaded.
+PreparedScene prepare_scene(Scene description, const SceneOverrides& overrides = {},
+                            const BvhBuildOptions& bvh_options = {},
+                            AccelerationReport* acceleration = nullptr);
 
 }  // namespace rt

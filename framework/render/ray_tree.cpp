@@ -42,7 +42,7 @@ std::string fmt(const V& v) {
     return buf;
 }
 
-json node_json(const Scene& scene, const RayNode& n) {
+json node_json(const PreparedScene& scene, const RayNode& n) {
     json j;
     j["kind"] = to_string(n.kind);
     j["depth"] = n.depth;
@@ -86,7 +86,7 @@ json node_json(const Scene& scene, const RayNode& n) {
     return j;
 }
 
-void node_text(const Scene& scene, const RayNode& n, int indent, std::string& out) {
+void node_text(const PreparedScene& scene, const RayNode& n, int indent, std::string& out) {
     const std::string pad(std::size_t(indent) * 2, ' ');
     out += pad + to_string(n.kind) + " ray (depth " + std::to_string(n.depth) + ") from " +
            fmt(n.ray.origin) + " dir " + fmt(n.ray.direction) + ", weight " + fmt(n.weight) + "\n";
@@ -143,7 +143,7 @@ void plot(Image& image, int x, int y, const Color& c) {
 }
 
 // A 3D segment, clipped in front of a perspective camera, projected and drawn.
-void draw_segment(const Scene& scene, Vec3 a, Vec3 b, const Color& color, Image& image) {
+void draw_segment(const PreparedScene& scene, Vec3 a, Vec3 b, const Color& color, Image& image) {
     const Camera& cam = scene.camera;
     if (cam.projection == Projection::Perspective) {
         const Real near = Real(1e-3);
@@ -165,7 +165,7 @@ void draw_segment(const Scene& scene, Vec3 a, Vec3 b, const Color& color, Image&
     }
 }
 
-void draw_node(const Scene& scene, const RayNode& n, Real far, Image& image) {
+void draw_node(const PreparedScene& scene, const RayNode& n, Real far, Image& image) {
     static const Color kCamera{1, 0, 0}, kShadow{1, 0, 1}, kReflection{0, 0, 1},
         kRefraction{1, 1, 0};
     const Color color = n.kind == RayNode::Kind::Camera       ? kCamera
@@ -183,7 +183,7 @@ void draw_node(const Scene& scene, const RayNode& n, Real far, Image& image) {
 
 }  // namespace
 
-std::string primitive_name(const Scene& scene, int id) {
+std::string primitive_name(const PreparedScene& scene, int id) {
     if (!scene.is_primitive(id)) return "none";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(id, index);
@@ -191,20 +191,20 @@ std::string primitive_name(const Scene& scene, int id) {
            std::to_string(id) + ")";
 }
 
-std::string material_name(const Scene& scene, int m) {
+std::string material_name(const PreparedScene& scene, int m) {
     if (m < 0 || std::size_t(m) >= scene.materials.size()) return "?";
     const std::string& name = scene.material_name(m);
     return name.empty() ? "#" + std::to_string(m) : "\"" + name + "\"";
 }
 
-PixelTree debug_pixel(const Scene& scene, int x, int y) {
+PixelTree debug_pixel(const PreparedScene& scene, int x, int y) {
     PixelTree tree;
     tree.x = x, tree.y = y;
     tree.color = shade_pixel(scene, x, y, &tree.root);
     return tree;
 }
 
-std::string ray_tree_text(const Scene& scene, const PixelTree& tree) {
+std::string ray_tree_text(const PreparedScene& scene, const PixelTree& tree) {
     std::string out =
         "pixel (" + std::to_string(tree.x) + ", " + std::to_string(tree.y) + "): colour " +
         fmt(tree.color) + " (linear), max_depth " + std::to_string(scene.max_depth) +
@@ -213,7 +213,7 @@ std::string ray_tree_text(const Scene& scene, const PixelTree& tree) {
     return out;
 }
 
-std::string ray_tree_json(const Scene& scene, const PixelTree& tree) {
+std::string ray_tree_json(const PreparedScene& scene, const PixelTree& tree) {
     json j;
     j["pixel"] = {tree.x, tree.y};
     j["color"] = array3(tree.color);
@@ -224,7 +224,7 @@ std::string ray_tree_json(const Scene& scene, const PixelTree& tree) {
     return j.dump(2);
 }
 
-std::optional<Vec2> project_to_image(const Scene& scene, const Vec3& point) {
+std::optional<Vec2> project_to_image(const PreparedScene& scene, const Vec3& point) {
     const Camera& cam = scene.camera;
     const Vec3 q = point - cam.eye;
     const Real xc = glm::dot(q, cam.u), yc = glm::dot(q, cam.v), zc = -glm::dot(q, cam.w);
@@ -239,7 +239,7 @@ std::optional<Vec2> project_to_image(const Scene& scene, const Vec3& point) {
                 (1 - yc / zc / tan_half) * Real(0.5) * h);
 }
 
-void draw_ray_tree(const Scene& scene, const PixelTree& tree, Image& image) {
+void draw_ray_tree(const PreparedScene& scene, const PixelTree& tree, Image& image) {
     // A ray that misses is drawn to a distance well beyond the scene's camera.
     const Real far = 1000 * std::max(Real(1), glm::length(scene.camera.eye));
     draw_node(scene, tree.root, far, image);

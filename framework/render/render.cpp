@@ -48,7 +48,7 @@ struct PixelResult {
     Real measure = -1;  // < 0: nothing to map (a miss)
 };
 
-PixelResult render_pixel(const Scene& scene, RenderMode mode, int x, int y) {
+PixelResult render_pixel(const PreparedScene& scene, RenderMode mode, int x, int y) {
     PixelResult out;
     if (mode == RenderMode::Shaded) {
         out.color = shade_pixel(scene, x, y);
@@ -139,7 +139,7 @@ int resolve_thread_count(int threads) {
     return default_thread_count();
 }
 
-Image render(const Scene& scene, RenderMode mode, const RenderOptions& options) {
+Image render(const PreparedScene& scene, RenderMode mode, const RenderOptions& options) {
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw std::runtime_error(
             scene.source +

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -25,7 +25,7 @@ struct RenderOptions {
 // Debug modes (directions, normals, depth, primitive) store the visualised value so that the PNG
 // holds it directly: 8-bit value = round(255 * value).
 // A pixel whose computation reached a stub (RT_NOT_IMPLEMENTED) is painted magenta.
-Image render(const Scene& scene, RenderMode mode, const RenderOptions& options = {});
+Image render(const PreparedScene& scene, RenderMode mode, const RenderOptions& options = {});
 
 // The number of threads `threads` means (0 → hardware concurrency, at least 1).
 int resolve_thread_count(int threads);

@@ -24,7 +24,7 @@ Real SampleStream::next() {
     return Real(rng_() >> (32 - kBits)) * (Real(1) / Real(std::uint64_t(1) << kBits));
 }
 
-Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* observer) {
+Color sample_pixel(const PreparedScene& scene, int x, int y, int sample, TraceObserver* observer) {
     const SamplingSettings& settings = scene.sampling;
     SampleStream stream(settings.seed, std::uint64_t(y) * std::uint64_t(scene.image.width) + x,
                         std::uint64_t(sample));
@@ -42,7 +42,7 @@ Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* 
     return trace_sample(scene, ray, stream, observer);
 }
 
-Color shade_sampled_pixel(const Scene& scene, int x, int y) {
+Color shade_sampled_pixel(const PreparedScene& scene, int x, int y) {
     const int count = scene.sampling.samples_per_pixel;
     Color sum(0);
     for (int s = 0; s < count; ++s) sum += sample_pixel(scene, x, y, s);

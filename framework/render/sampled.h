@@ -13,7 +13,7 @@
 
 #include <pcg_random.hpp>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -34,9 +34,10 @@ class TraceObserver;  // render/shade.h
 
 // Camera sample `sample` of pixel (x, y): the jittered, filtered image point, the thin-lens ray
 // and the shutter time, traced (linear RGB). `observer`, if given, sees its ray tree.
-Color sample_pixel(const Scene& scene, int x, int y, int sample, TraceObserver* observer = nullptr);
+Color sample_pixel(const PreparedScene& scene, int x, int y, int sample,
+                   TraceObserver* observer = nullptr);
 
 // The mean of the pixel's scene.sampling.samples_per_pixel samples, summed in sample order.
-Color shade_sampled_pixel(const Scene& scene, int x, int y);
+Color shade_sampled_pixel(const PreparedScene& scene, int x, int y);
 
 }  // namespace rt

@@ -57,7 +57,7 @@ const SecondaryRay& branch(const Frame& f, int i) {
 // others get 0, which their zero term ignores. With a BVH and nothing transparent, a shadow ray
 // only asks whether anything is in the way: stage 06's any-hit query, which gives what
 // light_transmittance would, faster.
-void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& material,
+void shadow_lights(const PreparedScene& scene, const SurfacePoint& at, const Material& material,
                    const Vec3& normal, const Vec3& to_viewer, std::vector<Color>& visibility,
                    TraceObserver* observer) {
     const bool any_hit_shadows = uses_bvh(scene) && !scene.features.refraction;
@@ -82,7 +82,8 @@ void shadow_lights(const Scene& scene, const SurfacePoint& at, const Material& m
 
 // Stage 10's fog (optional): each light's visibility from `at` times the fraction of its light
 // that crosses the fog on the way (stage 10's medium_transmittance along the shadow ray).
-void attenuate_by_fog(const Scene& scene, const SurfacePoint& at, std::vector<Color>& visibility) {
+void attenuate_by_fog(const PreparedScene& scene, const SurfacePoint& at,
+                      std::vector<Color>& visibility) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         if (visibility[i] == Color(0)) continue;
         const ShadowRay shadow = shadow_ray(at, illuminate(scene.lights[i], at.point));
@@ -96,7 +97,7 @@ void attenuate_by_fog(const Scene& scene, const SurfacePoint& at, std::vector<Co
 // every direction. A light of stage 03 intensity I gives the irradiance pi I (conventions:
 // sampling), and the phase function 1 / (4 pi) turns it into the radiance I / 4; the fog's
 // albedo is the part scattered. Draws no random numbers.
-Color fog_scattering(const Scene& scene, const Vec3& point) {
+Color fog_scattering(const PreparedScene& scene, const Vec3& point) {
     SurfacePoint at;  // no surface: zero error and normal, so shadow rays start at the point
     at.point = point;
     Color sum(0);
@@ -121,8 +122,8 @@ struct PreparedHit {
     Vec3 to_viewer{0};
 };
 
-void prepare_hit(const Scene& scene, const Ray& ray, const Hit& hit, const RayDifferential* rays,
-                 PreparedHit& p) {
+void prepare_hit(const PreparedScene& scene, const Ray& ray, const Hit& hit,
+                 const RayDifferential* rays, PreparedHit& p) {
     // A scene built in code may lack materials; an out-of-range index must not crash.
     static const Material kDefaultMaterial;
     const bool known = hit.material >= 0 && std::size_t(hit.material) < scene.materials.size();
@@ -150,13 +151,14 @@ void prepare_hit(const Scene& scene, const Ray& ray, const Hit& hit, const RayDi
     }
 }
 
-Color sampled_light(const Scene& scene, const PreparedHit& p, SampleStream& stream, bool indirect);
+Color sampled_light(const PreparedScene& scene, const PreparedHit& p, SampleStream& stream,
+                    bool indirect);
 
 // The light a hit sends back along its ray, before reflected and refracted rays: direct light
 // (stage 03) with stage 04's shadows when the scene has them, and with a sampler (stage 10)
 // the area lights, ambient occlusion and, if `indirect`, one bounce of diffuse light, which
 // replace the ambient term as the scene says.
-Color local_light(const Scene& scene, const PreparedHit& p, TraceObserver* observer,
+Color local_light(const PreparedScene& scene, const PreparedHit& p, TraceObserver* observer,
                   SampleStream* stream, bool indirect) {
     const Material* material = p.material;
     Material without_ambient;
@@ -188,7 +190,8 @@ Color local_light(const Scene& scene, const PreparedHit& p, TraceObserver* obser
 // without a further bounce, or the background).
 class BounceRadiance : public IncomingRadiance {
   public:
-    BounceRadiance(const Scene& scene, SampleStream& stream) : scene_(scene), stream_(stream) {}
+    BounceRadiance(const PreparedScene& scene, SampleStream& stream)
+        : scene_(scene), stream_(stream) {}
     Color operator()(const Ray& ray) const override {
         Hit hit;
         if (!nearest_hit(scene_, ray, Interval{0, kInfinity}, hit))
@@ -199,13 +202,14 @@ class BounceRadiance : public IncomingRadiance {
     }
 
   private:
-    const Scene& scene_;
+    const PreparedScene& scene_;
     SampleStream& stream_;
 };
 
 // Stage 10's sampled terms, each drawing its numbers from `stream` in this order: one 2D
 // sample per area light, then ambient occlusion, then the indirect bounce.
-Color sampled_light(const Scene& scene, const PreparedHit& p, SampleStream& stream, bool indirect) {
+Color sampled_light(const PreparedScene& scene, const PreparedHit& p, SampleStream& stream,
+                    bool indirect) {
     const Material& material = *p.material;
     Color sum(0);
     for (const AreaLight& light : scene.area_lights)
@@ -235,7 +239,7 @@ void make_glossy(const SurfacePoint& at, Real fuzz, SecondaryRay& reflected, Sam
 // A frame's own work: the nearest hit, its local light, and the secondary rays (stage 05) when
 // the material reflects or transmits. `rays`: the camera ray's differentials (texture filter
 // footprints), null for other rays. `stream`: the camera sample's numbers (stage 10), or null.
-void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
+void start_frame(const PreparedScene& scene, Frame& f, TraceObserver* observer,
                  const RayDifferential* rays = nullptr, SampleStream* stream = nullptr) {
     Hit hit;
     const bool found = nearest_hit(scene, f.ray, Interval{0, kInfinity}, hit);
@@ -276,7 +280,7 @@ void start_frame(const Scene& scene, Frame& f, TraceObserver* observer,
 // Builds the debugger's ray tree from what the loop reports.
 class RayTreeRecorder : public TraceObserver {
   public:
-    RayTreeRecorder(const Scene& scene, RayNode& root) : scene_(scene), root_(root) {}
+    RayTreeRecorder(const PreparedScene& scene, RayNode& root) : scene_(scene), root_(root) {}
     void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,
                    const Color& weight) override {
         RayNode* node = open_.empty() ? &root_ : &open_.back()->children.emplace_back();
@@ -309,7 +313,7 @@ class RayTreeRecorder : public TraceObserver {
     void end_ray() override { open_.pop_back(); }
 
   private:
-    const Scene& scene_;
+    const PreparedScene& scene_;
     RayNode& root_;
     std::vector<RayNode*> open_;  // the rays begun and not ended: a path from the root
 };
@@ -318,7 +322,7 @@ class RayTreeRecorder : public TraceObserver {
 
 namespace {
 
-Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+Color trace(const PreparedScene& scene, const Ray& ray, int depth, const Color& weight,
             TraceObserver* observer, const RayDifferential* rays, SampleStream* stream = nullptr) {
     // Once per thread: constructing 65 frames per pixel would cost more than most pixels do.
     static thread_local Frame stack[kMaxTraceDepth + 1];
@@ -352,23 +356,24 @@ Color trace(const Scene& scene, const Ray& ray, int depth, const Color& weight,
 
 }  // namespace
 
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+Color trace_ray(const PreparedScene& scene, const Ray& ray, int depth, const Color& weight,
                 TraceObserver* observer) {
     return trace(scene, ray, depth, weight, observer, nullptr);
 }
 
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight) {
+Color trace_ray(const PreparedScene& scene, const Ray& ray, int depth, RayNode* node,
+                const Color& weight) {
     if (!node) return trace_ray(scene, ray, depth, weight, nullptr);
     RayTreeRecorder recorder(scene, *node);
     return trace_ray(scene, ray, depth, weight, &recorder);
 }
 
-Color trace_sample(const Scene& scene, const Ray& ray, SampleStream& stream,
+Color trace_sample(const PreparedScene& scene, const Ray& ray, SampleStream& stream,
                    TraceObserver* observer) {
     return trace(scene, ray, 0, Color(1), observer, nullptr, &stream);
 }
 
-Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree) {
+Color shade_pixel(const PreparedScene& scene, int x, int y, RayNode* tree) {
     // Stage 10: the debugger shows the first sample's rays (with moving spheres, the blockers
     // its shadow records name are looked up at time 0).
     if (scene.features.sampled()) {

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 #include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
@@ -70,22 +70,22 @@ inline constexpr int kMaxTraceDepth = 64;
 // bit-identical to the recursive form) and which a GLSL shader can mirror line for line.
 // Fills `node` (if given) with the ray tree below this ray, `weight` being the ray's weight in
 // the pixel.
-Color trace_ray(const Scene& scene, const Ray& ray, int depth = 0, RayNode* node = nullptr,
+Color trace_ray(const PreparedScene& scene, const Ray& ray, int depth = 0, RayNode* node = nullptr,
                 const Color& weight = Color(1));
 // The same loop reporting to any observer.
-Color trace_ray(const Scene& scene, const Ray& ray, int depth, const Color& weight,
+Color trace_ray(const PreparedScene& scene, const Ray& ray, int depth, const Color& weight,
                 TraceObserver* observer);
 
 class SampleStream;  // render/sampled.h
 
 // One camera sample's ray with stage 10's sampled terms, drawing from `stream`
 // (render/sampled.h; only for scenes with Features::sampled()).
-Color trace_sample(const Scene& scene, const Ray& ray, SampleStream& stream,
+Color trace_sample(const PreparedScene& scene, const Ray& ray, SampleStream& stream,
                    TraceObserver* observer = nullptr);
 
 // The shaded colour of pixel (x, y), linear RGB: one ray through its centre, or for a scene
 // with stage 10 features the mean of its samples (render/sampled.h).
-Color shade_pixel(const Scene& scene, int x, int y, RayNode* tree = nullptr);
+Color shade_pixel(const PreparedScene& scene, int x, int y, RayNode* tree = nullptr);
 
 const char* to_string(RayNode::Kind kind);
 

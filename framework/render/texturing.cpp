@@ -30,7 +30,7 @@ Vec3 noise_gradient(int x, int y, int z) {
     return directions[h % 12] * k;
 }
 
-Vec2 surface_texcoord(const Scene& scene, const Hit& hit, const SurfacePoint& at) {
+Vec2 surface_texcoord(const PreparedScene& scene, const Hit& hit, const SurfacePoint& at) {
     std::size_t i = 0;
     if (!scene.is_primitive(hit.primitive)) return Vec2(0);
     switch (scene.primitive_kind(hit.primitive, i)) {
@@ -61,7 +61,7 @@ Vec3 any_perpendicular(const Vec3& n) {
 
 }  // namespace
 
-Vec3 surface_tangent(const Scene& scene, const Hit& hit, const SurfacePoint& at) {
+Vec3 surface_tangent(const PreparedScene& scene, const Hit& hit, const SurfacePoint& at) {
     std::size_t i = 0;
     if (!scene.is_primitive(hit.primitive)) return any_perpendicular(at.normal);
     const Vec3 outward = at.front_face ? at.normal : -at.normal;
@@ -98,14 +98,14 @@ Vec3 surface_tangent(const Scene& scene, const Hit& hit, const SurfacePoint& at)
 
 namespace {
 
-bool oiio_lookup(const Scene& scene) {
+bool oiio_lookup(const PreparedScene& scene) {
     return (scene.texture_lookup == TextureLookup::Oiio ||
             scene.texture_lookup == TextureLookup::OiioAniso) &&
            scene.oiio_textures;
 }
 
 // The barycentrics (beta, gamma) of `p` (in the triangle's plane) in triangle i.
-Vec2 barycentrics(const Scene& scene, std::size_t i, const Vec3& p) {
+Vec2 barycentrics(const PreparedScene& scene, std::size_t i, const Vec3& p) {
     Vec3 p0, p1, p2;
     scene.triangle_vertices(i, p0, p1, p2);
     const Vec3 e1 = p1 - p0, e2 = p2 - p0, d = p - p0;
@@ -117,7 +117,7 @@ Vec2 barycentrics(const Scene& scene, std::size_t i, const Vec3& p) {
 }
 
 // uv at p', a point of the hit's tangent plane, and its difference from uv at the hit.
-Vec2 texcoord_step(const Scene& scene, const Hit& hit, const SurfacePoint& at, Vec2 uv,
+Vec2 texcoord_step(const PreparedScene& scene, const Hit& hit, const SurfacePoint& at, Vec2 uv,
                    const Ray& ray) {
     const Real facing = glm::dot(at.normal, ray.direction);
     if (std::abs(facing) < Real(1e-8)) return Vec2(0);
@@ -140,15 +140,15 @@ Vec2 texcoord_step(const Scene& scene, const Hit& hit, const SurfacePoint& at, V
 
 }  // namespace
 
-TexcoordDerivatives texcoord_derivatives(const Scene& scene, const Hit& hit, const SurfacePoint& at,
-                                         const RayDifferential& rays) {
+TexcoordDerivatives texcoord_derivatives(const PreparedScene& scene, const Hit& hit,
+                                         const SurfacePoint& at, const RayDifferential& rays) {
     TexcoordDerivatives d;
     d.dx = texcoord_step(scene, hit, at, at.texcoord, rays.x);
     d.dy = texcoord_step(scene, hit, at, at.texcoord, rays.y);
     return d;
 }
 
-Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const Vec3& point,
+Color evaluate_slot(const PreparedScene& scene, const TextureSlot& slot, Vec2 uv, const Vec3& point,
                     const TexcoordDerivatives& footprint) {
     if (!slot.used() || std::size_t(slot.texture) >= scene.textures.size()) return Color(1);
     const Texture& t = scene.textures[std::size_t(slot.texture)];
@@ -180,8 +180,9 @@ Color evaluate_slot(const Scene& scene, const TextureSlot& slot, Vec2 uv, const 
     return Color(1);
 }
 
-void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& at, const Vec3& to_viewer,
-                    Material& material, Vec3& lighting_normal, const RayDifferential* rays) {
+void apply_textures(const PreparedScene& scene, const Hit& hit, SurfacePoint& at,
+                    const Vec3& to_viewer, Material& material, Vec3& lighting_normal,
+                    const RayDifferential* rays) {
     at.texcoord = surface_texcoord(scene, hit, at);
     TexcoordDerivatives footprint;
     if (rays && oiio_lookup(scene)) footprint = texcoord_derivatives(scene, hit, at, *rays);

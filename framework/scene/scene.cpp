@@ -63,97 +63,10 @@ int Scene::add_texture_image(int width, int height, const std::vector<Color>& pi
     return int(texture_images.size()) - 1;
 }
 
-void Scene::update_features() {
-    Features f;
-    f.spheres = !spheres.empty();
-    f.planes = !planes.empty();
-    f.triangles = !triangles.empty();
-    f.boxes = !boxes.empty();
-    auto nonzero = [](const Color& c) { return c.r > 0 || c.g > 0 || c.b > 0; };
-    for (const Material& m : materials) {
-        f.ambient |= nonzero(m.ambient) && nonzero(ambient_light);
-        f.diffuse |= nonzero(m.diffuse);
-        f.specular |= nonzero(m.specular);
-        f.emissive |= nonzero(m.emissive);
-        f.reflection |= nonzero(m.reflective);
-        f.refraction |= nonzero(m.transmissive);
-        f.textures |= m.diffuse_map.used() || m.specular_map.used() || m.emissive_map.used();
-        f.normal_maps |= m.normal_map.used();
-        for (const TextureSlot* slot :
-             {&m.diffuse_map, &m.specular_map, &m.emissive_map, &m.normal_map}) {
-            if (!slot->used() || std::size_t(slot->texture) >= textures.size()) continue;
-            switch (textures[std::size_t(slot->texture)].kind) {
-                case TextureKind::Image:
-                    f.image_textures = true;
-                    break;
-                case TextureKind::Checker2D:
-                case TextureKind::Checker3D:
-                    f.checker_textures = true;
-                    break;
-                case TextureKind::Marble:
-                    f.noise_textures = true;
-                    break;
-            }
-        }
-    }
-    for (const Light& l : lights) {
-        f.point_lights |= l.kind == LightKind::Point;
-        f.directional_lights |= l.kind == LightKind::Directional;
-    }
-    f.shadows = shadows && !lights.empty();
-    f.environment = environment.kind != EnvironmentKind::None;
-    f.antialiasing = sampling.samples_per_pixel > 1;
-    f.area_lights = !area_lights.empty();
-    f.depth_of_field = sampling.aperture > 0 && camera.projection == Projection::Perspective;
-    for (const MovingSphere& m : moving_spheres)
-        f.motion_blur |= m.velocity != Vec3(0) && sampling.shutter_close > sampling.shutter_open;
-    for (const Material& m : materials) f.glossy |= m.fuzz > 0 && nonzero(m.reflective);
-    f.ambient_occlusion = sampling.indirect == IndirectLight::Occlusion && f.ambient;
-    f.indirect_diffuse = sampling.indirect == IndirectLight::Diffuse;
-    f.fog = fog.density > 0;
-    features = f;
-}
-
 Vec3 Scene::moved_center(std::size_t i, Real time) const {
     for (const MovingSphere& m : moving_spheres)
         if (m.sphere == i) return spheres[i].center + time * m.velocity;
     return spheres[i].center;
-}
-
-std::string Features::describe() const {
-    std::string s;
-    auto add = [&s](bool on, const char* name) {
-        if (!on) return;
-        if (!s.empty() && s.back() != ' ') s += ' ';
-        s += name;
-    };
-    add(spheres, "spheres"), add(planes, "planes"), add(triangles, "triangles"),
-        add(boxes, "boxes");
-    s += " |";
-    add(ambient, "ambient"), add(diffuse, "diffuse"), add(specular, "specular");
-    add(emissive, "emissive"), add(reflection, "reflection"), add(refraction, "refraction");
-    s += " |";
-    add(point_lights, "point"), add(directional_lights, "directional");
-    add(shadows, "shadows");
-    if (textures || normal_maps) {
-        s += " |";
-        add(textures, "textures"), add(normal_maps, "normal-maps");
-        std::string kinds;  // e.g. " (images checkers)"
-        for (auto [on, name] : {std::pair{image_textures, "images"},
-                                {checker_textures, "checkers"},
-                                {noise_textures, "noise"}})
-            if (on) kinds += std::string(kinds.empty() ? " (" : " ") + name;
-        if (!kinds.empty()) s += kinds + ")";
-    }
-    if (environment) s += " | environment";
-    if (sampled()) {
-        s += " | sampled:";
-        add(antialiasing, "antialiasing"), add(area_lights, "area-lights");
-        add(depth_of_field, "depth-of-field"), add(motion_blur, "motion-blur");
-        add(glossy, "glossy"), add(ambient_occlusion, "ambient-occlusion");
-        add(indirect_diffuse, "indirect-diffuse"), add(fog, "fog");
-    }
-    return s;
 }
 
 Interval medium_interval(const Medium& medium, const Ray& ray, Interval range) {

@@ -14,7 +14,6 @@
 #include <type_traits>
 #include <vector>
 
-#include "accel/bvh.h"
 #include "camera/camera.h"
 #include "scene/environment.h"
 #include "scene/texture.h"
@@ -132,39 +131,11 @@ struct Medium {
 // misses it. Framework code, given to stage 10's fog functions.
 Interval medium_interval(const Medium& medium, const Ray& ray, Interval range);
 
-// What a scene actually contains, so the renderer (and later the shader) computes only that.
 // The per-primitive, material and light records are plain data: copied to the GPU as they are
 // (after packing, framework/gpu/gpu_scene.h), so no strings or pointers inside.
 static_assert(std::is_trivially_copyable_v<Sphere> && std::is_trivially_copyable_v<Plane> &&
               std::is_trivially_copyable_v<Box> && std::is_trivially_copyable_v<Triangle> &&
               std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Light>);
-
-struct Features {
-    bool spheres = false, planes = false, triangles = false, boxes = false;
-    bool ambient = false, diffuse = false, specular = false, emissive = false;
-    bool reflection = false, refraction = false;
-    bool point_lights = false, directional_lights = false;
-    bool shadows = false;      // the scene asks for shadows and has lights
-    bool textures = false;     // a material has a diffuse, specular or emissive map (stage 07)
-    bool normal_maps = false;  // a material has a normal map (stage 07)
-    // The kinds of texture the slots use (what a shader must compile): images, the two
-    // checkerboards, marble (gradient noise).
-    bool image_textures = false, checker_textures = false, noise_textures = false;
-    bool environment = false;  // rays that miss look up an environment map (stage 08)
-    // Stage 10; any of them makes the renderer take several samples per pixel through stage 10
-    // code (render/sampled.h); without them that code is never called.
-    bool antialiasing = false;  // samples_per_pixel > 1
-    bool area_lights = false, depth_of_field = false, motion_blur = false, glossy = false;
-    bool ambient_occlusion = false, indirect_diffuse = false;
-    bool fog = false;  // a medium of density > 0 (optional part of stage 10)
-
-    bool sampled() const {
-        return antialiasing || area_lights || depth_of_field || motion_blur || glossy ||
-               ambient_occlusion || indirect_diffuse || fog;
-    }
-
-    std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"
-};
 
 enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded, BvhVisits };
 inline constexpr int kRenderModeCount = int(RenderMode::BvhVisits) + 1;
@@ -173,8 +144,9 @@ inline constexpr int kRenderModeCount = int(RenderMode::BvhVisits) + 1;
 // BVH (built once after loading, by build_acceleration in render/accelerate.h).
 enum class Accelerator { None, Bvh };
 
-class OiioTextures;  // render/oiio_textures.h
-
+// A scene as its file describes it (scene/scene_loader.h), or as a program or test builds it.
+// Rendering needs more, built from it in one place: prepare_scene (render/prepare.h) makes a
+// PreparedScene (scene/prepared_scene.h) with the features, the BVH and the texture system.
 struct Scene {
     std::string source;  // the file it was loaded from, for messages
     Camera camera;
@@ -187,8 +159,6 @@ struct Scene {
     bool fresnel = false;    // Schlick-weighted reflection on transmissive materials (stage 05)
     Accelerator accelerator = Accelerator::None;
     TextureLookup texture_lookup = TextureLookup::PerTexture;  // stage 07
-    // The TextureSystem of TextureLookup::Oiio/OiioAniso (use_oiio_textures fills it).
-    std::shared_ptr<const OiioTextures> oiio_textures;
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
@@ -222,9 +192,6 @@ struct Scene {
     // Stage 08: what rays that hit nothing see when it is more than `background`. Its images are
     // entries of texture_images, stored linear (8-bit files decoded from sRGB on loading).
     Environment environment;
-
-    Features features;  // filled by update_features()
-    Bvh bvh;            // built by build_acceleration when accelerator == Bvh
 
     // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding
     // a kind renumbers nothing (and a shader decodes an id with a shift and a mask). Ids of one
@@ -270,7 +237,6 @@ struct Scene {
         c = vertices[triangles[i].v[2]];
     }
 
-    void update_features();
     // The centre of sphere i at `time` (sphere_at, when the scene has moving spheres).
     Vec3 moved_center(std::size_t i, Real time) const;
     // The texels of texture_images[i] (no bounds check).

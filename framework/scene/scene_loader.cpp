@@ -35,7 +35,6 @@ Scene SceneSections::load() {
     read_surfaces(root);
     read_lights(root);
     read_fog(root);
-    scene_.update_features();
     return std::move(scene_);
 }
 

@@ -26,7 +26,7 @@
 
 #define RT_STAGE04_CALLS(X) \
     X(ShadowRay, shadow_ray, (const SurfacePoint& at, const LightSample& sample), (at, sample)) \
-    X(Color, light_transmittance, (const Scene& scene, const SurfacePoint& at, const LightSample& sample), (scene, at, sample))
+    X(Color, light_transmittance, (const PreparedScene& scene, const SurfacePoint& at, const LightSample& sample), (scene, at, sample))
 
 #define RT_STAGE05_CALLS(X) \
     X(Vec3, reflect, (const Vec3& d, const Vec3& n), (d, n)) \
@@ -38,8 +38,8 @@
     X(SahSplit, find_sah_split, (const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end, const BvhBuildOptions& options), (prims, begin, end, options)) \
     X(void, build_bvh, (std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh& bvh), (prims, options, bvh)) \
     X(bool, intersect_node, (const BvhNode& node, const Ray& ray, const Vec3& inv_direction, Interval t_range, Real& t_entry), (node, ray, inv_direction, t_range, t_entry)) \
-    X(bool, bvh_intersect_nearest, (const Scene& scene, const Ray& ray, Interval t_range, Hit& hit, BvhStats* stats), (scene, ray, t_range, hit, stats)) \
-    X(bool, bvh_intersect_any, (const Scene& scene, const Ray& ray, Interval t_range, BvhStats* stats), (scene, ray, t_range, stats))
+    X(bool, bvh_intersect_nearest, (const PreparedScene& scene, const Ray& ray, Interval t_range, Hit& hit, BvhStats* stats), (scene, ray, t_range, hit, stats)) \
+    X(bool, bvh_intersect_any, (const PreparedScene& scene, const Ray& ray, Interval t_range, BvhStats* stats), (scene, ray, t_range, stats))
 
 #define RT_STAGE07_CALLS(X) \
     X(Vec2, sphere_texcoord, (const Vec3& outward_normal), (outward_normal)) \
@@ -80,10 +80,10 @@
     X(AreaSample, sample_sphere, (const AreaLight& light, const Vec3& from, Vec2 u), (light, from, u)) \
     X(Real, sphere_pdf, (const AreaLight& light, const Vec3& from, const Vec3& direction), (light, from, direction)) \
     X(LightSample, sample_area_light, (const AreaLight& light, const Vec3& point, Vec2 u), (light, point, u)) \
-    X(Color, area_light_estimate, (const Scene& scene, const Material& material, const SurfacePoint& at, const Vec3& normal, const Vec3& to_viewer, const AreaLight& light, Vec2 u), (scene, material, at, normal, to_viewer, light, u)) \
+    X(Color, area_light_estimate, (const PreparedScene& scene, const Material& material, const SurfacePoint& at, const Vec3& normal, const Vec3& to_viewer, const AreaLight& light, Vec2 u), (scene, material, at, normal, to_viewer, light, u)) \
     X(Vec3, glossy_direction, (const Vec3& mirror, Real fuzz, Vec2 u), (mirror, fuzz, u)) \
     X(Ray, cosine_ray, (const SurfacePoint& at, const Vec3& normal, Vec2 u), (at, normal, u)) \
-    X(Real, ambient_occlusion, (const Scene& scene, const SurfacePoint& at, const Vec3& normal, Real max_distance, Vec2 u), (scene, at, normal, max_distance, u)) \
+    X(Real, ambient_occlusion, (const PreparedScene& scene, const SurfacePoint& at, const Vec3& normal, Real max_distance, Vec2 u), (scene, at, normal, max_distance, u)) \
     X(Real, medium_transmittance, (const Medium& medium, const Ray& ray, Interval range), (medium, ray, range)) \
     X(FogEvent, sample_fog, (const Medium& medium, const Ray& ray, Real t_max, Real u), (medium, ray, t_max, u)) \
     X(Color, indirect_diffuse, (const SurfacePoint& at, const Vec3& normal, const Material& material, Vec2 u, const IncomingRadiance& incoming), (at, normal, material, u, incoming))
@@ -91,26 +91,27 @@
 // The framework functions of render/ that call student code and that tests call: each crosses
 // as one call (a whole render, a whole BVH build), never as one call per ray.
 #define RT_RENDER_CALLS(X) \
-    X(AccelerationReport, build_acceleration, (Scene& scene, const BvhBuildOptions& options), (scene, options)) \
+    X(PreparedScene, prepare_scene, (Scene description, const SceneOverrides& overrides, const BvhBuildOptions& bvh_options, AccelerationReport* acceleration), (description, overrides, bvh_options, acceleration)) \
+    X(AccelerationReport, build_acceleration, (PreparedScene& scene, const BvhBuildOptions& options), (scene, options)) \
     X(Ray, camera_ray, (const Camera& camera, Vec2 pixel, ImageSize size), (camera, pixel, size)) \
-    X(Image, render, (const Scene& scene, RenderMode mode, const RenderOptions& options), (scene, mode, options)) \
-    X(Color, shade_pixel, (const Scene& scene, int x, int y, RayNode* tree), (scene, x, y, tree)) \
-    X(Color, trace_ray, (const Scene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight), (scene, ray, depth, node, weight)) \
-    X(PixelTree, debug_pixel, (const Scene& scene, int x, int y), (scene, x, y)) \
-    X(std::string, ray_tree_text, (const Scene& scene, const PixelTree& tree), (scene, tree)) \
-    X(std::string, ray_tree_json, (const Scene& scene, const PixelTree& tree), (scene, tree)) \
-    X(void, draw_ray_tree, (const Scene& scene, const PixelTree& tree, Image& image), (scene, tree, image)) \
-    X(Color, background, (const Scene& scene, const Vec3& direction), (scene, direction)) \
-    X(Vec2, surface_texcoord, (const Scene& scene, const Hit& hit, const SurfacePoint& at), (scene, hit, at)) \
-    X(Color, sample_pixel, (const Scene& scene, int x, int y, int sample, TraceObserver* observer), (scene, x, y, sample, observer))
+    X(Image, render, (const PreparedScene& scene, RenderMode mode, const RenderOptions& options), (scene, mode, options)) \
+    X(Color, shade_pixel, (const PreparedScene& scene, int x, int y, RayNode* tree), (scene, x, y, tree)) \
+    X(Color, trace_ray, (const PreparedScene& scene, const Ray& ray, int depth, RayNode* node, const Color& weight), (scene, ray, depth, node, weight)) \
+    X(PixelTree, debug_pixel, (const PreparedScene& scene, int x, int y), (scene, x, y)) \
+    X(std::string, ray_tree_text, (const PreparedScene& scene, const PixelTree& tree), (scene, tree)) \
+    X(std::string, ray_tree_json, (const PreparedScene& scene, const PixelTree& tree), (scene, tree)) \
+    X(void, draw_ray_tree, (const PreparedScene& scene, const PixelTree& tree, Image& image), (scene, tree, image)) \
+    X(Color, background, (const PreparedScene& scene, const Vec3& direction), (scene, direction)) \
+    X(Vec2, surface_texcoord, (const PreparedScene& scene, const Hit& hit, const SurfacePoint& at), (scene, hit, at)) \
+    X(Color, sample_pixel, (const PreparedScene& scene, int x, int y, int sample, TraceObserver* observer), (scene, x, y, sample, observer))
 
 // Stage 09's: the framework functions that run the student's GLSL (render/gpu/gpu_render.h,
 // render/gpu/gpu_cases.h, render/gpu/shadertoy_run.h). A judge sends them to the worker too, so it links
 // no GPU renderer and runs no GLSL.
 #define RT_GPU_CALLS(X) \
-    X(Image, render_gpu, (const Scene& scene, RenderMode mode, const GpuRenderOptions& options), (scene, mode, options)) \
+    X(Image, render_gpu, (const PreparedScene& scene, RenderMode mode, const GpuRenderOptions& options), (scene, mode, options)) \
     X(bool, run_gpu_cases, (const std::vector<gpu_cases::GpuRayCase>& cases, std::vector<gpu_cases::GpuAnswer>& answers, std::string& error), (cases, answers, error)) \
-    X(ShadertoyRun, run_shadertoy_export, (const Scene& scene, RenderMode mode), (scene, mode))
+    X(ShadertoyRun, run_shadertoy_export, (const PreparedScene& scene, RenderMode mode), (scene, mode))
 
 #define RT_ALL_CALLS(X) \
     RT_STAGE01_CALLS(X) RT_STAGE02_CALLS(X) RT_STAGE03_CALLS(X) RT_STAGE04_CALLS(X) \

@@ -3,6 +3,7 @@
 // Where rays start: framework/geometry/offset.h (docs/conventions.md#secondary-ray-origins).
 #pragma once
 
+#include "scene/prepared_scene.h"
 #include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
@@ -31,6 +32,7 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
 // transparent surface move the ray's origin to offset_ray_origin from it (surface_point gives
 // its error bound; the ray keeps its direction and time), at most kMaxShadowSurfaces surfaces. Find each surface with nearest_hit
 // (stage_api/stage06.h): stage 02's intersect_nearest until a scene has a BVH, then the tree.
-Color light_transmittance(const Scene& scene, const SurfacePoint& at, const LightSample& sample);
+Color light_transmittance(const PreparedScene& scene, const SurfacePoint& at,
+                          const LightSample& sample);
 
 }  // namespace rt

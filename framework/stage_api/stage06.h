@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "scene/prepared_scene.h"
 #include "stage_api/stage02.h"
 
 namespace rt {
@@ -64,11 +65,11 @@ bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_directi
 // The nearest hit in t_range over the whole scene, like stage 02's intersect_nearest (same
 // result), but visiting only the nodes the ray can reach: nearer child first, skipping a node
 // that starts beyond the nearest hit found so far. Uses scene.bvh. Fills `stats` when given.
-bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit,
+bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval t_range, Hit& hit,
                            BvhStats* stats = nullptr);
 
 // Whether anything is hit in t_range (shadow rays): stops at the first hit found.
-bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range,
+bool bvh_intersect_any(const PreparedScene& scene, const Ray& ray, Interval t_range,
                        BvhStats* stats = nullptr);
 
 // Given (framework): intersects the primitive with global id `id` by the stage 02 functions and,
@@ -109,7 +110,7 @@ inline bool intersect_primitive(const Scene& scene, std::uint32_t id, const Ray&
 }
 
 // True when the scene's queries go through a built BVH.
-inline bool uses_bvh(const Scene& scene) {
+inline bool uses_bvh(const PreparedScene& scene) {
     return scene.accelerator == Accelerator::Bvh && scene.bvh.built();
 }
 
@@ -117,7 +118,7 @@ inline bool uses_bvh(const Scene& scene) {
 // the scene has a tree, else your stage 02 intersect_nearest (the same answer, faster). Stages 04
 // and 10 trace their rays through it, so a scene with a BVH uses it for every ray. A scene that
 // asks for a tree a stubbed build_bvh did not make counts a stub call (the image is magenta).
-inline bool nearest_hit(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit) {
+inline bool nearest_hit(const PreparedScene& scene, const Ray& ray, Interval t_range, Hit& hit) {
     if (uses_bvh(scene)) return bvh_intersect_nearest(scene, ray, t_range, hit);
     if (scene.accelerator == Accelerator::Bvh) {
         count_missing_bvh();

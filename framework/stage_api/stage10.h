@@ -9,6 +9,7 @@
 // The framework calls them only for scenes that use a stage 10 feature (Features::sampled()).
 #pragma once
 
+#include "scene/prepared_scene.h"
 #include "scene/surface_point.h"
 #include "stage_api/stage03.h"
 
@@ -88,9 +89,9 @@ LightSample sample_area_light(const AreaLight& light, const Vec3& point, Vec2 u)
 // One-sample estimate of the light `light` reflects at `at` towards the viewer: the sample of
 // sample_area_light, stage 03's blinn_phong, times stage 04's light_transmittance (soft
 // shadows). 0 without calling light_transmittance when blinn_phong is 0.
-Color area_light_estimate(const Scene& scene, const Material& material, const SurfacePoint& at,
-                          const Vec3& normal, const Vec3& to_viewer, const AreaLight& light,
-                          Vec2 u);
+Color area_light_estimate(const PreparedScene& scene, const Material& material,
+                          const SurfacePoint& at, const Vec3& normal, const Vec3& to_viewer,
+                          const AreaLight& light, Vec2 u);
 
 // Glossy reflection: normalize(mirror + fuzz * sample_uniform_sphere(u)), `mirror` unit. (The
 // framework drops a direction that points into the surface: that light is absorbed.)
@@ -104,7 +105,7 @@ Ray cosine_ray(const SurfacePoint& at, const Vec3& normal, Vec2 u);
 // One-sample ambient occlusion: 1 when the cosine_ray meets nothing (nearest_hit,
 // stage_api/stage06.h) closer than max_distance, else 0. Its average is the cosine-weighted
 // fraction of the hemisphere that is open; the ambient term becomes k_a I_a times it.
-Real ambient_occlusion(const Scene& scene, const SurfacePoint& at, const Vec3& normal,
+Real ambient_occlusion(const PreparedScene& scene, const SurfacePoint& at, const Vec3& normal,
                        Real max_distance, Vec2 u);
 
 // The radiance arriving at a point along a ray (the framework traces it: the direct light at

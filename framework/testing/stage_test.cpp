@@ -3,7 +3,7 @@
 #include "core/not_implemented.h"
 #include "core/source_dir.h"
 #include "image/compare.h"
-#include "render/accelerate.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 
@@ -28,12 +28,10 @@ void expect_matches_reference(const std::string& stage, const std::string& scene
                               const CompareOptions& options) {
     const auto scene_file = source_dir() / "stages" / stage / "scenes" / (scene_name + ".json");
     const auto reference_file = source_dir() / "reference_images" / stage / (scene_name + ".png");
-    Scene scene;
+    PreparedScene scene;
     try {
-        scene = load_scene(scene_file);
-        // prepare_scene without overrides, but through build_acceleration: in a grading judge
-        // that call crosses to the worker (stage_api/calls.h), and prepare_scene cannot.
-        build_acceleration(scene);
+        // In a grading judge prepare_scene crosses to the worker (stage_api/calls.h).
+        scene = prepare_scene(load_scene(scene_file));
     } catch (const std::exception& e) {
         ADD_FAILURE() << e.what();
         return;

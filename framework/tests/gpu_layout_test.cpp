@@ -19,6 +19,7 @@
 #include "gpu/gl/egl_context.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
+#include "render/prepare.h"
 
 namespace rt::gpu {
 namespace {
@@ -282,7 +283,7 @@ TEST(GpuLayout, SharedNumbersHaveOneHome) {
 }
 
 TEST(GpuLayout, PackKeepsEveryValue) {
-    Scene scene;
+    PreparedScene scene;
     scene.spheres.push_back(Sphere{Vec3(1, 2, 3), Real(0.5), 2});
     scene.planes.push_back(Plane{Vec3(0, -1, 0), Vec3(0, 1, 0), 1});
     scene.boxes.push_back(Box{Vec3(-1), Vec3(1), 3});

@@ -14,6 +14,7 @@
 
 #include "core/source_dir.h"
 #include "scene/obj_loader.h"
+#include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
 
@@ -257,7 +258,8 @@ TEST(ObjLoader, MtlMaterialsBecomeSceneMaterials) {
     ASSERT_EQ(scene.triangles.size(), 8u);
     const int expected[] = {2, 3, 4, 0, 2, 3, 4, 0};
     for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(scene.triangles[i].material, expected[i]) << i;
-    EXPECT_TRUE(scene.features.reflection && scene.features.refraction && scene.features.emissive);
+    EXPECT_TRUE(scene_features(scene).reflection && scene_features(scene).refraction &&
+                scene_features(scene).emissive);
 }
 
 // UTF-16 without a byte-order mark (the corpus has one with a mark) is named as such, not

@@ -18,6 +18,7 @@
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
 #include "render/oiio_textures.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "render/texturing.h"
 #include "scene/scene_loader.h"
@@ -28,14 +29,15 @@ namespace {
 
 constexpr int kWidth = 400, kHeight = 300;
 
-Scene filtering_scene() {
-    Scene scene = load_scene(source_dir() / "stages/07-textures/scenes/filtering.json");
+PreparedScene filtering_scene() {
+    PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/07-textures/scenes/filtering.json"));
     scene.image = ImageSize{kWidth, kHeight};
     return scene;
 }
 
 Image render_with(TextureLookup lookup, int width = kWidth, int height = kHeight) {
-    Scene scene = filtering_scene();
+    PreparedScene scene = filtering_scene();
     scene.image = ImageSize{width, height};
     if (lookup == TextureLookup::Oiio || lookup == TextureLookup::OiioAniso)
         use_oiio_textures(scene, lookup == TextureLookup::OiioAniso);
@@ -47,7 +49,7 @@ Image render_with(TextureLookup lookup, int width = kWidth, int height = kHeight
 // The mean linear value of the checks (the floor is lit by ambient light 1 alone, so a pixel is
 // its filtered texel).
 float mean_grey() {
-    const Scene scene = filtering_scene();
+    const PreparedScene scene = filtering_scene();
     const TextureView view = scene.texture_view(0, scene.textures[0].srgb);
     double sum = 0;
     for (int j = 0; j < view.height; ++j)
@@ -81,7 +83,7 @@ int far_edge(const Image& image, const Color& sky) {
 // A camera 1 above the plane y = 0 looking straight down, 90 degrees over 100 rows: each pixel
 // spans 0.02 world units on the plane, which plane_texcoord measures in world units.
 TEST(OiioTextures, RayDifferentialsGiveThePixelFootprint) {
-    Scene scene;
+    PreparedScene scene;
     scene.image = ImageSize{100, 100};
     scene.camera = make_look_at_camera(Projection::Perspective, Vec3(0, 1, 0), Vec3(0, 0, 0),
                                        Vec3(0, 0, -1), 90, 2);
@@ -193,10 +195,10 @@ TEST(OiioTextures, LatLongAgreesWithEnvironment) {
         texels.push_back(c);
         rgb.insert(rgb.end(), {c.r, c.g, c.b});
     }
-    Scene scene;
+    PreparedScene scene;
     scene.environment.kind = EnvironmentKind::LatLong;
     scene.environment.image = scene.add_texture_image(w, h, texels);
-    scene.update_features();
+    refresh_features(scene);
 
     char error[512] = "";
     RtOiioTextures* system = plugin.textures_create(error, sizeof error);

@@ -14,6 +14,7 @@
 #include "core/source_dir.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/obj_loader.h"
+#include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
 #include "scene_text.h"
 #include "temp_dir.h"
@@ -64,13 +65,13 @@ TEST(SceneLoader, ShadowsAndFresnelFlags) {
     rt::Scene plain = parse(R"({"lights": [{"type": "point", "position": [0, 1, 0]}]})");
     EXPECT_FALSE(plain.shadows);
     EXPECT_FALSE(plain.fresnel);
-    EXPECT_FALSE(plain.features.shadows);
+    EXPECT_FALSE(scene_features(plain).shadows);
     rt::Scene lit = parse(R"({"render": {"shadows": true, "fresnel": true},
                               "lights": [{"type": "point", "position": [0, 1, 0]}]})");
-    EXPECT_TRUE(lit.shadows && lit.fresnel && lit.features.shadows);
+    EXPECT_TRUE(lit.shadows && lit.fresnel && scene_features(lit).shadows);
     rt::Scene dark = parse(R"({"render": {"shadows": true}})");
     EXPECT_TRUE(dark.shadows);
-    EXPECT_FALSE(dark.features.shadows);
+    EXPECT_FALSE(scene_features(dark).shadows);
 }
 
 TEST(SceneLoader, FullSceneFillsTheFlatArrays) {
@@ -140,10 +141,11 @@ TEST(SceneLoader, FullSceneFillsTheFlatArrays) {
     expect_vec(scene.lights[1].direction, 0, -1, 0);  // normalised
     expect_vec(rt::Vec3(scene.lights[1].intensity), 1, 1, 1);
 
-    EXPECT_TRUE(scene.features.spheres && scene.features.planes && scene.features.triangles &&
-                scene.features.boxes);
-    EXPECT_TRUE(scene.features.reflection && scene.features.refraction && scene.features.emissive);
-    EXPECT_TRUE(scene.features.point_lights && scene.features.directional_lights);
+    EXPECT_TRUE(scene_features(scene).spheres && scene_features(scene).planes &&
+                scene_features(scene).triangles && scene_features(scene).boxes);
+    EXPECT_TRUE(scene_features(scene).reflection && scene_features(scene).refraction &&
+                scene_features(scene).emissive);
+    EXPECT_TRUE(scene_features(scene).point_lights && scene_features(scene).directional_lights);
 }
 
 TEST(SceneLoader, DefaultMaterialCanBeNamed) {
@@ -190,7 +192,7 @@ TEST(SceneLoader, MeshSurfaceLoadsAnObj) {
     // "f -4 -3 -2" after 4 vertices counts back from the last one: vertices 1, 2, 3 (1-based).
     EXPECT_EQ(scene.triangles[3].v[0], 3u + 0u);
     EXPECT_EQ(scene.triangles[3].v[2], 3u + 2u);
-    EXPECT_TRUE(scene.features.triangles);
+    EXPECT_TRUE(scene_features(scene).triangles);
 }
 
 // A procedural mesh is the generator's mesh, scaled then translated, with its normals and uvs.
@@ -222,7 +224,7 @@ TEST(SceneLoader, ProceduralMeshes) {
     EXPECT_EQ(scene.vertices[first_soup_vertex], soup.vertices[0]);
     EXPECT_EQ(scene.normals[first_soup_vertex], rt::Vec3(0));  // no normals: the sentinel
     EXPECT_EQ(scene.triangles.back().material, 0);
-    EXPECT_TRUE(scene.features.triangles);
+    EXPECT_TRUE(scene_features(scene).triangles);
 }
 
 // A mirroring scale turns the triangles around, so a closed mesh still faces outwards.

@@ -9,6 +9,7 @@
 
 #include "core/source_dir.h"
 #include "image/image.h"
+#include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
 
@@ -94,13 +95,13 @@ TEST(TextureLoading, ImagesAreReadOnceAndKeptAsStored) {
     EXPECT_EQ(m.normal_map.texture, 1);
     EXPECT_EQ(m.emissive_map.texture, 3);
     EXPECT_FALSE(m.specular_map.used());
-    EXPECT_TRUE(s.features.textures);
-    EXPECT_TRUE(s.features.normal_maps);
-    EXPECT_TRUE(s.features.image_textures);
-    EXPECT_TRUE(s.features.checker_textures) << "the emissive map is a checker";
-    EXPECT_FALSE(s.features.noise_textures) << "no material uses marble";
-    EXPECT_NE(s.features.describe().find("(images checkers)"), std::string::npos)
-        << s.features.describe();
+    EXPECT_TRUE(scene_features(s).textures);
+    EXPECT_TRUE(scene_features(s).normal_maps);
+    EXPECT_TRUE(scene_features(s).image_textures);
+    EXPECT_TRUE(scene_features(s).checker_textures) << "the emissive map is a checker";
+    EXPECT_FALSE(scene_features(s).noise_textures) << "no material uses marble";
+    EXPECT_NE(scene_features(s).describe().find("(images checkers)"), std::string::npos)
+        << scene_features(s).describe();
 }
 
 TEST(TextureLoading, MtlMapsBecomeTextures) {
@@ -132,7 +133,7 @@ TEST(TextureLoading, MtlMapsBecomeTextures) {
     const Texture& normal = s.textures[std::size_t(wood->normal_map.texture)];
     EXPECT_FALSE(normal.srgb) << "a normal map is data";
     EXPECT_EQ(normal.wrap, TextureWrap::Clamp) << "-clamp on";
-    EXPECT_TRUE(s.features.textures);
+    EXPECT_TRUE(scene_features(s).textures);
 }
 
 TEST(TextureLoading, AMissingMapIsOneLineNamingTheFile) {

@@ -13,6 +13,7 @@
 #include "core/source_dir.h"
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
@@ -25,8 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Scene whitted() {
-    return load_scene(source_dir() / "stages/05-recursion/scenes/whitted.json");
+PreparedScene whitted() {
+    return prepare_scene(load_scene(source_dir() / "stages/05-recursion/scenes/whitted.json"));
 }
 
 void expect_orthonormal(const Camera& c) {
@@ -39,9 +40,9 @@ void expect_orthonormal(const Camera& c) {
 }
 
 TEST(ViewSettings, TheSceneFilesSettingsGiveTheLoadedSceneBack) {
-    const Scene loaded = whitted();
+    const PreparedScene loaded = whitted();
     SceneSource source{Scene(loaded)};
-    const Scene made = source.make(source.initial());
+    const PreparedScene made = source.make(source.initial());
     EXPECT_EQ(made.shadows, loaded.shadows);
     EXPECT_EQ(made.max_depth, loaded.max_depth);
     EXPECT_EQ(made.features.describe(), loaded.features.describe());
@@ -86,11 +87,11 @@ TEST(ViewSettings, ShadowsOffIsWhatTheRendererComputesWithoutShadows) {
     ViewSettings settings = source.initial();
     ASSERT_TRUE(settings.shadows) << "whitted.json is expected to ask for shadows";
     ASSERT_EQ(set_by_name(settings, "shadows", "off"), "");
-    const Scene made = source.make(settings);
-    EXPECT_FALSE(made.features.shadows);  // update_features ran: no shadow rays at all
-    Scene by_hand = whitted();
+    const PreparedScene made = source.make(settings);
+    EXPECT_FALSE(made.features.shadows);  // refresh_features ran: no shadow rays at all
+    PreparedScene by_hand = whitted();
     by_hand.shadows = false;
-    by_hand.update_features();
+    refresh_features(by_hand);
     EXPECT_EQ(render(made, made.mode).pixels, render(by_hand, by_hand.mode).pixels);
 }
 
@@ -101,14 +102,14 @@ TEST(ViewSettings, TermsAndEffectsOffAreLeftOutOfTheScene) {
     ViewSettings settings = source.initial();
     for (const char* term : {"specular", "reflection", "refraction"})
         ASSERT_EQ(set_by_name(settings, term, "off"), "");
-    Scene made = source.make(settings);
+    PreparedScene made = source.make(settings);
     EXPECT_FALSE(made.features.specular);
     EXPECT_FALSE(made.features.reflection);
     EXPECT_FALSE(made.features.refraction);
     made.image = ImageSize{80, 60};
-    Scene by_hand = whitted();
+    PreparedScene by_hand = whitted();
     for (Material& m : by_hand.materials) m.specular = m.reflective = m.transmissive = Color(0);
-    by_hand.update_features();
+    refresh_features(by_hand);
     by_hand.image = made.image;
     EXPECT_EQ(render(made, made.mode).pixels, render(by_hand, by_hand.mode).pixels);
 
@@ -180,12 +181,12 @@ TEST(ViewCamera, ProjectionSwitchKeepsThePivotsSizeAndUndoes) {
 // rt fmt's form; loading it gives the camera back.
 TEST(ViewCamera, WithCameraWritesACameraThatLoadsBack) {
     const fs::path file = source_dir() / "stages/05-recursion/scenes/whitted.json";
-    const Scene original = load_scene(file);
+    const PreparedScene original = prepare_scene(load_scene(file));
     Camera camera = original.camera;
     orbit(camera, 6, camera.v, 25, 10);
     const std::string text = with_camera(read_scene_text(file), file.string(), camera, 6);
     EXPECT_EQ(canonical_scene_text(text, file.string(), file.parent_path()), text);
-    const Scene back = parse_scene(text, file.string(), file.parent_path());
+    const PreparedScene back = prepare_scene(parse_scene(text, file.string(), file.parent_path()));
     for (const auto& [got, want] :
          {std::pair{back.camera.eye, camera.eye}, std::pair{back.camera.u, camera.u},
           std::pair{back.camera.v, camera.v}, std::pair{back.camera.w, camera.w}})
@@ -194,20 +195,20 @@ TEST(ViewCamera, WithCameraWritesACameraThatLoadsBack) {
     EXPECT_EQ(back.materials.size(), original.materials.size());
     EXPECT_EQ(back.lights.size(), original.lights.size());
     set_projection(camera, 6, Projection::Orthographic);
-    const Scene ortho =
-        parse_scene(with_camera(text, file.string(), camera, 6), file.string(), file.parent_path());
+    const PreparedScene ortho = prepare_scene(parse_scene(
+        with_camera(text, file.string(), camera, 6), file.string(), file.parent_path()));
     EXPECT_EQ(ortho.camera.projection, Projection::Orthographic);
     EXPECT_NEAR(ortho.camera.view_height, camera.view_height, 1e-4);
     EXPECT_THROW(with_camera("{ not json", "x.json", camera, 6), SceneError);
 }
 
 TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
-    const Scene scene = whitted();
+    const PreparedScene scene = whitted();
     ProgressiveRenderer renderer(2);
     renderer.restart(scene);
-    Scene other = scene;
+    PreparedScene other = scene;
     other.shadows = false;
-    other.update_features();
+    refresh_features(other);
     const std::uint64_t generation = renderer.restart(other);
     std::optional<Frame> refined;
     bool seen_new = false;
@@ -232,7 +233,7 @@ TEST(ViewProgressive, TheRefinedFrameIsTheRenderAndRestartsDropOldWork) {
 // being `rt render`'s image bit for bit.
 // The passes of a Monte Carlo scene on the CPU or GPU path, up to the refined frame: their
 // sample counts must grow to the scene's own.
-std::optional<Frame> refine_samples(const Scene& scene, bool gpu, int seconds,
+std::optional<Frame> refine_samples(const PreparedScene& scene, bool gpu, int seconds,
                                     std::vector<int>& samples) {
     ProgressiveRenderer renderer(gpu ? 1 : 2);
     const std::uint64_t generation = renderer.restart(scene, gpu);
@@ -250,7 +251,8 @@ std::optional<Frame> refine_samples(const Scene& scene, bool gpu, int seconds,
 }
 
 TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
-    Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
+    PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json"));
     scene.image = ImageSize{48, 32};  // no coarse passes
     ASSERT_EQ(scene.sampling.samples_per_pixel, 16);
     std::vector<int> samples;
@@ -264,10 +266,10 @@ TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
 // The GPU path: the refined frame is `rt render --gpu`'s image, and a second camera reuses the
 // program compiled for the first (same features).
 TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
-    Scene scene = whitted();
+    PreparedScene scene = whitted();
     scene.image = ImageSize{64, 48};  // small: no coarse passes, and llvmpipe is slow
     ProgressiveRenderer renderer(1);
-    const auto refined = [&](const Scene& s) -> std::optional<Frame> {
+    const auto refined = [&](const PreparedScene& s) -> std::optional<Frame> {
         const std::uint64_t generation = renderer.restart(s, true);
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
         while (std::chrono::steady_clock::now() < deadline) {
@@ -292,7 +294,8 @@ TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
 // Stage 10 on the GPU path: the same passes (1, 4, 16 samples), each accumulated over dispatches;
 // the refined frame is `rt render --gpu`'s image.
 TEST(ViewProgressive, TheGpuPathRefinesAMonteCarloScene) {
-    Scene scene = load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json");
+    PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json"));
     scene.image = ImageSize{48, 32};  // no coarse passes
     std::vector<int> samples;
     const std::optional<Frame> last = refine_samples(scene, true, 120, samples);
@@ -303,7 +306,7 @@ TEST(ViewProgressive, TheGpuPathRefinesAMonteCarloScene) {
 }
 
 TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {
-    Scene scene = whitted();
+    PreparedScene scene = whitted();
     scene.mode = RenderMode::BvhVisits;  // without a BVH: render() refuses
     ProgressiveRenderer renderer(1);
     renderer.restart(scene);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
 #include "render/render.h"
 
 namespace rt::view {
@@ -31,7 +32,7 @@ struct Pass {
 // one; then full size, with the samples of a Monte Carlo scene raised fourfold a pass, each pass
 // a whole render at its count (stratified samples do not nest, so they are not accumulated); the
 // last pass is the scene's own count, `rt render`'s image.
-std::vector<Pass> passes_for(const Scene& scene) {
+std::vector<Pass> passes_for(const PreparedScene& scene) {
     const int samples = std::max(1, scene.sampling.samples_per_pixel);
     std::vector<Pass> passes;
     for (int block : {8, 4, 2})
@@ -56,7 +57,7 @@ ProgressiveRenderer::~ProgressiveRenderer() {
     worker_.join();
 }
 
-std::uint64_t ProgressiveRenderer::restart(Scene scene, bool gpu) {
+std::uint64_t ProgressiveRenderer::restart(PreparedScene scene, bool gpu) {
     std::uint64_t generation = 0;
     {
         std::lock_guard lock(mutex_);
@@ -81,7 +82,7 @@ void ProgressiveRenderer::run() {
     // (one per feature mask) survive camera changes.
     std::unique_ptr<GpuRenderer> gpu_renderer;
     for (;;) {
-        Scene scene;
+        PreparedScene scene;
         bool gpu = false;
         std::uint64_t generation = 0;
         {
@@ -104,7 +105,7 @@ void ProgressiveRenderer::run() {
             scene.image = {(full.width + block - 1) / block, (full.height + block - 1) / block};
             if (scene.sampling.samples_per_pixel != passes[k].samples) {
                 scene.sampling.samples_per_pixel = passes[k].samples;
-                scene.update_features();
+                refresh_features(scene);
             }
             Frame frame;
             frame.block = block;

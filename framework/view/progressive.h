@@ -15,7 +15,7 @@
 #include <thread>
 
 #include "image/image.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt::view {
 
@@ -38,7 +38,7 @@ class ProgressiveRenderer {
 
     // Drops whatever is being rendered and starts on `scene` (on the GPU path when `gpu`);
     // returns its generation.
-    std::uint64_t restart(Scene scene, bool gpu = false);
+    std::uint64_t restart(PreparedScene scene, bool gpu = false);
     // The newest pass finished since the last call, if any (older ones are dropped).
     std::optional<Frame> take();
     int threads() const { return threads_; }
@@ -49,7 +49,7 @@ class ProgressiveRenderer {
     const int threads_;
     std::mutex mutex_;
     std::condition_variable wake_;
-    std::optional<Scene> pending_;
+    std::optional<PreparedScene> pending_;
     bool pending_gpu_ = false;
     std::optional<Frame> ready_;
     std::uint64_t generation_ = 0;

@@ -104,7 +104,7 @@ glm::vec3 f3(const Vec3& v) {
 
 class MeshBuilder {
   public:
-    explicit MeshBuilder(const Scene& scene) : scene_(scene) {}
+    explicit MeshBuilder(const PreparedScene& scene) : scene_(scene) {}
     void add(const Vec3& p, const Vec3& normal, int material) {
         const Material m = material >= 0 && std::size_t(material) < scene_.materials.size()
                                ? scene_.materials[std::size_t(material)]
@@ -118,11 +118,11 @@ class MeshBuilder {
     std::vector<Vertex> vertices;
 
   private:
-    const Scene& scene_;
+    const PreparedScene& scene_;
 };
 
 // The scene's extent, for plane sizes and the depth range.
-Real scene_radius(const Scene& scene, Vec3& center) {
+Real scene_radius(const PreparedScene& scene, Vec3& center) {
     Vec3 lo(kInfinity), hi(-kInfinity);
     const auto grow = [&](const Vec3& p) { lo = glm::min(lo, p), hi = glm::max(hi, p); };
     for (const Sphere& s : scene.spheres)
@@ -135,7 +135,7 @@ Real scene_radius(const Scene& scene, Vec3& center) {
     return std::max(Real(1), glm::length(hi - lo) * Real(0.5));
 }
 
-std::vector<Vertex> tessellate(const Scene& scene) {
+std::vector<Vertex> tessellate(const PreparedScene& scene) {
     MeshBuilder mesh(scene);
     const TriangleMesh ball = make_icosphere(3);
     for (const Sphere& s : scene.spheres)
@@ -184,7 +184,7 @@ std::vector<Vertex> tessellate(const Scene& scene) {
 
 }  // namespace
 
-RasterPreview::RasterPreview(const Scene& scene) {
+RasterPreview::RasterPreview(const PreparedScene& scene) {
     const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
     const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
     program_ = glCreateProgram();
@@ -235,7 +235,7 @@ RasterPreview::~RasterPreview() {
     glDeleteProgram(program_);
 }
 
-void RasterPreview::draw(const Scene& scene) {
+void RasterPreview::draw(const PreparedScene& scene) {
     const Camera& cam = scene.camera;
     Vec3 center;
     const Real radius = scene_radius(scene, center);

@@ -6,21 +6,21 @@
 
 #include <epoxy/gl.h>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt::view {
 
 class RasterPreview {
   public:
     // Tessellates the scene's surfaces once (spheres as icospheres, planes as large quads).
-    explicit RasterPreview(const Scene& scene);
+    explicit RasterPreview(const PreparedScene& scene);
     ~RasterPreview();
     RasterPreview(const RasterPreview&) = delete;
     RasterPreview& operator=(const RasterPreview&) = delete;
 
     // Draws the scene through `scene.camera` and its lights into the preview's texture
     // (scene.image size, row 0 at the bottom as GL stores it), restoring the default framebuffer.
-    void draw(const Scene& scene);
+    void draw(const PreparedScene& scene);
     GLuint texture() const { return color_; }
     std::size_t triangles() const { return vertex_count_ / 3; }
 

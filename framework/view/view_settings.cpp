@@ -46,10 +46,10 @@ ViewSettings settings_of(const Scene& scene) {
     return s;
 }
 
-SceneSource::SceneSource(Scene loaded) : initial_(settings_of(loaded)), loaded_(std::move(loaded)) {
-    // The copy with a BVH is made the first time a setting asks for one.
-    loaded_.bvh = Bvh{};
-    loaded_.accelerator = Accelerator::None;
+SceneSource::SceneSource(Scene loaded)
+    : initial_(settings_of(loaded)),
+      // The copy with a BVH is made the first time a setting asks for one.
+      loaded_(prepare_scene(std::move(loaded), {.accelerator = Accelerator::None})) {
     if (initial_.accelerator == Accelerator::None && worth_a_tree(loaded_)) try_tree();
 }
 
@@ -63,22 +63,18 @@ bool SceneSource::worth_a_tree(const Scene& scene) {
 }
 
 void SceneSource::try_tree() {
-    Scene scene = loaded_;
     QuietStubs quiet;
-    prepare_scene(scene, {.accelerator = Accelerator::Bvh});
+    PreparedScene scene = prepare_scene(loaded_, {.accelerator = Accelerator::Bvh});
     if (quiet.reached() || !uses_bvh(scene)) return;
     with_bvh_ = std::move(scene);
     initial_.accelerator = Accelerator::Bvh;
 }
 
-Scene SceneSource::make(const ViewSettings& settings) {
+PreparedScene SceneSource::make(const ViewSettings& settings) {
     const bool bvh = settings.accelerator == Accelerator::Bvh;
-    if (bvh && !with_bvh_) {
-        with_bvh_ = loaded_;
-        // May fall back to None (an invalid tree).
-        prepare_scene(*with_bvh_, {.accelerator = Accelerator::Bvh});
-    }
-    Scene scene = bvh ? *with_bvh_ : loaded_;
+    // May fall back to None (an invalid tree).
+    if (bvh && !with_bvh_) with_bvh_ = prepare_scene(loaded_, {.accelerator = Accelerator::Bvh});
+    PreparedScene scene = bvh ? *with_bvh_ : loaded_;
     scene.mode = settings.mode;
     scene.shadows = settings.shadows;
     scene.max_depth = std::clamp(settings.max_depth, 0, 64);
@@ -86,7 +82,7 @@ Scene SceneSource::make(const ViewSettings& settings) {
     scene.camera = settings.camera;
     scene.fresnel = settings.fresnel;
     // A term off is a coefficient of zero in every material (texture maps multiply it, so they
-    // go too); update_features() then leaves the term out of what the renderer computes.
+    // go too); refresh_features then leaves the term out of what the renderer computes.
     for (Material& m : scene.materials) {
         if (!settings.ambient) m.ambient = Color(0);
         if (!settings.diffuse) m.diffuse = Color(0);
@@ -96,7 +92,7 @@ Scene SceneSource::make(const ViewSettings& settings) {
         if (!settings.refraction) m.transmissive = Color(0);
     }
     if (!settings.environment) scene.environment.kind = EnvironmentKind::None;
-    scene.update_features();  // prepare_scene's step 3 again, after the viewer's own changes
+    refresh_features(scene);  // prepare_scene's step 3 again, after the viewer's own changes
     return scene;
 }
 

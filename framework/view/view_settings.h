@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt::view {
 
@@ -29,23 +29,23 @@ struct ViewSettings {
 // The settings the scene file asks for.
 ViewSettings settings_of(const Scene& scene);
 
-// Keeps the loaded scene and its BVH (built once, when first asked for) and makes the scene a
-// setting describes: a copy with the setting's fields and update_features() run again, exactly
-// what `rt render` does with the same flags.
+// Keeps the loaded scene prepared, once without and (when first asked for) once with its BVH,
+// and makes the scene a setting describes: a copy with the setting's fields and its features
+// worked out again (refresh_features), exactly what `rt render` does with the same flags.
 class SceneSource {
   public:
     explicit SceneSource(Scene loaded);
     // The scene file's settings, with the BVH on for a big scene when stage 06 is written.
     const ViewSettings& initial() const { return initial_; }
-    Scene make(const ViewSettings& settings);
+    PreparedScene make(const ViewSettings& settings);
 
   private:
     static bool worth_a_tree(const Scene& scene);
     void try_tree();
 
     ViewSettings initial_;
-    Scene loaded_;
-    std::optional<Scene> with_bvh_;  // loaded_ with its BVH built
+    PreparedScene loaded_;                   // without a BVH
+    std::optional<PreparedScene> with_bvh_;  // loaded_ with its BVH built
 };
 
 // Sets one setting by name, as scripts and tests write it: "mode shaded", "shadows off",

@@ -23,7 +23,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // The orbit pivot: the surface under the image centre, else as far as the eye from the origin.
-Real pivot_distance(const Scene& scene) {
+Real pivot_distance(const PreparedScene& scene) {
     const Ray ray = camera_ray(
         scene.camera, Vec2(Real(scene.image.width) / 2, Real(scene.image.height) / 2), scene.image);
     Hit hit;

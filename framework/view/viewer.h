@@ -63,7 +63,7 @@ class Viewer {
     ViewSettings settings;
     bool raster = true;  // the OpenGL preview beside the ray-traced image
     std::uint64_t scene_version() const { return generation_; }  // changes with scene()
-    const Scene& scene() const { return scene_; }
+    const PreparedScene& scene() const { return scene_; }
     const ViewSettings& initial_settings() const { return source_.initial(); }
     const std::string& scene_file() const { return scene_file_; }
     const std::optional<Frame>& frame() const { return frame_; }
@@ -88,7 +88,7 @@ class Viewer {
     void fail(const ScriptCommand& c, const std::string& message);
 
     SceneSource source_;
-    Scene scene_;  // the scene of the current settings
+    PreparedScene scene_;  // the scene of the current settings
     std::string scene_file_;
     std::filesystem::path out_;
     std::string script_file_;

@@ -39,7 +39,7 @@ ImVec4 kind_color(RayNode::Kind kind) {
     return {1, 1, 1, 1};
 }
 
-std::string what_was_hit(const Scene& scene, const RayNode& n) {
+std::string what_was_hit(const PreparedScene& scene, const RayNode& n) {
     if (!n.hit) return "miss (background)";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(n.hit_record.primitive, index);
@@ -53,7 +53,7 @@ std::string what_was_hit(const Scene& scene, const RayNode& n) {
     return text;
 }
 
-void ray_list(const Scene& scene, const RayNode& n) {
+void ray_list(const PreparedScene& scene, const RayNode& n) {
     ImGui::PushID(&n);
     ImGui::TextColored(kind_color(n.kind), "%*s%s d%d", n.depth * 2, "", kind_label(n.kind),
                        n.depth);
@@ -77,7 +77,7 @@ int count_rays(const RayNode& n) {
 }
 
 void hud(const Viewer& viewer) {
-    const Scene& scene = viewer.scene();
+    const PreparedScene& scene = viewer.scene();
     ImGui::TextWrapped("%s", viewer.scene_file().c_str());
     if (viewer.settings.gpu)
         ImGui::Text("%d x %d, GPU (stage 09, headless EGL)", scene.image.width, scene.image.height);

@@ -284,7 +284,9 @@ CPP
             --test-passed "image diffuse_only" --test-passed "image ambient_only") ;;
   calib_acne)  # shadow rays start exactly at the hit point, without the offset
     mkdir -p "$sub/$s4"
-    sed 's/offset_ray_origin(\([a-z_]*\)\.point, [^;]*);/\1.point;/' "$src/$s4/shadows.cpp" > "$sub/$s4/shadows.cpp"
+    sed -e 's/offset_ray_origin(\([a-z_]*\)\.point, [^;]*);/\1.point;/' \
+        -e 's/spawn_ray(\([a-z_]*\), [^,]*, \([^;]*\));/Ray{\1.point, \2, \1.time};/' \
+        "$src/$s4/shadows.cpp" > "$sub/$s4/shadows.cpp"
     cmp -s "$src/$s4/shadows.cpp" "$sub/$s4/shadows.cpp" && { echo "no offset to remove"; exit 1; }
     stages=4; limit=()
     # The Cornell box (axis-aligned walls near the origin) happens to show no acne without the

@@ -32,7 +32,8 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample) {
 
 // The fraction of the light that gets through: walk along the shadow ray, multiplying by the
 // transmissive colour of every surface crossed, until the light is reached or nothing is left.
-Color light_transmittance(const Scene& scene, const SurfacePoint& at, const LightSample& sample) {
+Color light_transmittance(const PreparedScene& scene, const SurfacePoint& at,
+                          const LightSample& sample) {
     // BEGIN SOLUTION
     ShadowRay shadow = shadow_ray(at, sample);
     Color transmittance(1);

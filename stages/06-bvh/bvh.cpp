@@ -266,7 +266,7 @@ bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_directi
 }
 
 // Depth-first, nearer child first, skipping whatever starts beyond the nearest hit so far.
-bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range, Hit& hit,
+bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval t_range, Hit& hit,
                            BvhStats* stats) {
     // BEGIN SOLUTION
     bool found = false;
@@ -332,7 +332,8 @@ bool bvh_intersect_nearest(const Scene& scene, const Ray& ray, Interval t_range,
 }
 
 // Any order will do: the first hit ends the search.
-bool bvh_intersect_any(const Scene& scene, const Ray& ray, Interval t_range, BvhStats* stats) {
+bool bvh_intersect_any(const PreparedScene& scene, const Ray& ray, Interval t_range,
+                       BvhStats* stats) {
     // BEGIN SOLUTION
     Hit scratch;
     for (std::size_t i = 0; i < scene.planes.size(); ++i)

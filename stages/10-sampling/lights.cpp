@@ -124,9 +124,9 @@ LightSample sample_area_light(const AreaLight& light, const Vec3& point, Vec2 u)
     // END SOLUTION
 }
 
-Color area_light_estimate(const Scene& scene, const Material& material, const SurfacePoint& at,
-                          const Vec3& normal, const Vec3& to_viewer, const AreaLight& light,
-                          Vec2 u) {
+Color area_light_estimate(const PreparedScene& scene, const Material& material,
+                          const SurfacePoint& at, const Vec3& normal, const Vec3& to_viewer,
+                          const AreaLight& light, Vec2 u) {
     // BEGIN SOLUTION
     const LightSample sample = sample_area_light(light, at.point, u);
     if (sample.intensity == Color(0)) return Color(0);
@@ -162,7 +162,7 @@ Ray cosine_ray(const SurfacePoint& at, const Vec3& normal, Vec2 u) {
     // END SOLUTION
 }
 
-Real ambient_occlusion(const Scene& scene, const SurfacePoint& at, const Vec3& normal,
+Real ambient_occlusion(const PreparedScene& scene, const SurfacePoint& at, const Vec3& normal,
                        Real max_distance, Vec2 u) {
     // BEGIN SOLUTION
     Hit hit;

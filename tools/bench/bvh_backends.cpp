@@ -76,7 +76,7 @@ double ms_since(Clock::time_point start) {
 
 class BruteForceBackend final : public Backend {
   public:
-    explicit BruteForceBackend(const Scene& scene) : scene_(scene) {}
+    explicit BruteForceBackend(const PreparedScene& scene) : scene_(scene) {}
     std::string name() const override { return "brute-force"; }
     double build() override { return -1; }
     void trace(const RayBatch& batch, std::size_t begin, std::size_t end,
@@ -93,12 +93,12 @@ class BruteForceBackend final : public Backend {
     }
 
   private:
-    const Scene& scene_;
+    const PreparedScene& scene_;
 };
 
 class BvhBackend final : public Backend {
   public:
-    explicit BvhBackend(Scene& scene) : scene_(scene) {}
+    explicit BvhBackend(PreparedScene& scene) : scene_(scene) {}
     std::string name() const override { return "bvh"; }
     // Timed: bvh_primitives (the boxes, from the scene's arrays) and build_bvh.
     double build() override {
@@ -132,7 +132,7 @@ class BvhBackend final : public Backend {
     }
 
   private:
-    Scene& scene_;
+    PreparedScene& scene_;
 };
 
 class FaultyBackend final : public Backend {
@@ -160,10 +160,10 @@ class FaultyBackend final : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_brute_force_backend(const Scene& scene) {
+std::unique_ptr<Backend> make_brute_force_backend(const PreparedScene& scene) {
     return std::make_unique<BruteForceBackend>(scene);
 }
-std::unique_ptr<Backend> make_bvh_backend(Scene& scene) {
+std::unique_ptr<Backend> make_bvh_backend(PreparedScene& scene) {
     return std::make_unique<BvhBackend>(scene);
 }
 std::unique_ptr<Backend> make_faulty_backend(std::unique_ptr<Backend> inner, std::size_t period) {

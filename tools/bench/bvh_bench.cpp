@@ -119,7 +119,7 @@ std::string load_average() {
 }
 
 // What the BVH does per ray (BvhStats), in a separate untimed pass: where its time goes.
-std::string bvh_traversal_summary(const Scene& scene, const BenchRays& rays, int threads) {
+std::string bvh_traversal_summary(const PreparedScene& scene, const BenchRays& rays, int threads) {
     std::string text = "\nbvh traversal per ray (untimed, BvhStats):";
     for (const RayBatch& batch : rays.batch) {
         std::atomic<std::uint64_t> nodes{0}, prims{0};
@@ -182,7 +182,7 @@ class BvhBench {
 
     // The back-ends. The BVH is built once here (untimed) so that rays can be generated.
     void set_up() {
-        Scene& scene = mesh_.scene;
+        PreparedScene& scene = mesh_.scene;
         out_ << "rt-bench bvh: stage 02 brute force, stage 06 BVH and Embree 3 on the same rays\n";
         out_ << "machine: " << cores_ << " cores (" << cpu_model("unknown processor")
              << "), load average " << load_average() << " at the start\n";

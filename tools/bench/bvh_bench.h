@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt::bench {
 
@@ -80,10 +80,10 @@ class Backend {
 
 // Stage 02's intersect_nearest over every primitive (any-hit rays use it too: stage 02 has no
 // early exit).
-std::unique_ptr<Backend> make_brute_force_backend(const Scene& scene);
+std::unique_ptr<Backend> make_brute_force_backend(const PreparedScene& scene);
 // Stage 06: bvh_primitives + build_bvh into scene.bvh, then bvh_intersect_nearest /
 // bvh_intersect_any.
-std::unique_ptr<Backend> make_bvh_backend(Scene& scene);
+std::unique_ptr<Backend> make_bvh_backend(PreparedScene& scene);
 // A back-end that answers like `inner` except on every `period`-th ray that `inner` reports a
 // hit for, where it names another primitive (nearest-hit) or reports a miss (any-hit). For the
 // test that proves the correctness check catches a wrong back-end.
@@ -94,7 +94,7 @@ bool embree_built_in();
 // One RTC_GEOMETRY_TYPE_TRIANGLE geometry from scene.vertices and scene.triangles, default
 // build quality, on a device limited to `threads` build threads; rtcIntersect1 / rtcOccluded1
 // one ray at a time. Throws std::runtime_error when Embree is not built in or reports an error.
-std::unique_ptr<Backend> make_embree_backend(const Scene& scene, int threads);
+std::unique_ptr<Backend> make_embree_backend(const PreparedScene& scene, int threads);
 
 // Runs body(begin, end) over [0, n) in chunks of `chunk` items, handed out in order to
 // `threads` threads (the calling thread is one of them) as each finishes its previous chunk.
@@ -126,7 +126,7 @@ struct BvhBenchConfig {
 // The mesh of the benchmark as a scene of triangles only (one default material): the OBJ file
 // config.mesh_file, or else config.procedural with at least config.triangles triangles.
 struct BenchMesh {
-    Scene scene;
+    PreparedScene scene;      // prepared without a BVH: each back-end builds its own
     std::string description;  // for the report
 };
 BenchMesh load_bench_mesh(const BvhBenchConfig& config);
@@ -140,7 +140,7 @@ struct BenchRays {
     RayBatch batch[3];  // in the order of kRayKinds
     std::size_t primary_hits = 0;
 };
-BenchRays make_bench_rays(const Scene& scene, const BvhBenchConfig& config, int threads);
+BenchRays make_bench_rays(const PreparedScene& scene, const BvhBenchConfig& config, int threads);
 
 // Runs the benchmark, printing the report on `out`. Returns the process exit code: 0, or 2 when
 // the back-ends disagree on more rays than allowed (nothing is then timed). Throws

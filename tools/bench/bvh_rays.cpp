@@ -17,7 +17,7 @@ namespace rt::bench {
 
 BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
     BenchMesh m;
-    Scene& s = m.scene;
+    Scene s;
     if (!config.mesh_file.empty()) {
         ObjMesh obj =
             load_obj(config.mesh_file, config.mesh_file, Vec3(1), Vec3(0), std::size_t(1) << 26);
@@ -37,7 +37,9 @@ BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
     }
     s.source = m.description;
     s.materials.push_back(Material{});
-    s.update_features();
+    // The benchmark builds its trees itself (bvh_backends.cpp), so no prepare_scene here.
+    m.scene = PreparedScene{std::move(s), {}, {}, {}};
+    refresh_features(m.scene);
     return m;
 }
 
@@ -51,7 +53,7 @@ struct Framing {
 // A perspective camera looking at the mesh from the front, a little from the right and above,
 // just far enough away that all eight corners of its bounding box are in the picture; and a point
 // light above, right of and in front of the mesh, outside the box.
-Framing frame_mesh(const Scene& scene, int width, int height) {
+Framing frame_mesh(const PreparedScene& scene, int width, int height) {
     Vec3 lo(kInfinity), hi(-kInfinity);
     for (const Vec3& p : scene.vertices) {
         lo = glm::min(lo, p);
@@ -128,8 +130,8 @@ Vec3 cosine_direction(const Vec3& n, Real u1, Real u2) {
 // Primary rays, one per pixel centre; then, from each primary hit (found with the stage 06 BVH),
 // one shadow ray to the light and one cosine-weighted diffuse ray, both starting at
 // offset_ray_origin. Deterministic: the same for any thread count.
-BenchRays make_rays(const Scene& scene, const Framing& framing, const BvhBenchConfig& config,
-                    int threads) {
+BenchRays make_rays(const PreparedScene& scene, const Framing& framing,
+                    const BvhBenchConfig& config, int threads) {
     BenchRays out;
     RayBatch& primary = out.batch[0];
     primary.kind = RayKind::Primary;
@@ -178,7 +180,7 @@ BenchRays make_rays(const Scene& scene, const Framing& framing, const BvhBenchCo
 
 }  // namespace
 
-BenchRays make_bench_rays(const Scene& scene, const BvhBenchConfig& config, int threads) {
+BenchRays make_bench_rays(const PreparedScene& scene, const BvhBenchConfig& config, int threads) {
     return make_rays(scene, frame_mesh(scene, config.width, config.height), config, threads);
 }
 

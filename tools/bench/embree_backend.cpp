@@ -21,7 +21,7 @@ bool embree_built_in() {
     return false;
 }
 
-std::unique_ptr<Backend> make_embree_backend(const Scene&, int) {
+std::unique_ptr<Backend> make_embree_backend(const PreparedScene&, int) {
     throw std::runtime_error(
         "Embree was not built in: install libembree-dev (scripts/install-deps.sh) and configure "
         "again");
@@ -52,7 +52,7 @@ void on_embree_error(void* user, RTCError code, const char* message) {
 
 class EmbreeBackend final : public Backend {
   public:
-    EmbreeBackend(const Scene& scene, int threads) : scene_(scene) {
+    EmbreeBackend(const PreparedScene& scene, int threads) : scene_(scene) {
         const std::string config = "threads=" + std::to_string(threads < 1 ? 1 : threads);
         device_ = rtcNewDevice(config.c_str());
         if (!device_)
@@ -149,7 +149,7 @@ class EmbreeBackend final : public Backend {
         if (!errors_.first.empty()) throw std::runtime_error(errors_.first);
     }
 
-    const Scene& scene_;
+    const PreparedScene& scene_;
     RTCDevice device_ = nullptr;
     RTCScene scene_handle_ = nullptr;
     ErrorSink errors_;
@@ -157,7 +157,7 @@ class EmbreeBackend final : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_embree_backend(const Scene& scene, int threads) {
+std::unique_ptr<Backend> make_embree_backend(const PreparedScene& scene, int threads) {
     if (!scene.spheres.empty() || !scene.planes.empty() || !scene.boxes.empty())
         throw std::runtime_error("the Embree back-end handles triangle meshes only");
     return std::make_unique<EmbreeBackend>(scene, threads);

@@ -33,7 +33,7 @@ double fastest(int repeat, const std::function<double()>& run) {
     return best;
 }
 
-double cpu_ms(const Scene& scene, int threads, Image& image) {
+double cpu_ms(const PreparedScene& scene, int threads, Image& image) {
     RenderOptions options;
     options.threads = threads;
     const auto start = std::chrono::steady_clock::now();
@@ -43,7 +43,7 @@ double cpu_ms(const Scene& scene, int threads, Image& image) {
 }
 
 // Camera rays a second: one a pixel, or a stage 10 scene's samples per pixel.
-std::string mrays(const Scene& scene, double ms) {
+std::string mrays(const PreparedScene& scene, double ms) {
     const double per_pixel =
         scene.features.sampled() ? std::max(1, scene.sampling.samples_per_pixel) : 1;
     char text[32];
@@ -65,8 +65,8 @@ int run_gpu_bench(const GpuBenchConfig& config, std::ostream& out) {
         const std::filesystem::path path = std::filesystem::path(file).is_absolute()
                                                ? std::filesystem::path(file)
                                                : source_dir() / file;
-        Scene scene = load_scene(path);
-        prepare_scene(scene, {.width = config.width, .height = config.height});
+        const PreparedScene scene =
+            prepare_scene(load_scene(path), {.width = config.width, .height = config.height});
         std::vector<Row> rows;
         Image cpu;
         for (int threads : {1, 2})

@@ -17,10 +17,10 @@ namespace {
 const char* const kScenes[] = {"soft_shadows", "depth_of_field",    "motion_blur",
                                "glossy",       "ambient_occlusion", "indirect"};
 
-Image8 render_with(Scene& scene, int spp, std::uint64_t seed, double* ms) {
+Image8 render_with(PreparedScene& scene, int spp, std::uint64_t seed, double* ms) {
     scene.sampling.samples_per_pixel = spp;  // the scene is prepared: only its features change
     scene.sampling.seed = seed;
-    scene.update_features();
+    refresh_features(scene);
     const auto start = std::chrono::steady_clock::now();
     Image image = render(scene, RenderMode::Shaded);
     if (ms)
@@ -48,9 +48,9 @@ SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
     CompareOptions grader;  // stage 10's grading.json
     grader.block = 8, grader.tolerance = 6;
     for (const char* name : kScenes) {
-        Scene scene = load_scene(source_dir() / "stages" / "10-sampling" / "scenes" /
-                                 (std::string(name) + ".json"));
-        prepare_scene(scene, {.width = width, .height = height});
+        PreparedScene scene = prepare_scene(load_scene(source_dir() / "stages" / "10-sampling" /
+                                                       "scenes" / (std::string(name) + ".json")),
+                                            {.width = width, .height = height});
         const std::uint64_t seed = scene.sampling.seed;
         // Another seed than the series', so the reference's noise is independent of theirs.
         const Image8 reference = render_with(scene, reference_spp, seed + 1000, nullptr);

@@ -57,7 +57,8 @@ std::string value_line(const GpuDebugRecord& r, const AssembledShader& shader) {
 }
 
 // One note as a line of the tree; the empty string for the notes another line includes.
-std::string note_line(const Scene& scene, const GpuDebugRecord& r, const GpuDebugRecord* next) {
+std::string note_line(const PreparedScene& scene, const GpuDebugRecord& r,
+                      const GpuDebugRecord* next) {
     static const char* const kRayNames[] = {"camera", "reflection", "refraction"};
     const int n3 = 3;
     switch (r.kind) {
@@ -122,7 +123,7 @@ void read_gpu_probe(const std::vector<glm::vec4>& output, std::size_t pixel_coun
     probe.shader = shader;
 }
 
-GpuPixelProbe debug_pixel_gpu(const Scene& scene, RenderMode mode, int x, int y,
+GpuPixelProbe debug_pixel_gpu(const PreparedScene& scene, RenderMode mode, int x, int y,
                               const GpuRenderOptions& options) {
     GpuPixelProbe probe;
     probe.x = x, probe.y = y;
@@ -131,7 +132,7 @@ GpuPixelProbe debug_pixel_gpu(const Scene& scene, RenderMode mode, int x, int y,
     return probe;
 }
 
-std::string gpu_pixel_text(const Scene& scene, const GpuPixelProbe& probe) {
+std::string gpu_pixel_text(const PreparedScene& scene, const GpuPixelProbe& probe) {
     std::string text = "pixel (" + std::to_string(probe.x) + ", " + std::to_string(probe.y) +
                        ") on the GPU: what the shader computed, in the order it did\n";
     int depth = -1;  // the last ray's: its notes are indented under it

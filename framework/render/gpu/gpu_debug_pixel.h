@@ -14,7 +14,7 @@
 #include "gpu/gl/shader_source.h"
 #include "gpu/shader_constants.h"
 #include "render/gpu/gpu_render.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -43,11 +43,11 @@ void read_gpu_probe(const std::vector<glm::vec4>& output, std::size_t pixel_coun
                     const AssembledShader& shader, GpuPixelProbe& probe);
 
 // Renders `scene` on the GPU with pixel (x, y) probed; throws GpuError as render_gpu does.
-GpuPixelProbe debug_pixel_gpu(const Scene& scene, RenderMode mode, int x, int y,
+GpuPixelProbe debug_pixel_gpu(const PreparedScene& scene, RenderMode mode, int x, int y,
                               const GpuRenderOptions& options = {});
 
 // The notes as an indented tree, one ray, hit or value a line; each rt_debug line names the
 // student's file and line and shows that line's text.
-std::string gpu_pixel_text(const Scene& scene, const GpuPixelProbe& probe);
+std::string gpu_pixel_text(const PreparedScene& scene, const GpuPixelProbe& probe);
 
 }  // namespace rt

@@ -37,7 +37,7 @@ constexpr int kMaxGpuSpheresWithMotion = 64;
 constexpr int kDefaultSamplesPerDispatch = 4;
 
 // A stage 10 scene drawn by the sampled path (several camera samples per pixel).
-bool gpu_sampled(const Scene& scene, RenderMode mode) {
+bool gpu_sampled(const PreparedScene& scene, RenderMode mode) {
     return mode == RenderMode::Shaded && scene.features.sampled();
 }
 
@@ -46,7 +46,7 @@ bool gpu_sampled(const Scene& scene, RenderMode mode) {
 struct SampledSlots {
     int area_lights, moving_spheres;
 };
-SampledSlots sampled_slots(const Scene& scene, RenderMode mode, bool uber) {
+SampledSlots sampled_slots(const PreparedScene& scene, RenderMode mode, bool uber) {
     if (uber && gpu_sampled(scene, mode)) return {kMaxGpuAreaLights, kMaxGpuMovingSpheres};
     return {std::max(1, int(scene.area_lights.size())),
             std::max(1, int(scene.moving_spheres.size()))};
@@ -72,7 +72,7 @@ GLuint upload(const GlApi& gl, int binding, const std::vector<T>& data) {
     return buffer;
 }
 
-void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMode mode) {
+void set_uniforms(const GlApi& gl, GLuint program, const PreparedScene& scene, RenderMode mode) {
     auto at = [&](const char* name) { return gl.GetUniformLocation(program, name); };
     auto vec3 = [&](const char* name, const Vec3& v) {
         gl.Uniform3f(at(name), float(v.x), float(v.y), float(v.z));
@@ -104,11 +104,11 @@ void set_uniforms(const GlApi& gl, GLuint program, const Scene& scene, RenderMod
 
 }  // namespace
 
-int gpu_trace_depth(const Scene& scene, RenderMode mode) {
+int gpu_trace_depth(const PreparedScene& scene, RenderMode mode) {
     return mode == RenderMode::Shaded ? std::clamp(scene.max_depth, 0, kMaxGpuDepth) : 0;
 }
 
-int gpu_feature_bits(const Scene& scene, RenderMode mode) {
+int gpu_feature_bits(const PreparedScene& scene, RenderMode mode) {
     const bool shaded = mode == RenderMode::Shaded;
     const Features& f = scene.features;
     auto bit = [](bool on, gpu::FeatureBit b) { return on ? int(b) : 0; };
@@ -125,13 +125,13 @@ int gpu_feature_bits(const Scene& scene, RenderMode mode) {
            bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect);
 }
 
-int gpu_texture_lookup(const Scene& scene) {
+int gpu_texture_lookup(const PreparedScene& scene) {
     return scene.texture_lookup == TextureLookup::Nearest    ? gpu::kLookupNearest
            : scene.texture_lookup == TextureLookup::Bilinear ? gpu::kLookupBilinear
                                                              : gpu::kLookupPerTexture;
 }
 
-void check_gpu_supported(const Scene& scene, RenderMode mode) {
+void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
@@ -203,7 +203,7 @@ void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4
     }
 }
 
-std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber) {
+std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) {
     std::string d;
     auto define = [&](bool on, const char* name) {
         if (on || uber) d += std::string("#define ") + name + "\n";
@@ -265,13 +265,13 @@ AssembledShader assemble_trace(const std::string& defines, const fs::path& stude
 }
 
 // The program's #defines: the scene's, and the --debug-pixel notes when asked for.
-std::string program_defines(const Scene& scene, RenderMode mode, bool uber, bool probe) {
+std::string program_defines(const PreparedScene& scene, RenderMode mode, bool uber, bool probe) {
     return gpu_defines(scene, mode, uber) + (probe ? "#define HAS_DEBUG_PIXEL\n" : "");
 }
 
 }  // namespace
 
-AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
+AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber,
                                       const fs::path& sampling_dir) {
     return assemble_trace(gpu_defines(scene, mode, uber), student_dir, sampling_dir);
@@ -361,7 +361,7 @@ std::vector<GLuint> upload_scene(const GlApi& gl, const gpu::GpuScene& packed,
 
 // The dispatches of one render: one, or for a stage 10 scene batches of camera samples, each
 // adding to the sums the last one left. False when `cancel` stopped it between batches.
-bool dispatch(const GlApi& gl, GLuint program, const Scene& scene, int samples,
+bool dispatch(const GlApi& gl, GLuint program, const PreparedScene& scene, int samples,
               const GpuRenderOptions& options) {
     const int batch =
         samples == 1 ? 1
@@ -384,8 +384,8 @@ bool dispatch(const GlApi& gl, GLuint program, const Scene& scene, int samples,
 // The pixels of the output buffer (after its stub flags) as an image. a: the hit distance
 // (depth) or the node count (bvh_visits); -2 a stub, -1 nothing. Stage 10: rgb the sum of
 // `samples` samples, divided here (the CPU's mean, in float).
-Image output_image(const std::vector<glm::vec4>& output, const Scene& scene, RenderMode mode,
-                   int samples) {
+Image output_image(const std::vector<glm::vec4>& output, const PreparedScene& scene,
+                   RenderMode mode, int samples) {
     Image image(scene.image.width, scene.image.height);
     std::vector<Real> values(image.pixels.size());
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
@@ -404,7 +404,7 @@ Image output_image(const std::vector<glm::vec4>& output, const Scene& scene, Ren
 
 }  // namespace
 
-Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timings_out,
+Image GpuRenderer::render(const PreparedScene& scene, RenderMode mode, GpuTimings* timings_out,
                           GpuPixelProbe* probe) {
     check_gpu_supported(scene, mode);
     GpuTimings timings;
@@ -455,7 +455,7 @@ Image GpuRenderer::render(const Scene& scene, RenderMode mode, GpuTimings* timin
     return output_image(output, scene, mode, samples);
 }
 
-Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options) {
+Image render_gpu(const PreparedScene& scene, RenderMode mode, const GpuRenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GpuRenderer renderer(options);
     const double context_ms =

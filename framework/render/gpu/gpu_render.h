@@ -18,7 +18,7 @@
 #include "gpu/gl/shader_source.h"
 #include "gpu/glsl_dirs.h"
 #include "image/image.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -54,16 +54,16 @@ struct GpuError : std::runtime_error {
 
 // What the shader is told besides the #defines (compute_io.glsl's uniforms; the constants of an
 // export): the ray tree's depth, framework.glsl's scene_features bits, texture_lookup's code.
-int gpu_trace_depth(const Scene& scene, RenderMode mode);
-int gpu_feature_bits(const Scene& scene, RenderMode mode);
-int gpu_texture_lookup(const Scene& scene);
+int gpu_trace_depth(const PreparedScene& scene, RenderMode mode);
+int gpu_feature_bits(const PreparedScene& scene, RenderMode mode);
+int gpu_texture_lookup(const PreparedScene& scene);
 
 // Throws GpuError ("SCENE: ...", one line) for what the GPU port cannot draw.
-void check_gpu_supported(const Scene& scene, RenderMode mode);
+void check_gpu_supported(const PreparedScene& scene, RenderMode mode);
 
 // The #defines trace.comp is compiled with for `scene` in `mode` (one per line); `uber`: every
 // feature, the largest array sizes (the shader then tests what the scene has at run time).
-std::string gpu_defines(const Scene& scene, RenderMode mode, bool uber = false);
+std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber = false);
 
 // A GPU renderer that keeps its context and compiled programs between renders (the viewer, the
 // benchmark): programs are cached by their #defines, i.e. by the scene's feature mask, so a
@@ -79,7 +79,7 @@ class GpuRenderer {
     // As render_gpu below; `timings`, when set, gets this render's figures (compile_ms is 0
     // when the program came from the cache); `probe`, when set, gets what the shader computed
     // for its pixel (render/gpu/gpu_debug_pixel.h).
-    Image render(const Scene& scene, RenderMode mode, GpuTimings* timings = nullptr,
+    Image render(const PreparedScene& scene, RenderMode mode, GpuTimings* timings = nullptr,
                  GpuPixelProbe* probe = nullptr);
     std::string describe() const;  // the context, as --gpu logs it
     std::size_t cached_programs() const { return programs_.size(); }
@@ -97,14 +97,14 @@ class GpuRenderer {
 // a stub is magenta and the stub is reported once on stderr (and counted: core/not_implemented.h).
 // A stage 10 scene in mode shaded accumulates its samples_per_pixel camera samples over several
 // dispatches into float sums and returns their mean.
-Image render_gpu(const Scene& scene, RenderMode mode, const GpuRenderOptions& options = {});
+Image render_gpu(const PreparedScene& scene, RenderMode mode, const GpuRenderOptions& options = {});
 
 // Reports each stub whose bit is set in the shader's stub_flags (compute_io.glsl), once per
 // process, as core/not_implemented.h does for C++ stubs.
 void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]);
 
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
-AssembledShader assemble_trace_shader(const Scene& scene, RenderMode mode,
+AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,
                                       const std::filesystem::path& student_dir = {},
                                       bool uber = false,
                                       const std::filesystem::path& sampling_dir = {});

@@ -89,7 +89,7 @@ std::string vec4_item(const glm::vec4& x) {
 const std::string kZero4 = "vec4(0.0)", kZeroInt4 = "ivec4(0)";
 
 // What trace.comp takes as uniforms, as constants.
-std::string uniform_constants(const Scene& scene, RenderMode mode) {
+std::string uniform_constants(const PreparedScene& scene, RenderMode mode) {
     const Camera& c = scene.camera;
     std::string s = "// The scene (" + (scene.source.empty() ? "built in code" : scene.source) +
                     "), as trace.comp reads it from its storage buffers and uniforms.\n";
@@ -209,7 +209,7 @@ std::string plane_box_light_constants(const gpu::GpuScene& g) {
     return s;
 }
 
-std::string scene_constants(const Scene& scene, RenderMode mode) {
+std::string scene_constants(const PreparedScene& scene, RenderMode mode) {
     const gpu::GpuScene g = gpu::pack_scene(scene);
     return uniform_constants(scene, mode) + geometry_constants(g) + material_constants(g) +
            plane_box_light_constants(g);
@@ -260,7 +260,7 @@ std::string scene_structs() {
     return out;
 }
 
-void check_exportable(const Scene& scene, RenderMode mode) {
+void check_exportable(const PreparedScene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
     if (mode == RenderMode::Depth || mode == RenderMode::BvhVisits)
         throw GpuError(where + ": mode \"" + to_string(mode) +
@@ -282,7 +282,8 @@ void check_exportable(const Scene& scene, RenderMode mode) {
 
 }  // namespace
 
-ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode, const fs::path& student_dir) {
+ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
+                                 const fs::path& student_dir) {
     check_exportable(scene, mode);
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const AssembledShader shader =

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gpu/gl/shader_source.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -37,7 +37,7 @@ constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
 // bvh_visits views (they scale by the whole image's range, which one pixel cannot know), images
 // beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes, and what render --gpu cannot
 // draw either.
-ShadertoyExport export_shadertoy(const Scene& scene, RenderMode mode,
+ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const std::filesystem::path& student_dir = {});
 
 }  // namespace rt

@@ -102,7 +102,7 @@ void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::u
 
 }  // namespace
 
-ShadertoyRun run_shadertoy_export(const Scene& scene, RenderMode mode) {
+ShadertoyRun run_shadertoy_export(const PreparedScene& scene, RenderMode mode) {
     const ShadertoyExport shader = export_shadertoy(scene, mode);
     const std::string wrapped = kShadertoyHead + shader.text + kShadertoyTail;
     ShadertoyRun run;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "image/image.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
 
@@ -23,6 +23,6 @@ struct ShadertoyRun {
 // Exports `scene` in `mode`, checks and draws it; each stub a pixel reached is reported once
 // (core/not_implemented.h), as render_gpu reports them. Throws GpuError for what cannot be
 // exported (export_shadertoy).
-ShadertoyRun run_shadertoy_export(const Scene& scene, RenderMode mode);
+ShadertoyRun run_shadertoy_export(const PreparedScene& scene, RenderMode mode);
 
 }  // namespace rt

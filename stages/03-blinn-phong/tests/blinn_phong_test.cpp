@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "render/prepare.h"
 #include "render/shade.h"
 #include "stage_api/stage03.h"
 #include "testing/expect_near.h"
@@ -122,7 +123,7 @@ TEST_F(BlinnPhong, NeverNegativeOrNaN) {
 
 // Without lights: k_e + k_a I_a.
 TEST_F(DirectLight, EmissiveAndAmbient) {
-    Scene scene;
+    PreparedScene scene;
     scene.ambient_light = Color(0.5f, 0.25f, 1);
     Material m;
     m.emissive = Color(0.1f, 0.2f, 0.3f), m.ambient = Color(0.2f);
@@ -132,7 +133,7 @@ TEST_F(DirectLight, EmissiveAndAmbient) {
 
 // Lights add up, and the visibility filter scales each light separately.
 TEST_F(DirectLight, SumsLightsThroughVisibility) {
-    Scene scene;
+    PreparedScene scene;
     scene.lights = {directional_light(Vec3(0, -1, 0), Color(1)),
                     point_light(Vec3(0, 3, 0), Color(5))};
     const Material m = material(Color(0.5f), Color(0), 1);
@@ -148,8 +149,8 @@ TEST_F(DirectLight, SumsLightsThroughVisibility) {
 
 // One unit sphere at the origin, seen from (0, 0, 5) through the centre pixel of a 101x101
 // image, lit by one light.
-Scene one_sphere(const Light& light) {
-    Scene scene;
+PreparedScene one_sphere(const Light& light) {
+    PreparedScene scene;
     scene.camera =
         make_look_at_camera(Projection::Perspective, Vec3(0, 0, 5), Vec3(0), Vec3(0, 1, 0), 30, 2);
     scene.image = {101, 101};
@@ -161,14 +162,14 @@ Scene one_sphere(const Light& light) {
     scene.materials = {m};
     scene.spheres = {Sphere{Vec3(0), 1, 0}};
     scene.lights = {light};
-    scene.update_features();
+    refresh_features(scene);
     return scene;
 }
 
 // The point nearest the light, (0, 0, 1): N = L = V = H, r = 2, A = 1 / 5, so the pixel is
 // k_e + k_a I_a + I_L / 5 (k_d + k_s).
 TEST_F(DirectLight, PixelNearestTheLight) {
-    const Scene scene = one_sphere(point_light(Vec3(0, 0, 3), Color(1, 2, 3)));
+    const PreparedScene scene = one_sphere(point_light(Vec3(0, 0, 3), Color(1, 2, 3)));
     const Material& m = scene.materials[0];
     const Color expected = m.emissive + m.ambient * scene.ambient_light +
                            Color(1, 2, 3) / 5.0f * (m.diffuse + m.specular);
@@ -180,7 +181,7 @@ TEST_F(DirectLight, PixelNearestTheLight) {
 // Light travelling along -x: (0, 0, 1) is on the terminator (N.L = 0), so only k_e + k_a I_a is
 // left; a pixel of the lit side at the same height gets more.
 TEST_F(DirectLight, PixelOnTheTerminator) {
-    const Scene scene = one_sphere(directional_light(Vec3(-1, 0, 0), Color(1)));
+    const PreparedScene scene = one_sphere(directional_light(Vec3(-1, 0, 0), Color(1)));
     const Material& m = scene.materials[0];
     expect_color_near(shade_pixel(scene, 50, 50), m.emissive + m.ambient * scene.ambient_light,
                       "centre pixel (50, 50), on the terminator (N.L = 0): k_e + k_a I_a only");

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "render/prepare.h"
 #include "render/render.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage04.h"
@@ -38,15 +39,15 @@ Material glass(Color k_t) {
 }
 
 // A floor y = 0 (plane 0, material 0: opaque) and whatever a test adds after it.
-Scene floor_scene() {
-    Scene scene;
+PreparedScene floor_scene() {
+    PreparedScene scene;
     scene.materials = {Material{}};
     scene.planes = {Plane{Vec3(0), Vec3(0, 1, 0), 0}};
     return scene;
 }
 
 // The surface point of the floor at (x, 0, z), seen from above.
-SurfacePoint floor_point(const Scene& scene, Real x, Real z) {
+SurfacePoint floor_point(const PreparedScene& scene, Real x, Real z) {
     Hit hit;
     hit.t = 1;
     hit.point = Vec3(x, 0, z);
@@ -62,7 +63,7 @@ using rt::testing::expect_color_near;
 // The origin is the framework's robust offset origin, the direction the light's, and the range
 // ends at the light (point) or never (directional).
 TEST_F(ShadowRayContract, RobustOriginAndRange) {
-    const Scene scene = floor_scene();
+    const PreparedScene scene = floor_scene();
     const SurfacePoint at = floor_point(scene, 0.3f, -0.2f);
     const LightSample sample = illuminate(point_light(Vec3(0.3f, 4, -0.2f)), at.point);
     const ShadowRay s = shadow_ray(at, sample);
@@ -80,7 +81,7 @@ TEST_F(ShadowRayContract, RobustOriginAndRange) {
 
 // Stage 10's motion blur gives rays a time; a shadow ray sees the scene at its point's time.
 TEST_F(ShadowRayContract, KeepsThePointsTime) {
-    const Scene scene = floor_scene();
+    const PreparedScene scene = floor_scene();
     SurfacePoint at = floor_point(scene, 0.3f, -0.2f);
     at.time = 0.75f;
     const ShadowRay s = shadow_ray(at, illuminate(point_light(Vec3(0.3f, 4, -0.2f)), at.point));
@@ -93,13 +94,13 @@ TEST_F(ShadowRayContract, KeepsThePointsTime) {
 struct AcneCount {
     int acne = 0, lit = 0, pixels = 0;
 };
-AcneCount count_acne(Scene scene) {
+AcneCount count_acne(PreparedScene scene) {
     scene.mode = RenderMode::Shaded;
     scene.shadows = false;
-    scene.update_features();
+    refresh_features(scene);
     const Image unshadowed = render(scene, RenderMode::Shaded);
     scene.shadows = true;
-    scene.update_features();
+    refresh_features(scene);
     const Image shadowed = render(scene, RenderMode::Shaded);
     AcneCount count;
     count.pixels = int(shadowed.pixels.size());
@@ -110,7 +111,7 @@ AcneCount count_acne(Scene scene) {
     return count;
 }
 
-void expect_no_acne(const Scene& scene) {
+void expect_no_acne(const PreparedScene& scene) {
     const AcneCount c = count_acne(scene);
     EXPECT_GT(c.lit, c.pixels / 2) << "the test scene should be mostly lit";
     EXPECT_EQ(c.acne, 0) << c.acne << " of " << c.pixels
@@ -120,8 +121,8 @@ void expect_no_acne(const Scene& scene) {
 // A slightly tilted plane through `point` (tilted so that no coordinate of its points is exact:
 // an axis-aligned plane would hide the rounding error), the camera at `point + eye_offset`, and a
 // directional light `elevation_degrees` above the plane.
-Scene plane_scene(Vec3 point, Vec3 eye_offset, float elevation_degrees) {
-    Scene scene;
+PreparedScene plane_scene(Vec3 point, Vec3 eye_offset, float elevation_degrees) {
+    PreparedScene scene;
     const Vec3 n = glm::normalize(Vec3(0.05f, 1, 0.03f));
     const Vec3 tangent = glm::normalize(glm::cross(Vec3(0, 0, 1), n));
     const Real e = glm::radians(Real(elevation_degrees));
@@ -150,7 +151,7 @@ TEST_F(Acne, GrazingLight) {
 
 // A sphere far from the origin lit from the side: acne shows up near the terminator.
 TEST_F(Acne, SphereFarFromOriginNearTerminator) {
-    Scene scene;
+    PreparedScene scene;
     const Vec3 c(-1e4f, 2e3f, 1e4f);
     scene.camera =
         make_look_at_camera(Projection::Perspective, c + Vec3(0, 0, 6), c, Vec3(0, 1, 0), 30, 2);
@@ -166,7 +167,7 @@ TEST_F(Acne, SphereFarFromOriginNearTerminator) {
 // An opaque slab 1e-5 thick, 1e-5 above the floor, still shades the floor under it: the offset
 // is as small as the rounding error allows, not a fixed distance.
 TEST_F(Transmittance, ThinOccluderCloseToSurface) {
-    Scene scene = floor_scene();
+    PreparedScene scene = floor_scene();
     scene.boxes = {Box{Vec3(-0.5f, 1e-5f, -0.5f), Vec3(0.5f, 2e-5f, 0.5f), 0}};
     const SurfacePoint at = floor_point(scene, 0.2f, 0.1f);
     expect_color_near(
@@ -183,7 +184,7 @@ TEST_F(Transmittance, ThinOccluderCloseToSurface) {
 // Nothing between the point and the light: occluders beyond the light, or below the surface,
 // do not count.
 TEST_F(Transmittance, OnlyBetweenPointAndLight) {
-    Scene scene = floor_scene();
+    PreparedScene scene = floor_scene();
     scene.spheres = {Sphere{Vec3(0, 6, 0), 1, 0}, Sphere{Vec3(0, -3, 0), 1, 0}};
     const SurfacePoint at = floor_point(scene, 0, 0);
     expect_color_near(
@@ -199,7 +200,7 @@ TEST_F(Transmittance, OnlyBetweenPointAndLight) {
 // Thin-shell shadows: a glass triangle filters once, a glass sphere twice (in and out), and
 // several filters multiply.
 TEST_F(Transmittance, ColoredShadowsThroughGlass) {
-    Scene scene = floor_scene();
+    PreparedScene scene = floor_scene();
     scene.materials.push_back(glass(Color(0.9f, 0.5f, 0.2f)));
     scene.materials.push_back(glass(Color(0.5f, 1, 0.8f)));
     scene.vertices = {Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(0, 1, 2)};

@@ -2,6 +2,7 @@
 // reflected and a refracted ray, and the contributions of its nodes sum to the pixel's colour.
 #include <nlohmann/json.hpp>
 
+#include "render/prepare.h"
 #include "render/ray_tree.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
@@ -24,8 +25,8 @@ void walk(const nlohmann::json& node, Color& sum, int& reflections, int& refract
 }
 
 TEST_F(Debugger, WhittedPixelTreeSumsToPixel) {
-    const Scene scene =
-        load_scene(testing::source_dir() / "stages/05-recursion/scenes/whitted.json");
+    const PreparedScene scene = prepare_scene(
+        load_scene(testing::source_dir() / "stages/05-recursion/scenes/whitted.json"));
     const PixelTree tree = debug_pixel(scene, kX, kY);
     const auto json = nlohmann::json::parse(ray_tree_json(scene, tree));
     Color sum(0);
@@ -49,8 +50,8 @@ TEST_F(Debugger, WhittedPixelTreeSumsToPixel) {
 
 // The overlay draws the camera ray's pixel red and the secondary rays in their colours.
 TEST_F(Debugger, OverlayDrawsTheTree) {
-    const Scene scene =
-        load_scene(testing::source_dir() / "stages/05-recursion/scenes/whitted.json");
+    const PreparedScene scene = prepare_scene(
+        load_scene(testing::source_dir() / "stages/05-recursion/scenes/whitted.json"));
     const PixelTree tree = debug_pixel(scene, kX, kY);
     Image image(scene.image.width, scene.image.height, Color(0.5f));
     draw_ray_tree(scene, tree, image);

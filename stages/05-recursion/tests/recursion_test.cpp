@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "render/prepare.h"
 #include "render/shade.h"
 #include "stage_api/stage05.h"
 #include "testing/expect_near.h"
@@ -203,12 +204,12 @@ TEST_F(Secondary, FresnelWeights) {
 // Two parallel mirrors z = 0 and z = 2 (k_r = 1/2, emission e): a ray bouncing between them sees
 // e (1 + 1/2 + ... + 1/2^N) with N = max_depth, and its tree is exactly N + 1 rays deep.
 TEST_F(Recursion, DepthLimitRespected) {
-    Scene scene;
+    PreparedScene scene;
     Material m;
     m.diffuse = Color(0), m.emissive = Color(0.1f, 0.2f, 0.4f), m.reflective = Color(0.5f);
     scene.materials = {m};
     scene.planes = {Plane{Vec3(0), Vec3(0, 0, 1), 0}, Plane{Vec3(0, 0, 2), Vec3(0, 0, -1), 0}};
-    scene.update_features();
+    refresh_features(scene);
     for (int depth : {0, 1, 2, 5, 12}) {
         scene.max_depth = depth;
         RayNode tree;

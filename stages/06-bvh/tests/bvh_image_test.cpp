@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "bvh_test_support.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
@@ -17,9 +18,11 @@ RT_TEST_SUITE(BvhImage);
 // image (a valid tree built a little differently would fail). Instead: rays that miss the root
 // box test one box and are the darkest pixels; the busiest pixel is at the top of the ramp.
 TEST_F(BvhImage, NodeVisitsHeatMap) {
-    Scene scene = load_scene(testing::source_dir() / "stages/06-bvh/scenes/node_visits.json");
-    scene.image = ImageSize{80, 60};
-    ASSERT_TRUE(build_acceleration(scene).built);
+    AccelerationReport tree;
+    const PreparedScene scene =
+        prepare_scene(load_scene(testing::source_dir() / "stages/06-bvh/scenes/node_visits.json"),
+                      {.width = 80, .height = 60}, {}, &tree);
+    ASSERT_TRUE(tree.built);
     const rt::Image heat = render(scene, RenderMode::BvhVisits);
     float darkest = 1e9f, brightest = 0;
     for (const Color& c : heat.pixels) {
@@ -35,9 +38,11 @@ TEST_F(BvhImage, NodeVisitsHeatMap) {
 }
 // Bit for bit: the tree only skips work, it never changes what a ray hits.
 TEST_F(BvhImage, SameAsWithoutTheTree) {
-    Scene scene = load_scene(testing::source_dir() / "stages/06-bvh/scenes/mesh_garden.json");
-    scene.image = ImageSize{40, 30};  // small: the loop over 55,000 triangles is slow
-    ASSERT_TRUE(build_acceleration(scene).built);
+    AccelerationReport tree;  // small: the loop over 55,000 triangles is slow
+    PreparedScene scene =
+        prepare_scene(load_scene(testing::source_dir() / "stages/06-bvh/scenes/mesh_garden.json"),
+                      {.width = 40, .height = 30}, {}, &tree);
+    ASSERT_TRUE(tree.built);
     const rt::Image with = render(scene, RenderMode::Shaded);
     scene.accelerator = Accelerator::None;
     scene.bvh = Bvh{};

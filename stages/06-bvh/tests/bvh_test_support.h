@@ -4,19 +4,20 @@
 
 #include "geometry/procedural_mesh.h"
 #include "render/accelerate.h"
+#include "render/prepare.h"
 #include "scene/bvh_primitives.h"
 #include "testing/random.h"
 
 namespace rt::bvh_test {
 
 // A scene whose only surfaces are `mesh` (material 0).
-inline Scene scene_from_mesh(const TriangleMesh& mesh) {
-    Scene scene;
+inline PreparedScene scene_from_mesh(const TriangleMesh& mesh) {
+    PreparedScene scene;
     scene.vertices = mesh.vertices;
     for (const auto& t : mesh.triangles) scene.triangles.push_back(Triangle{t, 0});
     scene.materials.emplace_back();
     scene.accelerator = Accelerator::Bvh;
-    scene.update_features();
+    refresh_features(scene);
     return scene;
 }
 

@@ -7,6 +7,7 @@
 
 #include "bvh_test_support.h"
 #include "remote/call_each.h"
+#include "render/prepare.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -102,7 +103,7 @@ struct Comparison {
 // `steps`: how many float steps of t two answers may differ by and both be right. Hard rays
 // (through vertices, along edges) get more: there an intersection test's t is ill-conditioned
 // and may even fall a little outside the triangle's own box.
-void compare_ray(const Scene& scene, const Ray& ray, Interval range, Comparison& c,
+void compare_ray(const PreparedScene& scene, const Ray& ray, Interval range, Comparison& c,
                  Real steps = 8) {
     Hit brute, bvh;
     const bool b = intersect_nearest(ray, scene, range, brute);
@@ -135,13 +136,13 @@ void compare_ray(const Scene& scene, const Ray& ray, Interval range, Comparison&
     }
 }
 
-Scene built(Scene scene) {
+PreparedScene built(PreparedScene scene) {
     const AccelerationReport report = build_acceleration(scene);
     EXPECT_TRUE(report.built) << report.problem;
     return scene;
 }
 
-void expect_same_as_loop(const Scene& scene, const char* name, std::uint64_t seed) {
+void expect_same_as_loop(const PreparedScene& scene, const char* name, std::uint64_t seed) {
     Random random(seed);
     Comparison c;
     Aabb box;
@@ -195,7 +196,7 @@ TEST_F(NearestHit, SameAsLoopOnTriangleSoup) {
 }
 
 TEST_F(NearestHit, SameAsLoopOnMixedPrimitives) {
-    Scene scene = scene_from_mesh(make_torus(24, 12));
+    PreparedScene scene = scene_from_mesh(make_torus(24, 12));
     Random random(8);
     for (int i = 0; i < 40; ++i) {
         scene.spheres.push_back(Sphere{random.vec(-2, 2), Real(random.uniform(0.05, 0.4)), 0});
@@ -203,12 +204,12 @@ TEST_F(NearestHit, SameAsLoopOnMixedPrimitives) {
         scene.boxes.push_back(Box{lo, lo + random.vec(Real(0.05), Real(0.5)), 0});
     }
     scene.planes.push_back(Plane{{0, -1.5, 0}, {0, 1, 0}, 0});
-    scene.update_features();
+    refresh_features(scene);
     expect_same_as_loop(built(scene), "torus, spheres, boxes and a plane", 5);
 }
 
 TEST_F(NearestHit, FillsPrimitiveAndMaterial) {
-    Scene scene = scene_from_mesh(make_icosphere(2));
+    PreparedScene scene = scene_from_mesh(make_icosphere(2));
     scene.materials.resize(3);
     for (std::size_t i = 0; i < scene.triangles.size(); ++i)
         scene.triangles[i].material = int(i % 3);
@@ -224,7 +225,7 @@ TEST_F(NearestHit, FillsPrimitiveAndMaterial) {
 }
 
 TEST_F(AnyHit, RespectsTheRange) {
-    const Scene scene = built(scene_from_mesh(make_icosphere(3)));
+    const PreparedScene scene = built(scene_from_mesh(make_icosphere(3)));
     const Ray ray{{0, 0, 5}, {0, 0, -1}};  // enters the unit sphere near t = 4
     EXPECT_TRUE(bvh_intersect_any(scene, ray, Interval{0, kInfinity}));
     EXPECT_FALSE(bvh_intersect_any(scene, ray, Interval{0, 3.9})) << "stops before the sphere";
@@ -233,7 +234,7 @@ TEST_F(AnyHit, RespectsTheRange) {
 }
 
 TEST_F(AnyHit, StopsEarlierThanNearest) {
-    const Scene scene = built(scene_from_mesh(make_triangle_soup(5000, 12)));
+    const PreparedScene scene = built(scene_from_mesh(make_triangle_soup(5000, 12)));
     Random random(2);
     std::uint64_t any_tests = 0, nearest_tests = 0;
     for (int i = 0; i < 500; ++i) {
@@ -248,7 +249,7 @@ TEST_F(AnyHit, StopsEarlierThanNearest) {
 }
 
 TEST_F(NearestHit, NoTreeMeansPlanesOnly) {
-    Scene scene;
+    PreparedScene scene;
     scene.planes.push_back(Plane{{0, 0, 0}, {0, 1, 0}, 0});
     scene.materials.emplace_back();
     Hit hit;
@@ -263,7 +264,7 @@ TEST_F(Visits, GrowLogarithmically) {
     double visits[4] = {};
     std::size_t triangles[4] = {};
     for (int level = 3; level <= 6; ++level) {
-        const Scene scene = built(scene_from_mesh(make_icosphere(level)));
+        const PreparedScene scene = built(scene_from_mesh(make_icosphere(level)));
         triangles[level - 3] = scene.triangles.size();
         Random random(42);
         BvhStats stats;

@@ -3,6 +3,7 @@
 // step on real hits.
 #include <cmath>
 
+#include "render/prepare.h"
 #include "render/texturing.h"
 #include "stage_api/stage07.h"
 #include "testing/expect_near.h"
@@ -104,7 +105,7 @@ TEST_F(TriangleTexcoord, InterpolatesVertexUvs) {
 }
 
 TEST_F(TriangleTexcoord, TheTexturingStepUsesVertexUvsNotBarycentrics) {
-    Scene scene;
+    PreparedScene scene;
     scene.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     scene.uvs = {Vec2(0.5f, 0.5f), Vec2(1, 0.5f), Vec2(0.5f, 1)};
     scene.triangles.push_back(Triangle{{0, 1, 2}, 0});

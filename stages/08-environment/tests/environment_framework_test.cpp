@@ -10,6 +10,7 @@
 #include "core/not_implemented.h"
 #include "image/image.h"
 #include "render/background.h"
+#include "render/prepare.h"
 #include "scene/scene_loader.h"
 #include "stage_api/stage08.h"
 #include "testing/environment_images.h"
@@ -21,9 +22,9 @@ namespace {
 // The hook: a scene without an environment never reaches stage 08 code (no stub is counted even
 // in a starter tree), one with an environment gets environment_radiance.
 TEST(Background, WithoutAnEnvironmentIsTheScenesColorAndCallsNoStageCode) {
-    Scene scene;
+    PreparedScene scene;
     scene.background = Color(0.1f, 0.2f, 0.3f);
-    scene.update_features();
+    refresh_features(scene);
     const auto stubs = stub_calls_total();
     EXPECT_EQ(background(scene, Vec3(0, 0, -1)), scene.background);
     EXPECT_EQ(background(scene, Vec3(5, 1, 0)), scene.background);
@@ -56,11 +57,11 @@ TEST(EnvironmentImages, CommittedFilesAreTheGeneratorsOutput) {
 }
 
 TEST(EnvironmentScenes, LoadWithTheirEnvironment) {
-    const Scene sky = load_scene(kScenes / "sky.json");
+    const PreparedScene sky = prepare_scene(load_scene(kScenes / "sky.json"));
     EXPECT_EQ(sky.environment.kind, EnvironmentKind::LatLong);
     EXPECT_TRUE(sky.features.environment);
     EXPECT_NE(sky.features.describe().find("environment"), std::string::npos);
-    const Scene cube = load_scene(kScenes / "cube_mirror.json");
+    const PreparedScene cube = prepare_scene(load_scene(kScenes / "cube_mirror.json"));
     ASSERT_EQ(cube.environment.kind, EnvironmentKind::CubeMap);
     for (int f = 0; f < kCubeFaces; ++f) {
         const TextureImage& image = cube.texture_images[std::size_t(cube.environment.faces[f])];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/not_implemented.h"
+#include "scene/prepared_scene.h"
 #include "scene/procedural_sky.h"
 #include "scene/scene_loader.h"
 
@@ -94,7 +95,7 @@ TEST(EnvironmentAmbient, SkySceneLoadsWithoutAnyFileAndAddsItsAmbient) {
     const TextureImage& image = plain.texture_images[std::size_t(plain.environment.image)];
     EXPECT_EQ(image.width, 512);
     EXPECT_EQ(image.height, 256);
-    EXPECT_TRUE(plain.features.environment);
+    EXPECT_TRUE(scene_features(plain).environment);
     EXPECT_EQ(plain.ambient_light, Color(0));
     const Scene lit = parse_scene(
         R"({"ambient_light": [0.1, 0.1, 0.1], "environment": {"sky": {}, "ambient": 0.5}})",

@@ -6,6 +6,7 @@
 
 #include "core/not_implemented.h"
 #include "render/background.h"
+#include "render/prepare.h"
 #include "scene/procedural_sky.h"
 #include "scene/scene_loader.h"
 #include "stage_api/stage08.h"
@@ -25,15 +26,15 @@ void expect_color(const Color& got, const Color& want, const std::string& what) 
 }
 
 // A w x h lat-long image whose texel (i, j) is (i, j, 1 + i + j) / 10.
-Scene latlong_scene(int w, int h) {
-    Scene scene;
+PreparedScene latlong_scene(int w, int h) {
+    PreparedScene scene;
     std::vector<Color> texels;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i)
             texels.push_back(Color(float(i), float(j), float(1 + i + j)) / 10.0f);
     scene.environment.kind = EnvironmentKind::LatLong;
     scene.environment.image = scene.add_texture_image(w, h, texels);
-    scene.update_features();
+    refresh_features(scene);
     return scene;
 }
 
@@ -42,7 +43,7 @@ Color texel(int i, int j) {
 }
 
 TEST_F(Radiance, LatLongTexelCentersGiveTheirTexel) {
-    const Scene scene = latlong_scene(8, 4);
+    const PreparedScene scene = latlong_scene(8, 4);
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 8; ++i) {
             const Vec3 d = latlong_direction((Real(i) + 0.5f) / 8, (Real(j) + 0.5f) / 4);
@@ -53,7 +54,7 @@ TEST_F(Radiance, LatLongTexelCentersGiveTheirTexel) {
 
 TEST_F(Radiance, LatLongWrapsAcrossTheSeam) {
     // At -z (u = 0) on row 1's centre: half of column 0, half of column 7.
-    const Scene scene = latlong_scene(8, 4);
+    const PreparedScene scene = latlong_scene(8, 4);
     const Vec3 d = latlong_direction(0, 1.5f / 4);
     expect_color(environment_radiance(scene, d), (texel(0, 1) + texel(7, 1)) * 0.5f,
                  "u = 0 blends the first and the last column");
@@ -61,7 +62,7 @@ TEST_F(Radiance, LatLongWrapsAcrossTheSeam) {
 
 TEST_F(Radiance, PolesDoNotBlendWithTheOtherEdge) {
     // Straight up is v = 0: row 0 only (the bottom row would add green 0.3).
-    const Scene scene = latlong_scene(8, 4);
+    const PreparedScene scene = latlong_scene(8, 4);
     const Color up = environment_radiance(scene, Vec3(0, 1, 0));
     EXPECT_NEAR(up.g, 0, 1e-6f) << "straight up must read row 0 only";
     const Color down = environment_radiance(scene, Vec3(0, -2, 0));
@@ -69,8 +70,8 @@ TEST_F(Radiance, PolesDoNotBlendWithTheOtherEdge) {
 }
 
 TEST_F(Radiance, RotationTurnsTheEnvironmentAboutY) {
-    Scene scene = latlong_scene(8, 4);
-    const Scene unrotated = scene;
+    PreparedScene scene = latlong_scene(8, 4);
+    const PreparedScene unrotated = scene;
     scene.environment.rotate_y = 90;
     // Turned by +90 degrees (right-hand rule about +y): +z goes to +x, +x to -z.
     expect_color(environment_radiance(scene, Vec3(1, 0.3f, 0)),
@@ -86,15 +87,15 @@ TEST_F(Radiance, RotationTurnsTheEnvironmentAboutY) {
 }
 
 TEST_F(Radiance, IntensityScalesTheImage) {
-    Scene scene = latlong_scene(8, 4);
+    PreparedScene scene = latlong_scene(8, 4);
     scene.environment.intensity = 2.5f;
     const Vec3 d = latlong_direction(2.5f / 8, 2.5f / 4);
     expect_color(environment_radiance(scene, d), texel(2, 2) * 2.5f, "intensity 2.5");
 }
 
 // Six 2x2 faces; face f's texel (i, j) is colour (f + 1, i, j) / 10.
-Scene cube_scene() {
-    Scene scene;
+PreparedScene cube_scene() {
+    PreparedScene scene;
     scene.environment.kind = EnvironmentKind::CubeMap;
     for (int f = 0; f < 6; ++f) {
         std::vector<Color> texels;
@@ -103,12 +104,12 @@ Scene cube_scene() {
                 texels.push_back(Color(float(f + 1), float(i), float(j)) / 10.0f);
         scene.environment.faces[f] = scene.add_texture_image(2, 2, texels);
     }
-    scene.update_features();
+    refresh_features(scene);
     return scene;
 }
 
 TEST_F(Radiance, CubeFacesAreLookedUpWithClampAndNoBleeding) {
-    const Scene scene = cube_scene();
+    const PreparedScene scene = cube_scene();
     const Vec3 axes[6] = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
                           Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
     for (int f = 0; f < 6; ++f)  // the centre: the four texels equally
@@ -123,14 +124,14 @@ TEST_F(Radiance, CubeFacesAreLookedUpWithClampAndNoBleeding) {
 }
 
 TEST_F(Radiance, NoEnvironmentIsTheBackgroundColor) {
-    Scene scene;
+    PreparedScene scene;
     scene.background = Color(0.1f, 0.2f, 0.3f);
-    scene.update_features();
+    refresh_features(scene);
     EXPECT_EQ(environment_radiance(scene, Vec3(0, 0, -1)), scene.background);
 }
 
 TEST_F(Radiance, BackgroundUsesTheEnvironment) {
-    const Scene scene = latlong_scene(8, 4);
+    const PreparedScene scene = latlong_scene(8, 4);
     ASSERT_TRUE(scene.features.environment);
     const Vec3 d(0.2f, 0.4f, -1);
     EXPECT_EQ(background(scene, d), environment_radiance(scene, d));

@@ -16,6 +16,7 @@
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
@@ -50,18 +51,15 @@ std::vector<std::string> all_scenes() {
 class Conformance : public ::rt::testing::StageTest,
                     public ::testing::WithParamInterface<std::string> {};
 
-Scene small_scene(const std::string& relative) {
+PreparedScene small_scene(const std::string& relative) {
     Scene scene = load_scene(::rt::testing::source_dir() / "stages" / relative);
-    scene.image.height =
-        std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
-    scene.image.width = 64;
-    build_acceleration(scene);
-    return scene;
+    const int height = std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
+    return prepare_scene(std::move(scene), {.width = 64, .height = height});
 }
 
 // The GPU image of `scene` in `mode` against the CPU's, under the metric above. A failure keeps
 // both images and their difference, and says how to see the scene whole.
-void expect_gpu_matches_cpu(const Scene& scene, RenderMode mode, const std::string& what,
+void expect_gpu_matches_cpu(const PreparedScene& scene, RenderMode mode, const std::string& what,
                             const GpuRenderOptions& options = {}) {
     const Image8 cpu = to_image8(render(scene, mode));
     const Image8 gpu = to_image8(render_gpu(scene, mode, options));
@@ -84,7 +82,7 @@ void expect_gpu_matches_cpu(const Scene& scene, RenderMode mode, const std::stri
 
 TEST_P(Conformance, GpuMatchesCpu) {
     const std::string& file = GetParam();
-    const Scene scene = small_scene(file);
+    const PreparedScene scene = small_scene(file);
     RenderMode mode = scene.mode;
     if (const auto limit = kGpuLimits.find(file); limit != kGpuLimits.end()) {
         try {
@@ -107,7 +105,7 @@ TEST_P(Conformance, GpuMatchesCpu) {
 class UberConformance : public Conformance {};
 
 TEST_P(UberConformance, GpuMatchesCpu) {
-    const Scene scene = small_scene(GetParam());
+    const PreparedScene scene = small_scene(GetParam());
     GpuRenderOptions uber;
     uber.uber = true;
     expect_gpu_matches_cpu(scene, scene.mode, GetParam() + " with --uber", uber);
@@ -132,9 +130,9 @@ INSTANTIATE_TEST_SUITE_P(Ungraded, UberConformance,
 RT_TEST_SUITE(GpuContexts);
 
 TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
-    Scene scene = load_scene(::rt::testing::source_dir() / "stages/04-shadows/scenes/shadows.json");
-    scene.image.width = 32, scene.image.height = 24;
-    build_acceleration(scene);
+    const PreparedScene scene = prepare_scene(
+        load_scene(::rt::testing::source_dir() / "stages/04-shadows/scenes/shadows.json"),
+        {.width = 32, .height = 24});
     GpuRenderOptions osmesa;
     osmesa.context = GlKind::OsMesa;
     const Image a = render_gpu(scene, RenderMode::Shaded);

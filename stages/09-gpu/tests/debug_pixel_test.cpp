@@ -9,6 +9,7 @@
 #include "render/accelerate.h"
 #include "render/gpu/gpu_debug_pixel.h"
 #include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
 #include "render/ray_tree.h"
 #include "scene/scene_loader.h"
 #include "student_copy.h"
@@ -21,11 +22,9 @@ namespace {
 
 using namespace gpu_test;
 
-Scene whitted() {
-    Scene scene =
-        load_scene(::rt::testing::source_dir() / "stages/05-recursion/scenes/whitted.json");
-    build_acceleration(scene);
-    return scene;
+PreparedScene whitted() {
+    return prepare_scene(
+        load_scene(::rt::testing::source_dir() / "stages/05-recursion/scenes/whitted.json"));
 }
 
 // The notes of one kind, in order.
@@ -44,7 +43,7 @@ int count_rays(const RayNode& node) {
 
 // Probing a pixel changes no pixel of the image.
 TEST(GpuDebugPixel, LeavesTheImageAsItWas) {
-    const Scene scene = whitted();
+    const PreparedScene scene = whitted();
     GpuRenderer renderer;
     const Image plain = renderer.render(scene, RenderMode::Shaded);
     GpuPixelProbe probe;
@@ -57,7 +56,7 @@ TEST(GpuDebugPixel, LeavesTheImageAsItWas) {
 // A glass sphere's pixel: the same rays as the CPU's tree (stage 05's debugger), the same first
 // hit, and the pixel's colour. Needs a right stage 09 (and stage 05) to compare.
 TEST(GpuDebugPixel, FollowsTheCpuRayTree) {
-    const Scene scene = whitted();
+    const PreparedScene scene = whitted();
     const GpuPixelProbe probe = debug_pixel_gpu(scene, RenderMode::Shaded, 100, 80);
     const std::vector<GpuDebugRecord> pixel = notes(probe, gpu::kDebugPixel);
     ASSERT_EQ(pixel.size(), 1u) << gpu_pixel_text(scene, probe);
@@ -92,7 +91,7 @@ TEST(GpuDebugPixel, StudentValuesNameTheirFileAndLine) {
     const int line = int(std::count(camera.begin(), camera.begin() + long(at), '\n')) + 2;
     GpuRenderOptions options;
     options.student_dir = copy.dir();
-    Scene scene = whitted();
+    PreparedScene scene = whitted();
     scene.image.width = 40, scene.image.height = 30;
     const GpuPixelProbe probe = debug_pixel_gpu(scene, RenderMode::Shaded, 7, 3, options);
     const std::string text = gpu_pixel_text(scene, probe);

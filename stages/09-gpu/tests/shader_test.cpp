@@ -22,6 +22,7 @@
 #include "render/gpu/gpu_render.h"
 #include "render/gpu/shadertoy_export.h"
 #include "render/gpu/shadertoy_run.h"
+#include "render/prepare.h"
 #include "scene/scene_loader.h"
 #include "student_copy.h"
 #include "testing/stage_test.h"
@@ -33,11 +34,9 @@ namespace {
 
 using namespace gpu_test;
 
-Scene small_scene(const std::string& relative) {
-    Scene scene = load_scene(::rt::testing::source_dir() / "stages" / relative);
-    scene.image.width = 32, scene.image.height = 24;
-    build_acceleration(scene);
-    return scene;
+PreparedScene small_scene(const std::string& relative) {
+    return prepare_scene(load_scene(::rt::testing::source_dir() / "stages" / relative),
+                         {.width = 32, .height = 24});
 }
 
 // A syntax error, an undeclared name and a type error each name the student's file and line first.
@@ -103,7 +102,7 @@ TEST(GpuShader, StubsCompileAndAreReportedOnce) {
                         "the released stubs were checked in the course tree; nothing is wrong";
     GpuRenderOptions options;
     options.student_dir = copy.dir();
-    const Scene scene = small_scene("05-recursion/scenes/whitted.json");
+    const PreparedScene scene = small_scene("05-recursion/scenes/whitted.json");
     const std::uint64_t before = stub_calls_total();
     ::testing::internal::CaptureStderr();
     const Image image = render_gpu(scene, RenderMode::Shaded, options);
@@ -196,7 +195,7 @@ TEST(GpuShader, SamplingStubsAreReported) {
     GpuRenderOptions options;
     options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
     options.sampling_dir = dir;
-    Scene scene = small_scene("10-sampling/scenes/soft_shadows.json");
+    PreparedScene scene = small_scene("10-sampling/scenes/soft_shadows.json");
     scene.sampling.samples_per_pixel = 2;
     ::testing::internal::CaptureStderr();
     const Image image = render_gpu(scene, RenderMode::Shaded, options);
@@ -211,7 +210,7 @@ TEST(GpuShader, SamplingStubsAreReported) {
 }
 
 TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
-    Scene scene = small_scene("07-textures/scenes/filtering.json");
+    PreparedScene scene = small_scene("07-textures/scenes/filtering.json");
     scene.texture_lookup = TextureLookup::Oiio;
     try {
         render_gpu(scene, RenderMode::Shaded);
@@ -223,7 +222,7 @@ TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
         EXPECT_NE(std::string(e.what()).find("has no GPU port"), std::string::npos) << e.what();
     }
     // Stage 10's optional fog is CPU only.
-    Scene foggy = small_scene("10-sampling/scenes/fog.json");
+    PreparedScene foggy = small_scene("10-sampling/scenes/fog.json");
     try {
         render_gpu(foggy, RenderMode::Shaded);
         FAIL();
@@ -303,7 +302,7 @@ TEST(GpuShader, ShadertoyExportDropsLocalConstAnywhereOnTheLine) {
     StudentCopy copy("const");
     insert_in_intersect_plane(copy.dir() / "intersect.glsl",
                               "    float st_a = ray.origin.x; const float st_b = st_a;");
-    const Scene scene = small_scene("02-intersections/scenes/spheres_normals.json");
+    const PreparedScene scene = small_scene("02-intersections/scenes/spheres_normals.json");
     const std::string text = export_shadertoy(scene, RenderMode::Normals, copy.dir()).text;
     EXPECT_NE(text.find("float st_a = ray.origin.x; float st_b = st_a;"), std::string::npos);
 }
@@ -315,7 +314,7 @@ TEST(GpuShader, ShadertoyExportErrorNamesTheStudentFileAndLine) {
     const fs::path file = copy.dir() / "intersect.glsl";
     const int line = insert_in_intersect_plane(file, "    float broken = undeclared_thing;");
     setenv("RT_GPU_STUDENT_DIR", copy.dir().c_str(), 1);
-    const Scene scene = small_scene("02-intersections/scenes/spheres_normals.json");
+    const PreparedScene scene = small_scene("02-intersections/scenes/spheres_normals.json");
     const ShadertoyRun run = run_shadertoy_export(scene, RenderMode::Normals);
     unsetenv("RT_GPU_STUDENT_DIR");
     if (run.compile_errors.starts_with("glslangValidator not installed"))
@@ -331,7 +330,7 @@ TEST(GpuShader, ShadertoyExportErrorNamesTheStudentFileAndLine) {
 }
 
 TEST(GpuShader, ShadertoyExportRefuses) {
-    const Scene sky = small_scene("08-environment/scenes/procedural_sky.json");
+    const PreparedScene sky = small_scene("08-environment/scenes/procedural_sky.json");
     try {
         export_shadertoy(sky, sky.mode);
         FAIL() << "exported a 256-wide sky";
@@ -340,7 +339,7 @@ TEST(GpuShader, ShadertoyExportRefuses) {
                   std::string::npos)
             << e.what();
     }
-    const Scene depth = small_scene("02-intersections/scenes/plane_depth.json");
+    const PreparedScene depth = small_scene("02-intersections/scenes/plane_depth.json");
     try {
         export_shadertoy(depth, RenderMode::Depth);
         FAIL() << "exported the depth view";
@@ -357,7 +356,7 @@ TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
     StudentCopy stubs("shadertoy");
     for (const char* f : kStudentFiles)
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
-    const Scene scene = small_scene("05-recursion/scenes/whitted.json");
+    const PreparedScene scene = small_scene("05-recursion/scenes/whitted.json");
     const std::string text =
         "#version 300 es\nprecision highp float;\nprecision highp int;\n"
         "uniform vec3 iResolution;\n" +

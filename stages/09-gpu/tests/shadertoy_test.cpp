@@ -11,6 +11,7 @@
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/gpu/shadertoy_run.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
@@ -20,22 +21,20 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-Scene shadertoy_scene(const std::string& relative) {
+PreparedScene shadertoy_scene(const std::string& relative) {
     Scene scene = load_scene(::rt::testing::source_dir() / "stages" / relative);
-    scene.image.height =
-        std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
-    scene.image.width = 64;
+    const int height = std::max(1, int(std::lround(64.0 * scene.image.height / scene.image.width)));
+    SceneOverrides small{.width = 64, .height = height};
     // Stage 06's meshes are too big to bake (kMaxShadertoyBytes): small meshes get a BVH instead.
-    if (!scene.triangles.empty()) scene.accelerator = Accelerator::Bvh;
-    build_acceleration(scene);
-    return scene;
+    if (!scene.triangles.empty()) small.accelerator = Accelerator::Bvh;
+    return prepare_scene(std::move(scene), small);
 }
 
 class Shadertoy : public ::rt::testing::StageTest,
                   public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(Shadertoy, ExportCompilesAndMatchesCpu) {
-    const Scene scene = shadertoy_scene(GetParam());
+    const PreparedScene scene = shadertoy_scene(GetParam());
     const ShadertoyRun run = run_shadertoy_export(scene, scene.mode);
     EXPECT_EQ(run.compile_errors, "") << "glslangValidator rejects the export";
     ASSERT_EQ(run.draw_error, "") << "the export does not draw";

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "remote/call_each.h"
+#include "render/prepare.h"
 #include "render/sampled.h"
 #include "scene/scene_loader.h"
 #include "stage_api/stage10.h"
@@ -112,14 +113,14 @@ TEST_F(Fog, PixelThroughAFogSlabDimsTheBackground) {
     // No lights: nothing is scattered towards the camera, and a pixel is the white background
     // times the chance of passing the slab, exp(-sigma_t 2) (the camera looks along -z through
     // the slab -3 <= z <= -1).
-    const Scene scene = parse_scene(R"({
+    const PreparedScene scene = prepare_scene(parse_scene(R"({
   "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "fov": 0.5},
   "image": {"width": 1, "height": 1},
   "render": {"mode": "shaded", "samples_per_pixel": 1, "seed": 9},
   "background": [1, 1, 1],
   "fog": {"density": 0.4, "min": [-100, -100, -3], "max": [100, 100, -1]}
 })",
-                                    "fog_slab.json", ".");
+                                                          "fog_slab.json", "."));
     ASSERT_TRUE(scene.features.fog);
     std::vector<double> values;
     for (const Color& c : testing::call_for<&sample_pixel>(
@@ -137,14 +138,14 @@ TEST_F(Fog, LightScatteredByASlabMatchesTheIntegral) {
     // towards the camera (r: from (0, 0, -t) to the light, all inside the fog); free flights
     // reach depth t with density sigma exp(-sigma (t - 1)). The pixel is the integral of the
     // product over t, here by Simpson's rule.
-    const Scene scene = parse_scene(R"({
+    const PreparedScene scene = prepare_scene(parse_scene(R"({
   "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "fov": 0.5},
   "image": {"width": 1, "height": 1},
   "render": {"mode": "shaded", "samples_per_pixel": 1, "seed": 10},
   "fog": {"density": 0.4, "albedo": [0.75, 0.75, 0.75], "min": [-100, -100, -3], "max": [100, 100, -1]},
   "lights": [{"type": "point", "position": [0, 1.5, -2], "intensity": [2, 2, 2], "attenuation": [0, 0, 1]}]
 })",
-                                    "fog_light.json", ".");
+                                                          "fog_light.json", "."));
     const double sigma = 0.4, albedo = 0.75, intensity = 2;
     const auto integrand = [&](double t) {
         const double r = std::sqrt(1.5 * 1.5 + (t - 2) * (t - 2));

@@ -31,6 +31,7 @@
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
@@ -63,17 +64,15 @@ std::vector<std::string> gpu_sampling_scenes() {
 }
 
 // The scene at 120 pixels across, its shape kept (indirect is square: 120 x 120).
-Scene gpu_sampling_scene(const std::string& name) {
+PreparedScene gpu_sampling_scene(const std::string& name) {
     Scene scene =
         load_scene(::rt::testing::source_dir() / "stages/10-sampling/scenes" / (name + ".json"));
-    scene.image.height = std::max(
+    const int height = std::max(
         1, int(std::lround(double(kGpuSamplingWidth) * scene.image.height / scene.image.width)));
-    scene.image.width = kGpuSamplingWidth;
-    build_acceleration(scene);
-    return scene;
+    return prepare_scene(std::move(scene), {.width = kGpuSamplingWidth, .height = height});
 }
 
-CompareResult gpu_against_cpu(const Scene& scene, const GpuRenderOptions& options = {}) {
+CompareResult gpu_against_cpu(const PreparedScene& scene, const GpuRenderOptions& options = {}) {
     const Image cpu = render(scene, RenderMode::Shaded);
     const Image gpu = render_gpu(scene, RenderMode::Shaded, options);
     return compare_images(to_image8(gpu), to_image8(cpu), gpu_sampling_metric());
@@ -83,7 +82,7 @@ class GpuSampled : public ::rt::testing::StageTest,
                    public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(GpuSampled, GpuMatchesCpu) {
-    const Scene scene = gpu_sampling_scene(GetParam());
+    const PreparedScene scene = gpu_sampling_scene(GetParam());
     ASSERT_TRUE(scene.features.sampled()) << GetParam();
     const CompareResult r = gpu_against_cpu(scene);
     std::printf("%s (%dx%d, %d spp): %s\n", GetParam().c_str(), scene.image.width,
@@ -102,7 +101,7 @@ RT_TEST_SUITE(GpuSampledRuns);
 // depend on its pixel and index only) and on either headless context. Stubs would give the same magenta every time:
 // no stub may be reached, so that a starter tree fails this test too.
 TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
-    Scene scene = gpu_sampling_scene("soft_shadows");
+    PreparedScene scene = gpu_sampling_scene("soft_shadows");
     scene.image.width = 32, scene.image.height = 24;
     GpuRenderOptions one, seven;
     one.samples_per_dispatch = 1;
@@ -130,7 +129,7 @@ std::string read_text_file(const fs::path& file) {
 // ambient_occlusion by far more than the noise, and the same metric rejects it. The unchanged
 // file must pass first, so with the stubs of a starter tree this test fails too.
 TEST_F(GpuSampledRuns, BiasedVariantFails) {
-    const Scene scene = gpu_sampling_scene("ambient_occlusion");
+    const PreparedScene scene = gpu_sampling_scene("ambient_occlusion");
     const CompareResult fair = gpu_against_cpu(scene);
     ASSERT_TRUE(fair.passed) << "the unchanged sampling.glsl: " << fair.summary();
 

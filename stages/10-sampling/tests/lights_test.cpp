@@ -9,6 +9,7 @@
 
 #include "geometry/onb.h"
 #include "remote/call_each.h"
+#include "render/prepare.h"
 #include "stage_api/stage10.h"
 #include "statistics.h"
 #include "testing/stage_test.h"
@@ -141,8 +142,8 @@ TEST_F(AreaSampling, SphereSamplesFollowTheirPdf) {
 }
 
 // The mean of area_light_estimate for a white diffuse point, over kSamples.
-std::vector<double> estimates(const Scene& scene, const SurfacePoint& at, const AreaLight& light,
-                              std::uint64_t seed) {
+std::vector<double> estimates(const PreparedScene& scene, const SurfacePoint& at,
+                              const AreaLight& light, std::uint64_t seed) {
     Material white;
     white.diffuse = Color(1), white.specular = Color(0);
     stats::Uniform random(seed);
@@ -157,8 +158,8 @@ std::vector<double> estimates(const Scene& scene, const SurfacePoint& at, const 
 RT_TEST_SUITE(SoftShadows);
 
 TEST_F(SoftShadows, RectangleIrradianceMatchesTheFormFactor) {
-    Scene empty;
-    empty.update_features();
+    PreparedScene empty;
+    refresh_features(empty);
     const AreaLight light = rectangle(Vec3(-1, 2, -0.5f), Vec3(2, 0, 0), Vec3(0, 0, 1), Color(3));
     // Below the centre: four 1 x 0.5 corners; below the corner (0.8, 0.3) of a split rectangle:
     // 1.8 x 0.8 + 0.2 x 0.8 + 1.8 x 0.2 + 0.2 x 0.2.
@@ -174,8 +175,8 @@ TEST_F(SoftShadows, RectangleIrradianceMatchesTheFormFactor) {
 }
 
 TEST_F(SoftShadows, SphereIrradianceMatchesSinSquared) {
-    Scene empty;
-    empty.update_features();
+    PreparedScene empty;
+    refresh_features(empty);
     const AreaLight light = sphere_light(Vec3(0, 3, 0), 1, Color(2));
     // Facing the centre: E = pi L sin^2(theta_max); tilted by 30 degrees, times cos 30.
     stats::expect_mean(estimates(empty, point_at(Vec3(0, 0, 0), Vec3(0, 1, 0)), light, 16),
@@ -191,12 +192,12 @@ TEST_F(SoftShadows, SphereIrradianceMatchesSinSquared) {
 TEST_F(SoftShadows, AnOccluderOverHalfTheLightHalvesIt) {
     // An opaque slab over x < 0 between the point (at x = 0) and the light: the point sees
     // exactly the half x > 0 of the rectangle.
-    Scene scene;
+    PreparedScene scene;
     Material black;
     black.diffuse = Color(0);
     scene.add_material(black);
     scene.boxes.push_back(Box{Vec3(-10, 0.9f, -10), Vec3(0, 1, 10), 0});
-    scene.update_features();
+    refresh_features(scene);
     const AreaLight light = rectangle(Vec3(-1, 2, -0.5f), Vec3(2, 0, 0), Vec3(0, 0, 1));
     stats::expect_mean(estimates(scene, point_at(Vec3(0, 0, 0), Vec3(0, 1, 0)), light, 18),
                        2 * corner_form_factor(1, 0.5, 2), "half the light blocked");
@@ -244,10 +245,10 @@ RT_TEST_SUITE(Indirect);
 TEST_F(Indirect, AmbientOcclusionUnderACeiling) {
     // A ceiling at height 1; blockers count up to distance 2: the directions with cos > 1/2
     // are blocked, a cosine-weighted share 1 - (1/2)^2 of the hemisphere.
-    Scene scene;
+    PreparedScene scene;
     scene.add_material(Material{});
     scene.planes.push_back(Plane{Vec3(0, 1, 0), Vec3(0, -1, 0), 0});
-    scene.update_features();
+    refresh_features(scene);
     const SurfacePoint at = point_at(Vec3(0, 0, 0), Vec3(0, 1, 0));
     stats::Uniform random(21);
     const std::vector<Real> occlusion = testing::call_for<&ambient_occlusion>(kSamples, [&](int) {
@@ -255,8 +256,8 @@ TEST_F(Indirect, AmbientOcclusionUnderACeiling) {
     });
     const std::vector<double> values(occlusion.begin(), occlusion.end());
     stats::expect_mean(values, 0.25, "ambient occlusion under a ceiling");
-    Scene empty;
-    empty.update_features();
+    PreparedScene empty;
+    refresh_features(empty);
     for (int i = 0; i < 100; ++i)
         ASSERT_EQ(ambient_occlusion(empty, at, at.normal, kInfinity, random.next2()), 1)
             << "nothing to occlude";

@@ -7,6 +7,7 @@
 
 #include "core/source_dir.h"
 #include "image/compare.h"
+#include "render/prepare.h"
 #include "render/sampled.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
@@ -14,8 +15,8 @@
 namespace rt {
 namespace {
 
-Scene scene_of(const std::string& body) {
-    return parse_scene("{" + body + "}", "s.json", ".");
+PreparedScene scene_of(const std::string& body) {
+    return prepare_scene(parse_scene("{" + body + "}", "s.json", "."));
 }
 
 std::string error_of(const std::string& body) {
@@ -28,7 +29,7 @@ std::string error_of(const std::string& body) {
 }
 
 TEST(SamplingScenes, KeysReachTheScene) {
-    const Scene s = scene_of(R"(
+    const PreparedScene s = scene_of(R"(
   "camera": {"eye": [0, 0, 5], "aperture": 0.2, "focus_distance": 4.5, "shutter": [0, 0.5]},
   "render": {"mode": "shaded", "samples_per_pixel": 16, "seed": 7, "filter": "tent", "indirect": "occlusion", "occlusion_distance": 2},
   "ambient_light": [0.2, 0.2, 0.2],
@@ -93,9 +94,9 @@ TEST(SamplingScenes, BadInputIsOneLineNamingPlaceAndFix) {
 
 // The optional fog: its keys, Features (so scenes without fog never call its code), the box.
 TEST(SamplingScenes, FogReachesTheSceneAndFeatures) {
-    const Scene plain = scene_of(R"("render": {"mode": "shaded"})");
+    const PreparedScene plain = scene_of(R"("render": {"mode": "shaded"})");
     EXPECT_FALSE(plain.features.fog || plain.features.sampled()) << "no fog, no sampled path";
-    const Scene s = scene_of(
+    const PreparedScene s = scene_of(
         R"("fog": {"density": 0.25, "albedo": [0.5, 0.6, 0.7], "min": [-1, 0, -2], "max": [1, 2, 0]})");
     EXPECT_FLOAT_EQ(s.fog.density, 0.25f);
     EXPECT_FLOAT_EQ(s.fog.albedo.g, 0.6f);
@@ -104,7 +105,7 @@ TEST(SamplingScenes, FogReachesTheSceneAndFeatures) {
     EXPECT_TRUE(s.features.fog && s.features.sampled());
     EXPECT_NE(s.features.describe().find("sampled: fog"), std::string::npos)
         << s.features.describe();
-    const Scene everywhere = scene_of(R"("fog": {"density": 1})");
+    const PreparedScene everywhere = scene_of(R"("fog": {"density": 1})");
     EXPECT_FALSE(everywhere.fog.bounded);
     EXPECT_EQ(everywhere.fog.albedo, Color(1));
     // The canonical form puts "fog" after "environment" and its keys in table order.
@@ -146,7 +147,7 @@ TEST(SamplingScenes, NoEarlierStageSceneTakesTheSampledPath) {
         if (!std::filesystem::is_directory(stage.path() / "scenes")) continue;
         for (const auto& file : std::filesystem::directory_iterator(stage.path() / "scenes")) {
             if (file.path().extension() != ".json") continue;
-            const Scene s = load_scene(file.path());
+            const PreparedScene s = prepare_scene(load_scene(file.path()));
             EXPECT_FALSE(s.features.sampled()) << file.path();
             ++scenes;
         }

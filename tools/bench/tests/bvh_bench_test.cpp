@@ -8,6 +8,7 @@
 
 #include "bench/bvh_bench.h"
 #include "geometry/procedural_mesh.h"
+#include "render/prepare.h"
 
 namespace rt::bench {
 namespace {
@@ -79,13 +80,13 @@ TEST(BvhBench, ParallelForCoversEveryItemOnce) {
             }
 }
 
-Scene small_mesh_scene() {
+PreparedScene small_mesh_scene() {
     const TriangleMesh mesh = make_procedural_mesh("icosphere", 300, 1);
-    Scene scene;
+    PreparedScene scene;
     scene.vertices = mesh.vertices;
     for (const auto& t : mesh.triangles) scene.triangles.push_back(Triangle{t, 0});
     scene.materials.push_back(Material{});
-    scene.update_features();
+    refresh_features(scene);
     return scene;
 }
 
@@ -112,7 +113,7 @@ std::vector<RayResult> trace(const Backend& backend, const RayBatch& batch) {
 // The real back-ends agree on this mesh; a back-end that is wrong on every 5th hit is caught on
 // exactly those rays, for nearest-hit and any-hit rays alike.
 TEST(BvhBench, WrongBackendIsCaught) {
-    Scene scene = small_mesh_scene();
+    PreparedScene scene = small_mesh_scene();
     std::unique_ptr<Backend> bvh = make_bvh_backend(scene);
     bvh->build();
     ASSERT_TRUE(scene.bvh.built());
@@ -125,7 +126,7 @@ TEST(BvhBench, WrongBackendIsCaught) {
         ASSERT_GT(hits, 300) << "the test rays should mostly hit the sphere";
         EXPECT_EQ(compare_results(expected, trace(*bvh, batch), any_hit, 1e-4).total(), 0u);
 
-        Scene copy = scene;
+        PreparedScene copy = scene;
         std::unique_ptr<Backend> faulty = make_faulty_backend(make_bvh_backend(copy), 5);
         faulty->build();
         std::size_t wrong = 0;
