@@ -16,8 +16,8 @@
 namespace rt {
 
 // Ray-sphere by the quadratic formula, in a numerically stable form (no cancellation).
-// hit.uv = (phi / 2pi, theta / pi) with phi in [0, 2pi) the longitude around +y and theta the
-// angle from +y.
+// hit.uv = (0, 0): a sphere's texture coordinates are stage 07's sphere_texcoord, computed only
+// at the hit that is shaded, and only when its material has a texture.
 bool intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range, Hit& hit);
 
 // Ray-plane. A ray parallel to the plane (including one lying in it) misses.

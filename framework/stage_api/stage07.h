@@ -12,8 +12,7 @@ namespace rt {
 
 // --- Texture coordinates of each primitive ----------------------------------------------------
 
-// A sphere's (u, v) at the unit outward normal n = (x, y, z) (y is up), the same mapping as
-// stage 02's hit.uv:
+// A sphere's (u, v) at the unit outward normal n = (x, y, z) (y is up):
 //   u = phi / (2 pi), phi = atan2(-z, x) moved into [0, 2 pi)  (longitude: u = 0 at +x, 0.25 at
 //                                                               -z, 0.5 at -x, 0.75 at +z)
 //   v = theta / pi, theta = acos(y)                           (v = 0 at the north pole +y)

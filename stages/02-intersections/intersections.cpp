@@ -44,10 +44,7 @@ bool intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range, Hi
     hit.point = ray.at(t);
     const Vec3 outward = (hit.point - sphere.center) / sphere.radius;
     hit.set_face_normal(ray, outward);
-    Real phi = std::atan2(-outward.z, outward.x);
-    if (phi < 0) phi += 2 * kPi;
-    const Real theta = std::acos(std::clamp(outward.y, Real(-1), Real(1)));
-    hit.uv = Vec2(phi / (2 * kPi), theta / kPi);
+    hit.uv = Vec2(0);  // a texture's (u, v) are stage 07's, at the one hit that is shaded
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/02-intersections/README.md#ray-sphere");

@@ -14,7 +14,7 @@ namespace rt {
 
 // --- Texture coordinates ---------------------------------------------------------------------
 
-// Longitude and latitude of the unit outward normal, as stage 02's hit.uv.
+// Longitude and latitude of the unit outward normal (docs/conventions.md#textures).
 Vec2 sphere_texcoord(const Vec3& outward_normal) {
     // BEGIN SOLUTION
     Real phi = std::atan2(-outward_normal.z, outward_normal.x);

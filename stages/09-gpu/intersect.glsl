@@ -37,9 +37,7 @@ bool intersect_sphere(Ray ray, vec4 center_radius, Interval t_range, inout Hit h
     hit.point = ray.origin + t * ray.direction;
     const vec3 outward = (hit.point - center) / radius;
     set_face_normal(hit, ray, outward);
-    float phi = atan(-outward.z, outward.x);
-    if (phi < 0.0) phi += 2.0 * kPi;
-    hit.uv = vec2(phi / (2.0 * kPi), acos(clamp(outward.y, -1.0, 1.0)) / kPi);
+    hit.uv = vec2(0);  // a texture's (u, v) are sphere_texcoord's, at the shaded hit only
     return true;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");

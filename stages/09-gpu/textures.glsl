@@ -6,7 +6,7 @@
 // Each group is compiled only when the scene needs it (the HAS_ defines of trace.comp).
 
 #ifdef HAS_MAPS
-// Longitude and latitude of the unit outward normal, as stage 02's hit.uv.
+// Longitude and latitude of the unit outward normal (docs/conventions.md#textures).
 vec2 sphere_texcoord(vec3 outward_normal) {
     // BEGIN SOLUTION
     float phi = atan(-outward_normal.z, outward_normal.x);

@@ -70,7 +70,7 @@ struct GpuAnswer {
     float t = 0;
     glm::vec3 normal{0};
     bool front_face = false;
-    glm::vec2 uv{0};  // as Hit::uv: the sphere's (phi, theta), a triangle's (beta, gamma)
+    glm::vec2 uv{0};  // as Hit::uv: a triangle's (beta, gamma), (0, 0) on the other kinds
 };
 
 }  // namespace gpu_cases
