@@ -81,7 +81,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
 }
 
 int run_package(const fs::path& source, const fs::path& out, const std::vector<int>& stages,
-                std::ostream& log) {
+                int max_per_day, std::ostream& log) {
     char tmpl[] = "/tmp/rt-grade-package-XXXXXX";
     if (!mkdtemp(tmpl)) return 1;
     const fs::path stage = tmpl;
@@ -138,8 +138,11 @@ cd "$root/source" || exit 1
 mkdir -p "$root/results"
 export RT_GRADE_BUILD_JOBS=1
 stages=")" + stage_list + R"("  # rt-grade package --stages; empty: every stage
+max_per_day=)" + std::to_string(max_per_day) +
+                                             R"(  # rt-grade package --max-per-day; 0: no limit
 exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
   ${stages:+--stages "$stages"} --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
+  --max-per-day "$max_per_day" --metadata "$root/submission_metadata.json" \
   --results "$root/results/results.json" --html "$root/results/report.html"
 )");
     fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read |

@@ -13,7 +13,9 @@
 #include "cmd/batch.h"
 #include "cmd/compare.h"
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "grading/grade.h"
+#include "grading/rate_limit.h"
 #include "release/release.h"
 #include "workspace/workspace_prepare.h"
 
@@ -43,6 +45,8 @@ namespace fs = std::filesystem;
 struct GradeArgs {
     rt::grader::GradeOptions grade;
     std::string submission, stages, cache;
+    rt::grader::RateLimit limit;
+    std::string metadata;  // Gradescope's submission_metadata.json
 };
 
 // The options of grading one submission (they also work after a subcommand's name).
@@ -67,6 +71,11 @@ void add_grade_options(CLI::App& app, GradeArgs& a) {
         "--time-limit", grade.time_limit,
         "seconds for every test and render, overriding grading.json (tests of the grader)");
     app.add_flag("--reveal-hidden", grade.reveal_hidden, "summary also lists non-visible tests");
+    app.add_option("--max-per-day", a.limit.max_graded,
+                   "at most N graded submissions per student in any 24 hours (needs --metadata)")
+        ->check(CLI::Range(0, 1000));
+    app.add_option("--metadata", a.metadata,
+                   "Gradescope's submission_metadata.json (this and the earlier submissions)");
 }
 
 struct ReleaseArgs {
@@ -127,6 +136,25 @@ CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare
     return compare_cmd;
 }
 
+// True when the rate limit refuses this submission: its results.json (the latest graded
+// submission's score, and when the next is possible) is written instead of a grading. Metadata
+// that cannot be read grades the submission (a warning for the instructor's log): a student is
+// never refused by the grader's own mistake.
+bool refused_by_rate_limit(const GradeArgs& a) {
+    if (a.limit.max_graded <= 0) return false;
+    std::optional<std::string> results;
+    try {
+        results = rt::grader::rate_limited_results(a.metadata, a.limit);
+    } catch (const std::exception& e) {
+        std::cerr << "rt-grade: warning: rate limit not applied: " << e.what() << "\n";
+        return false;
+    }
+    if (!results) return false;
+    if (!a.grade.results.empty()) rt::write_text_atomically(a.grade.results, *results);
+    if (!a.grade.quiet) std::cout << "rt-grade: not graded (rate limit)\n";
+    return true;
+}
+
 // `rt-grade SUBMISSION`: the workspace, then the grading; self-grading (the tree rt-grade grades
 // from) takes the started stages and writes a report.
 int grade_one(rt::grader::GradeOptions& grade, const std::string& submission) {
@@ -171,6 +199,8 @@ int main(int argc, char** argv) {
     CLI::App* package_cmd = app.add_subcommand(
         "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
     package_cmd->add_option("--out", package_out, "the zip to write");
+    // --max-per-day N (a grading option) after `package`: run_autograder passes it on, with
+    // Gradescope's metadata file.
     rt::grader::CompareRequest compare;
     CLI::App* compare_cmd = add_compare_command(app, compare);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
@@ -179,6 +209,11 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
     grade.cache = args.cache;
+    if (args.limit.max_graded > 0 && args.metadata.empty()) {
+        std::cerr << "rt-grade: error: --max-per-day needs --metadata FILE (Gradescope's "
+                     "/autograder/submission_metadata.json)\n";
+        return 2;
+    }
     if (!parse_stages(args.stages, grade.stages)) {
         std::cerr << "rt-grade: error: --stages \"" << args.stages
                   << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
@@ -200,11 +235,13 @@ int main(int argc, char** argv) {
             return rt::grader::run_compare(compare, std::cout);
         }
         if (*package_cmd)
-            return rt::grader::run_package(grade.source, package_out, grade.stages, std::cout);
+            return rt::grader::run_package(grade.source, package_out, grade.stages,
+                                           args.limit.max_graded, std::cout);
         if (args.submission.empty()) {
             std::cerr << app.help();
             return 2;
         }
+        if (refused_by_rate_limit(args)) return 0;
         return grade_one(grade, args.submission);
     } catch (const std::exception& e) {
         std::cerr << "rt-grade: error: " << e.what() << "\n";
