@@ -157,6 +157,13 @@ StageSpec load_stage_spec(const fs::path& source, const fs::path& folder) {
         }
         for (const json& sc : g.value("scenes", json::array()))
             s.scenes.push_back(read_scene(sc, s, source, file));
+        if (g.contains("leaderboard")) {
+            s.leaderboard_scene = g["leaderboard"].at("scene").get<std::string>();
+            if (!s.scene(s.leaderboard_scene))
+                throw std::runtime_error(
+                    file.string() + ": \"leaderboard\": scene \"" + s.leaderboard_scene +
+                    "\" is not one of the graded \"scenes\"; name one of them");
+        }
         return s;
     } catch (const json::exception& e) {
         throw std::runtime_error(file.string() + ": " + e.what());

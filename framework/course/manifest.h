@@ -62,6 +62,9 @@ struct StageSpec {
     // "renderer": "gpu" (stage 09): the student files are GLSL, loaded by the test binaries and
     // `rt render --gpu` at run time (RT_GPU_STUDENT_DIR), never compiled into objects.
     bool gpu = false;
+    // "leaderboard": {"scene": NAME}: Gradescope's leaderboard times the student's renderer on
+    // this graded scene against the reference's, in the same grading (never part of the score).
+    std::string leaderboard_scene;
 
     const SceneSpec* scene(const std::string& name) const;  // nullptr when not graded
 };

@@ -101,6 +101,9 @@ TEST(CourseManifest, MistakesNameTheFileAndTheFix) {
                   .find("01-a/grading.json: "),
               std::string::npos);
     EXPECT_NE(load_error("{").find("01-a/grading.json: "), std::string::npos);
+    EXPECT_NE(load_error(R"({"scenes": [{"name": "s"}], "leaderboard": {"scene": "t"}})")
+                  .find("grading.json: \"leaderboard\": scene \"t\" is not one of the graded"),
+              std::string::npos);
 }
 
 TEST(CourseManifest, StageInfoSaysWhatIsWrong) {

@@ -80,6 +80,59 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     return 0;
 }
 
+namespace {
+
+// RT_AUTOGRADER_ROOT (default /autograder) lets the tests run both scripts in a folder that
+// stands in for Gradescope's layout (grader/tests/adversarial.sh, case package_run).
+const char* const kSetupScript = R"SH(#!/usr/bin/env bash
+# Gradescope setup (Ubuntu base image, run once as root when the autograder is built).
+set -euo pipefail
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source"
+bash scripts/install-deps.sh
+# Ubuntu 22.04 ships CMake 3.22; the project needs 3.25.
+version=$(cmake --version 2>/dev/null | head -n1 | awk '{print $3}')
+if [ -z "$version" ] || [ "$(printf '%s\n' 3.25 "$version" | sort -V | head -n1)" != 3.25 ]; then
+  apt-get install -y -qq python3-pip >/dev/null
+  pip3 install -q 'cmake>=3.25,<4'
+  hash -r
+fi
+# 768 MB of memory: one compiler at a time.
+export CMAKE_BUILD_PARALLEL_LEVEL=1 RT_GRADE_BUILD_JOBS=1
+cmake --preset release -DRT_WERROR=OFF
+cmake --build build --target rt-grade
+build/bin/rt-grade prepare --source "$root/source" --cache "$root/rt-grade-cache"
+# Student code runs as nobody: the instructor tree (solutions, hidden tests, references) and
+# the private part of the cache stay unreadable to it even without namespaces.
+chmod 700 "$root/source"
+)SH";
+
+// run_autograder: grades `stages` ("" every stage), at most `max_per_day` submissions per
+// student in any 24 hours (0: no limit).
+std::string run_autograder_script(const std::vector<int>& stages, int max_per_day) {
+    // The graded stages, as rt-grade's --stages reads them ("" grades every stage).
+    std::string stage_list;
+    for (const int n : stages) stage_list += (stage_list.empty() ? "" : ",") + std::to_string(n);
+    return R"(#!/usr/bin/env bash
+# Gradescope entry point: grades /autograder/submission; results.json is always written.
+root=${RT_AUTOGRADER_ROOT:-/autograder}
+cd "$root/source" || exit 1
+mkdir -p "$root/results"
+export RT_GRADE_BUILD_JOBS=1
+stages=")" +
+           stage_list + R"("  # rt-grade package --stages; empty: every stage
+max_per_day=)" +
+           std::to_string(max_per_day) +
+           R"(  # rt-grade package --max-per-day; 0: no limit
+exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
+  ${stages:+--stages "$stages"} --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
+  --max-per-day "$max_per_day" --metadata "$root/submission_metadata.json" \
+  --results "$root/results/results.json" --html "$root/results/report.html"
+)";
+}
+
+}  // namespace
+
 int run_package(const fs::path& source, const fs::path& out, const std::vector<int>& stages,
                 int max_per_day, std::ostream& log) {
     char tmpl[] = "/tmp/rt-grade-package-XXXXXX";
@@ -104,47 +157,8 @@ int run_package(const fs::path& source, const fs::path& out, const std::vector<i
         else if (it->is_regular_file())
             fs::copy_file(it->path(), src / rel);
     }
-    // RT_AUTOGRADER_ROOT (default /autograder) lets the tests run both scripts in a folder that
-    // stands in for Gradescope's layout (grader/tests/adversarial.sh, case package_run).
-    write_text(stage / "setup.sh", R"SH(#!/usr/bin/env bash
-# Gradescope setup (Ubuntu base image, run once as root when the autograder is built).
-set -euo pipefail
-root=${RT_AUTOGRADER_ROOT:-/autograder}
-cd "$root/source"
-bash scripts/install-deps.sh
-# Ubuntu 22.04 ships CMake 3.22; the project needs 3.25.
-version=$(cmake --version 2>/dev/null | head -n1 | awk '{print $3}')
-if [ -z "$version" ] || [ "$(printf '%s\n' 3.25 "$version" | sort -V | head -n1)" != 3.25 ]; then
-  apt-get install -y -qq python3-pip >/dev/null
-  pip3 install -q 'cmake>=3.25,<4'
-  hash -r
-fi
-# 768 MB of memory: one compiler at a time.
-export CMAKE_BUILD_PARALLEL_LEVEL=1 RT_GRADE_BUILD_JOBS=1
-cmake --preset release -DRT_WERROR=OFF
-cmake --build build --target rt-grade
-build/bin/rt-grade prepare --source "$root/source" --cache "$root/rt-grade-cache"
-# Student code runs as nobody: the instructor tree (solutions, hidden tests, references) and
-# the private part of the cache stay unreadable to it even without namespaces.
-chmod 700 "$root/source"
-)SH");
-    // The graded stages, as rt-grade's --stages reads them ("" grades every stage).
-    std::string stage_list;
-    for (const int n : stages) stage_list += (stage_list.empty() ? "" : ",") + std::to_string(n);
-    write_text(stage / "run_autograder", R"(#!/usr/bin/env bash
-# Gradescope entry point: grades /autograder/submission; results.json is always written.
-root=${RT_AUTOGRADER_ROOT:-/autograder}
-cd "$root/source" || exit 1
-mkdir -p "$root/results"
-export RT_GRADE_BUILD_JOBS=1
-stages=")" + stage_list + R"("  # rt-grade package --stages; empty: every stage
-max_per_day=)" + std::to_string(max_per_day) +
-                                             R"(  # rt-grade package --max-per-day; 0: no limit
-exec build/bin/rt-grade "$root/submission" --source "$root/source" --jobs 1 --quiet \
-  ${stages:+--stages "$stages"} --cache "${RT_GRADE_CACHE:-$root/rt-grade-cache}" \
-  --max-per-day "$max_per_day" --metadata "$root/submission_metadata.json" \
-  --results "$root/results/results.json" --html "$root/results/report.html"
-)");
+    write_text(stage / "setup.sh", kSetupScript);
+    write_text(stage / "run_autograder", run_autograder_script(stages, max_per_day));
     fs::permissions(stage / "setup.sh", fs::perms::owner_all | fs::perms::group_read |
                                             fs::perms::group_exec | fs::perms::others_read |
                                             fs::perms::others_exec);

@@ -29,6 +29,7 @@ Report Grading::to_report() const {
             r.tests.push_back({t.stage, t.name, t.number, t.status, t.output, t.visibility, t.tags,
                                t.score, t.max_score, t.is_scene, t.student_png, t.reference_png,
                                t.diff_png, t.metrics});
+    r.leaderboard = leaderboard;
     return r;
 }
 
@@ -222,6 +223,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     take_in_submission(g);
     build_stages(g);
     run_tests_and_scenes(g);
+    time_leaderboard(g);
     summarise(g, log);
 
     std::error_code ec;

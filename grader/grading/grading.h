@@ -62,6 +62,7 @@ struct Grading {
     std::map<int, std::filesystem::path> glsl_dirs;
     std::atomic<int> survivors{0};  // processes the sandbox could not kill
     GradeSummary summary;
+    std::vector<LeaderboardEntry> leaderboard;  // time_leaderboard's, when a stage asks for one
 
     Report to_report() const;
 };
@@ -69,5 +70,8 @@ struct Grading {
 // The phases that live in files of their own.
 void build_stages(Grading& g);          // grade_build.cpp: compile, check, link per stage
 void run_tests_and_scenes(Grading& g);  // grade_run.cpp: every task in its own sandbox
+// grade_run.cpp: Gradescope's leaderboard of the graded stages that ask for one (grading.json
+// "leaderboard"), after the scenes are scored; it never changes a score.
+void time_leaderboard(Grading& g);
 
 }  // namespace rt::grader

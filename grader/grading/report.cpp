@@ -41,7 +41,7 @@ void write_results_json(const Report& report, const fs::path& file) {
         score += t.score;
     }
     std::string output = "Sandbox: " + report.isolation + "\n" + report.general;
-    const json results = {
+    json results = {
         {"score", std::round(score * 100) / 100},
         {"execution_time", int(std::ceil(report.seconds))},
         {"output", clean_output(output)},
@@ -50,6 +50,11 @@ void write_results_json(const Report& report, const fs::path& file) {
         {"visibility", "visible"},
         {"tests", tests},
     };
+    for (const LeaderboardEntry& e : report.leaderboard) {
+        json entry = {{"name", e.name}, {"value", e.value}};
+        if (e.ascending) entry["order"] = "asc";
+        results["leaderboard"].push_back(entry);
+    }
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
     write_text_atomically(file, results.dump(2) + "\n");
 }

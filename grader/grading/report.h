@@ -24,12 +24,20 @@ struct ReportStage {
     std::string title, folder;
 };
 
+// One column of Gradescope's leaderboard ("order": "asc" when lower is better).
+struct LeaderboardEntry {
+    std::string name;
+    double value = 0;
+    bool ascending = false;
+};
+
 struct Report {
     std::string isolation;
     std::string general;  // top-level notes: ignored files, interruptions, sandbox degradation
     double seconds = 0;
     std::vector<ReportStage> stages;
     std::vector<ReportTest> tests;
+    std::vector<LeaderboardEntry> leaderboard;  // empty: no "leaderboard" in results.json
 };
 
 // https://gradescope-autograders.readthedocs.io/en/latest/specs/ (written atomically).

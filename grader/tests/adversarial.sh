@@ -106,12 +106,12 @@ fi
 case $case in
   reference)  # the instructor's own files: full marks in every stage
     solution_all; stages=$all_stages; limit=()
-    checks=(--full-marks --not-contains "not run")
+    checks=(--full-marks --not-contains "not run" --has-leaderboard)
     for n in ${all_stages//,/ }; do checks+=(--has-tag "$(stage_tag "$n")"); done ;;
   starter)  # the released starter tree: 0 points, and the report names every stub's section
     "$bin/rt-grade" release --source "$src" --out "$work/starter" > /dev/null || exit 1
     sub=$work/starter; stages=$all_stages; limit=()
-    checks=(--score-max 0)
+    checks=(--score-max 0 --no-leaderboard)
     for n in ${all_stages//,/ }; do checks+=(--has-tag "$(stage_tag "$n")"); done
     while read -r section; do checks+=(--contains "Read the handout: $section"); done < <(sections)
     [ ${#checks[@]} -gt 12 ] || { echo "FAIL: no stub section found"; exit 1; } ;;

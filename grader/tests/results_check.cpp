@@ -4,6 +4,7 @@
 //   results_check FILE [--score-min X] [--score-max X] [--max-score X] [--contains TEXT]...
 //                      [--not-contains TEXT]... [--test-failed NAME]... [--test-passed NAME]...
 //                      [--full-marks] [--has-tag TAG]... [--full-marks-tag TAG]...
+//                      [--has-leaderboard] [--no-leaderboard]
 // Exits 0 when everything holds; prints each violation otherwise.
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,25 @@ const std::set<std::string> kTestKeys = {"score",       "max_score",  "status", 
                                          "name_format", "number",     "output",    "output_format",
                                          "tags",        "visibility", "extra_data"};
 
+// "leaderboard": [{"name": "Time", "value": 15, "order": "asc"}, ...]; order defaults to desc.
+void check_leaderboard(const json& board) {
+    if (!board.is_array()) return fail("leaderboard is not an array");
+    for (const auto& e : board) {
+        if (!e.is_object()) {
+            fail("a leaderboard entry is not an object");
+            continue;
+        }
+        for (const auto& [key, value] : e.items())
+            if (key != "name" && key != "value" && key != "order")
+                fail("leaderboard entry: unknown key " + key);
+        if (!e.contains("name") || !e["name"].is_string()) fail("leaderboard entry without a name");
+        if (!e.contains("value") || !(e["value"].is_number() || e["value"].is_string()))
+            fail("leaderboard entry: value is not a number or a string");
+        if (e.contains("order") && e["order"] != "asc" && e["order"] != "desc")
+            fail("leaderboard entry: order is not asc or desc");
+    }
+}
+
 void check_schema(const json& r) {
     if (!r.is_object()) return fail("top level is not an object");
     for (const auto& [key, value] : r.items())
@@ -55,6 +75,7 @@ void check_schema(const json& r) {
     for (const char* key : {"visibility", "stdout_visibility"})
         if (r.contains(key) && (!r[key].is_string() || !kVisibility.count(r[key])))
             fail(std::string(key) + " is not a documented visibility");
+    if (r.contains("leaderboard")) check_leaderboard(r["leaderboard"]);
     if (!r.contains("tests") || !r["tests"].is_array()) return fail("tests is not an array");
     double total = 0;
     std::set<std::string> names;
@@ -177,6 +198,10 @@ int main(int argc, char** argv) {
                     fail(t.value("name", "") + " (" + tag + ") has no full points");
             }
             if (!seen) fail("no test has the tag " + tag);
+        } else if (flag == "--has-leaderboard" || flag == "--no-leaderboard") {
+            const bool has = r.contains("leaderboard") && !r["leaderboard"].empty();
+            if (has != (flag == "--has-leaderboard"))
+                fail(has ? "a leaderboard is written" : "no leaderboard is written");
         } else if (flag == "--has-tag") {
             const std::string tag = next();
             bool seen = false;
