@@ -12,6 +12,7 @@
 
 #include "cmd/batch.h"
 #include "cmd/compare.h"
+#include "cmd/similarity.h"
 #include "core/source_dir.h"
 #include "grading/grade.h"
 #include "release/release.h"
@@ -127,6 +128,25 @@ CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare
     return compare_cmd;
 }
 
+struct SimilarityArgs {
+    rt::grader::SimilarityRequest request;
+    std::string dir, out = "similarity";
+};
+
+CLI::App* add_similarity_command(CLI::App& app, SimilarityArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "similarity",
+        "Plagiarism report: every pair of submissions in DIR compared per student file, "
+        "starter code excluded (similarity-tester's sim_c++)");
+    cmd->add_option("dir", a.dir, "folder of submissions (each a folder or .zip)")->required();
+    cmd->add_option("--out", a.out, "where index.html and pairs.csv go")->capture_default_str();
+    cmd->add_option("--threshold", a.request.threshold,
+                    "percent of a file's own code found in the other's that flags a pair")
+        ->check(CLI::Range(0.0, 100.0))
+        ->capture_default_str();
+    return cmd;
+}
+
 // `rt-grade SUBMISSION`: the workspace, then the grading; self-grading (the tree rt-grade grades
 // from) takes the started stages and writes a report.
 int grade_one(rt::grader::GradeOptions& grade, const std::string& submission) {
@@ -173,8 +193,11 @@ int main(int argc, char** argv) {
     package_cmd->add_option("--out", package_out, "the zip to write");
     rt::grader::CompareRequest compare;
     CLI::App* compare_cmd = add_compare_command(app, compare);
+    SimilarityArgs similarity;
+    CLI::App* similarity_cmd = add_similarity_command(app, similarity);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
-    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
+    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd, similarity_cmd})
+        sub->fallthrough();
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -198,6 +221,14 @@ int main(int argc, char** argv) {
             compare.source = grade.source;
             compare.stages = grade.stages;
             return rt::grader::run_compare(compare, std::cout);
+        }
+        if (*similarity_cmd) {
+            rt::grader::SimilarityRequest& r = similarity.request;
+            r.source = grade.source;
+            r.stages = grade.stages;
+            r.dir = similarity.dir;
+            r.out = similarity.out;
+            return rt::grader::run_similarity(r, std::cout, std::cerr);
         }
         if (*package_cmd)
             return rt::grader::run_package(grade.source, package_out, grade.stages, std::cout);
