@@ -12,6 +12,7 @@
 
 #include "cmd/batch.h"
 #include "cmd/compare.h"
+#include "cmd/similarity.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
 #include "grading/grade.h"
@@ -136,6 +137,51 @@ CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare
     return compare_cmd;
 }
 
+struct SimilarityArgs {
+    rt::grader::SimilarityRequest request;
+    std::string dir, out = "similarity";
+};
+
+CLI::App* add_similarity_command(CLI::App& app, SimilarityArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "similarity",
+        "Plagiarism report: every pair of submissions in DIR compared per student file, "
+        "starter code excluded (similarity-tester's sim_c++)");
+    cmd->add_option("dir", a.dir, "folder of submissions (each a folder or .zip)")->required();
+    cmd->add_option("--out", a.out, "where index.html and pairs.csv go")->capture_default_str();
+    cmd->add_option("--threshold", a.request.threshold,
+                    "percent of a file's own code found in the other's that flags a pair")
+        ->check(CLI::Range(0.0, 100.0))
+        ->capture_default_str();
+    return cmd;
+}
+
+int run_similarity_command(SimilarityArgs& a, const rt::grader::GradeOptions& grade) {
+    rt::grader::SimilarityRequest& r = a.request;
+    r.source = grade.source;
+    r.stages = grade.stages;
+    r.dir = a.dir;
+    r.out = a.out;
+    return rt::grader::run_similarity(r, std::cout, std::cerr);
+}
+
+// The grading options that need more than CLI11's checks; false (and a one-line error) when
+// they do not make sense.
+bool finish_grade_args(GradeArgs& args) {
+    args.grade.cache = args.cache;
+    if (args.limit.max_graded > 0 && args.metadata.empty()) {
+        std::cerr << "rt-grade: error: --max-per-day needs --metadata FILE (Gradescope's "
+                     "/autograder/submission_metadata.json)\n";
+        return false;
+    }
+    if (!parse_stages(args.stages, args.grade.stages)) {
+        std::cerr << "rt-grade: error: --stages \"" << args.stages
+                  << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
+        return false;
+    }
+    return true;
+}
+
 // True when the rate limit refuses this submission: its results.json (the latest graded
 // submission's score, and when the next is possible) is written instead of a grading. Metadata
 // that cannot be read grades the submission (a warning for the instructor's log): a student is
@@ -203,22 +249,15 @@ int main(int argc, char** argv) {
     // Gradescope's metadata file.
     rt::grader::CompareRequest compare;
     CLI::App* compare_cmd = add_compare_command(app, compare);
+    SimilarityArgs similarity;
+    CLI::App* similarity_cmd = add_similarity_command(app, similarity);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
-    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd}) sub->fallthrough();
+    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd, similarity_cmd})
+        sub->fallthrough();
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
-    grade.cache = args.cache;
-    if (args.limit.max_graded > 0 && args.metadata.empty()) {
-        std::cerr << "rt-grade: error: --max-per-day needs --metadata FILE (Gradescope's "
-                     "/autograder/submission_metadata.json)\n";
-        return 2;
-    }
-    if (!parse_stages(args.stages, grade.stages)) {
-        std::cerr << "rt-grade: error: --stages \"" << args.stages
-                  << "\": expected stage numbers separated by commas, e.g. --stages 1,2,10\n";
-        return 2;
-    }
+    if (!finish_grade_args(args)) return 2;
 
     try {
         if (*release_cmd) {
@@ -234,6 +273,7 @@ int main(int argc, char** argv) {
             compare.stages = grade.stages;
             return rt::grader::run_compare(compare, std::cout);
         }
+        if (*similarity_cmd) return run_similarity_command(similarity, grade);
         if (*package_cmd)
             return rt::grader::run_package(grade.source, package_out, grade.stages,
                                            args.limit.max_graded, std::cout);
