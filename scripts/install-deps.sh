@@ -29,6 +29,7 @@ packages=(
   libseccomp-dev                      # rt-grade: the seccomp filter of its container mode
   jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB
   similarity-tester                   # rt-grade similarity: sim_c++ and sim_text compare submissions
+  libyaml-cpp-dev                     # rt-grade batch: Gradescope exports' submission_metadata.yml
   hyperfine                           # tools/bench_startup.sh, tools/bench_povray.sh: timings
   povray                              # tools/bench_povray.sh: POV-Ray 3.7, the renderer's yardstick
 )

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <mutex>
 
+#include "cmd/batch_input.h"
 #include "core/parallel_for.h"
 #include "util.h"
 #include "workspace/workspace_prepare.h"
@@ -15,68 +16,90 @@ namespace fs = std::filesystem;
 
 namespace rt::grader {
 
+namespace {
+
+// One submission's CSV row (its scores, or why it has none); `score` receives its total.
+std::string grade_row(const GradeOptions& base, const BatchEntry& entry, const fs::path& out,
+                      int tests_per_job, double& score, bool& graded,
+                      std::vector<int>& stage_numbers, std::mutex& mutex, std::ostream& log) {
+    GradeOptions o = base;
+    o.submission = entry.path;
+    o.results = out / entry.name / "results.json";
+    o.html = out / entry.name / "report.html";
+    o.quiet = true;
+    o.jobs = tests_per_job;
+    std::string row = "\"" + entry.name + "\"" + export_identity(entry) + ",";
+    try {
+        // One broken submission never stops the batch: anything thrown is its row's error.
+        const GradeSummary s = grade_submission(o, log);
+        char cell[64];
+        std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
+        row += cell;
+        for (double v : s.stage_scores) {
+            std::snprintf(cell, sizeof cell, ",%g", v);
+            row += cell;
+        }
+        row += s.build_failed ? ",build failed" : ",ok";
+        std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
+        row += cell;
+        score = s.score, graded = true;
+        std::lock_guard lock(mutex);
+        if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
+        log << entry.name << ": " << s.score << " / " << s.max_score << "\n";
+    } catch (const std::exception& e) {
+        row += "0,0,grader error: " + clean_output(e.what());
+        std::lock_guard lock(mutex);
+        log << entry.name << ": grader error: " << e.what() << "\n";
+    }
+    return row;
+}
+
+}  // namespace
+
 int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out, int jobs,
-              std::ostream& log) {
-    std::vector<fs::path> submissions;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_directory() || e.path().extension() == ".zip") submissions.push_back(e.path());
-    std::sort(submissions.begin(), submissions.end());
-    jobs = std::max(1, std::min<int>(jobs, int(submissions.size())));
+              bool latest_only, std::ostream& log) {
+    const BatchInput in = batch_input(dir, latest_only);
+    const std::vector<BatchEntry>& entries = in.entries;
+    jobs = std::max(1, std::min<int>(jobs, int(entries.size())));
     // One workspace serves every job: gradings only read it (each links in a scratch folder).
     if (!prepare_workspace(base, log)) return 1;
     fs::create_directories(out);
-    std::vector<std::string> rows(submissions.size());
+    std::vector<std::string> rows(entries.size());
+    std::vector<double> scores(entries.size(), 0);
+    std::vector<bool> graded(entries.size(), false);
     std::vector<int> stage_numbers;
     std::mutex mutex;
     const int per_job_tests = std::max(1, default_thread_count() / jobs);
     // Each submission's row goes to its own index, so the CSV keeps the sorted order.
-    parallel_for(submissions.size(), jobs, [&](std::size_t i) {
+    parallel_for(entries.size(), jobs, [&](std::size_t i) {
         if (g_interrupted) return;  // once interrupted, the rest are skipped
-        std::string name = submissions[i].filename().string();
-        if (name.ends_with(".zip")) name.resize(name.size() - 4);
-        name = clean_output(name);
-        GradeOptions o = base;
-        o.submission = submissions[i];
-        o.results = out / name / "results.json";
-        o.html = out / name / "report.html";
-        o.quiet = true;
-        o.jobs = per_job_tests;
-        std::string row = "\"" + name + "\",";
-        try {
-            // One broken submission never stops the batch: anything thrown is its row's error.
-            const GradeSummary s = grade_submission(o, log);
-            char cell[64];
-            std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
-            row += cell;
-            for (double v : s.stage_scores) {
-                std::snprintf(cell, sizeof cell, ",%g", v);
-                row += cell;
-            }
-            row += s.build_failed ? ",build failed" : ",ok";
-            std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
-            row += cell;
-            std::lock_guard lock(mutex);
-            if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
-            log << name << ": " << s.score << " / " << s.max_score << "\n";
-        } catch (const std::exception& e) {
-            row += "0,0,grader error: " + clean_output(e.what());
-            std::lock_guard lock(mutex);
-            log << name << ": grader error: " << e.what() << "\n";
-        }
+        double score = 0;
+        bool done = false;
+        std::string row =
+            grade_row(base, entries[i], out, per_job_tests, score, done, stage_numbers, mutex, log);
+        row += in.is_export ? export_change(entries[i], score) : "";
         std::lock_guard lock(mutex);
-        rows[i] = row;
+        rows[i] = row, scores[i] = score, graded[i] = done;
     });
-    std::string csv = "submission,score,max_score";
+    std::string csv =
+        std::string("submission") + (in.is_export ? export_header() : "") + ",score,max_score";
     char cell[32];
     for (int n : stage_numbers) {
         std::snprintf(cell, sizeof cell, ",stage%02d", n);
         csv += cell;
     }
-    csv += ",status,seconds\n";
+    csv += std::string(",status,seconds") + (in.is_export ? ",old_score,change" : "") + "\n";
     for (const auto& r : rows)
         if (!r.empty()) csv += r + "\n";
     write_text_atomically(out / "scores.csv", csv);
     log << "scores: " << (out / "scores.csv").string() << "\n";
+    if (in.is_export) {
+        const int changed = write_changes(entries, scores, graded, out / "changes.csv");
+        log << "changes: " << (out / "changes.csv").string() << " (" << changed
+            << " submissions whose score changed or that Gradescope had not scored)\n";
+    }
+    std::error_code ec;
+    if (!in.unpacked.empty()) fs::remove_all(in.unpacked, ec);
     return 0;
 }
 

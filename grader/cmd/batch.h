@@ -10,8 +10,11 @@
 namespace rt::grader {
 
 // Grades every submission (folder or .zip) in `dir`, `jobs` at a time, into `out` (one CSV).
+// `dir` may be Gradescope's "Export Submissions" (folder or .zip, cmd/batch_input.h): the CSV
+// then names each submission's students, and changes.csv compares the new scores with
+// Gradescope's; `latest_only` grades only the newest submission of each student.
 int run_batch(const GradeOptions& base, const std::filesystem::path& dir,
-              const std::filesystem::path& out, int jobs, std::ostream& log);
+              const std::filesystem::path& out, int jobs, bool latest_only, std::ostream& log);
 
 // The Gradescope zip. `stages` (empty: every stage with a grading.json) are the stages its
 // run_autograder grades: one assignment per stage or per group of stages. `max_per_day` > 0:

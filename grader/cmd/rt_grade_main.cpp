@@ -110,14 +110,20 @@ CLI::App* add_release_command(CLI::App& app, ReleaseArgs& a) {
 struct BatchArgs {
     std::string dir, out = "grades";
     int jobs = 1;
+    bool latest = false;
 };
 
 CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
     CLI::App* batch_cmd =
         app.add_subcommand("batch", "Grade every submission (folder or .zip) in DIR");
-    batch_cmd->add_option("dir", a.dir, "folder of submissions")
+    batch_cmd
+        ->add_option(
+            "dir", a.dir,
+            "folder of submissions, or Gradescope's \"Export Submissions\" (folder or .zip)")
         ->required()
-        ->check(CLI::ExistingDirectory);
+        ->check(CLI::ExistingPath);
+    batch_cmd->add_flag("--latest", a.latest,
+                        "of an export, grade only each student's newest submission");
     batch_cmd->add_option("--out", a.out, "where scores.csv and the reports go");
     batch_cmd->add_option("--jobs", a.jobs, "submissions graded at a time")
         ->check(CLI::Range(1, 64));
@@ -267,7 +273,8 @@ int main(int argc, char** argv) {
         }
         if (*prepare_cmd) return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
         if (*batch_cmd)
-            return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, std::cout);
+            return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, batch.latest,
+                                         std::cout);
         if (*compare_cmd) {
             compare.source = grade.source;
             compare.stages = grade.stages;

@@ -18,7 +18,10 @@ using json = nlohmann::json;
 
 std::optional<std::int64_t> parse_iso8601(const std::string& text) {
     int y = 0, mo = 0, d = 0, h = 0, mi = 0, s = 0, used = 0;
-    if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%2d%n", &y, &mo, &d, &h, &mi, &s, &used) !=
+    // The metadata JSON writes "2018-07-01T14:22:32.365935-07:00", an export's YAML
+    // "2018-07-01 14:22:32.365935000 -0700".
+    if (text.size() < 19 || (text[10] != 'T' && text[10] != ' ') ||
+        std::sscanf(text.c_str(), "%4d-%2d-%2d%*c%2d:%2d:%2d%n", &y, &mo, &d, &h, &mi, &s, &used) !=
             6 ||
         used != 19)
         return std::nullopt;
@@ -27,14 +30,17 @@ std::optional<std::int64_t> parse_iso8601(const std::string& text) {
         ++i;
         while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
     }
+    if (i < text.size() && text[i] == ' ') ++i;
     int offset = 0;  // seconds east of UTC
+    const bool colon = i + 6 == text.size() && text[i + 3] == ':';
     if (i < text.size() && text[i] == 'Z') {
         ++i;
-    } else if (i + 6 == text.size() && (text[i] == '+' || text[i] == '-') && text[i + 3] == ':') {
+    } else if ((colon || i + 5 == text.size()) && (text[i] == '+' || text[i] == '-')) {
         int oh = 0, om = 0;
-        if (std::sscanf(text.c_str() + i + 1, "%2d:%2d", &oh, &om) != 2) return std::nullopt;
+        if (std::sscanf(text.c_str() + i + 1, colon ? "%2d:%2d" : "%2d%2d", &oh, &om) != 2)
+            return std::nullopt;
         offset = (text[i] == '-' ? -1 : 1) * (oh * 3600 + om * 60);
-        i += 6;
+        i += colon ? 6 : 5;
     }
     const std::chrono::year_month_day date{std::chrono::year(y), std::chrono::month(unsigned(mo)),
                                            std::chrono::day(unsigned(d))};

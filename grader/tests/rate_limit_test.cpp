@@ -42,6 +42,8 @@ TEST(RateLimit, ParsesGradescopeTimes) {
     // The same instant written in two time zones.
     EXPECT_EQ(parse_iso8601("2018-07-01T14:22:32.365935-07:00"),
               parse_iso8601("2018-07-01T21:22:32Z"));
+    EXPECT_EQ(parse_iso8601("2018-07-01 14:22:32.365935000 -0700"),
+              parse_iso8601("2018-07-01T21:22:32Z"));
     for (const char* bad : {"", "2018-07-01", "2018-13-01T00:00:00Z", "2018-02-30T00:00:00Z",
                             "2018-07-01T14:22:32+7", "yesterday"})
         EXPECT_FALSE(parse_iso8601(bad)) << bad;

@@ -1,0 +1,43 @@
+// What `rt-grade batch` grades: the submissions (folders or .zip files) of a folder, or
+// Gradescope's "Export Submissions" (a folder or its .zip), whose submitters, times and old
+// scores go into the CSV (cmd/gradescope_export.h).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cmd/gradescope_export.h"
+
+namespace rt::grader {
+
+struct BatchEntry {
+    std::filesystem::path path;                  // a folder or a .zip
+    std::string name;                            // its row and its report folder
+    std::optional<ExportedSubmission> exported;  // from an export's metadata
+};
+
+struct BatchInput {
+    std::vector<BatchEntry> entries;
+    bool is_export = false;
+    std::filesystem::path unpacked;  // a zipped export's temporary folder (removed by the caller)
+};
+
+// The entries of `dir` (a folder, or an export's .zip, unpacked to a temporary folder), sorted;
+// of an export, its submissions (`latest_only`: the newest of each student). Throws
+// std::runtime_error with a one-line reason when it cannot be read.
+BatchInput batch_input(const std::filesystem::path& dir, bool latest_only);
+
+// The CSV columns an export adds after the submission's name, and after its new score.
+std::string export_header();
+std::string export_identity(const BatchEntry& entry);
+std::string export_change(const BatchEntry& entry, double new_score);
+
+// changes.csv: per graded submission of an export, the old score, the new one and the change.
+// Returns how many changed.
+int write_changes(const std::vector<BatchEntry>& entries, const std::vector<double>& new_scores,
+                  const std::vector<bool>& graded, const std::filesystem::path& file);
+
+}  // namespace rt::grader

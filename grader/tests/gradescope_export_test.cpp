@@ -1,0 +1,117 @@
+// Gradescope's "Export Submissions" read by `rt-grade batch` (cmd/gradescope_export.h).
+#include "cmd/gradescope_export.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cmd/batch_input.h"
+
+namespace rt::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An export as Gradescope lays it out, inside a wrapping folder as its zip unpacks.
+fs::path make_export(const std::string& metadata) {
+    const fs::path top = fs::path(::testing::TempDir()) / "export-test";
+    fs::remove_all(top);
+    const fs::path root = top / "assignment_77_export";
+    for (const char* folder : {"submission_1", "submission_2", "submission_3"})
+        fs::create_directories(root / folder);
+    std::ofstream(root / "submission_metadata.yml") << metadata;
+    return top;
+}
+
+const char* const kMetadata = R"(submission_2:
+  :submitters:
+  - :name: Ada Lovelace
+    :sid: '1815'
+    :email: ada@example.com
+  :created_at: 2026-12-02 10:00:00.000000000 -0800
+  :score: 40.0
+submission_1:
+  :submitters:
+  - :name: Ada Lovelace
+    :sid: '1815'
+    :email: ada@example.com
+  :created_at: 2026-12-01 09:30:00.123456000 -0800
+  :score: 12.5
+submission_3:
+  :submitters:
+  - :name: Grace Hopper
+    :sid: '1906'
+    :email: grace@example.com
+  - :name: Alan Turing
+    :sid: '1912'
+    :email: alan@example.com
+  :created_at: 2026-12-02T08:00:00Z
+  :score:
+submission_gone:
+  :submitters:
+  - :name: Nobody
+  :created_at: 2026-12-02T08:00:00Z
+)";
+
+TEST(GradescopeExport, ReadsSubmittersTimesAndScoresOldestFirst) {
+    const fs::path top = make_export(kMetadata);
+    const auto root = export_root(top);
+    ASSERT_TRUE(root);
+    const auto all = read_gradescope_export(*root);
+    ASSERT_EQ(all.size(), 3u) << "submission_gone has no folder";
+    EXPECT_EQ(all[0].folder, "submission_1");
+    EXPECT_EQ(all[0].names, "Ada Lovelace");
+    EXPECT_EQ(all[0].sids, "1815");
+    EXPECT_EQ(all[0].old_score, 12.5);
+    EXPECT_EQ(all[1].folder, "submission_3");  // 08:00 UTC, before submission_2's 18:00 UTC
+    EXPECT_EQ(all[1].names, "Grace Hopper; Alan Turing");
+    EXPECT_FALSE(all[1].old_score) << "an empty :score: is no score";
+    EXPECT_EQ(all[2].folder, "submission_2");
+}
+
+TEST(GradescopeExport, LatestPerStudentKeepsEachStudentsNewest) {
+    const auto all = read_gradescope_export(*export_root(make_export(kMetadata)));
+    const auto latest = latest_per_student(all);
+    ASSERT_EQ(latest.size(), 2u);
+    EXPECT_EQ(latest[0].folder, "submission_3");
+    EXPECT_EQ(latest[1].folder, "submission_2");
+}
+
+TEST(GradescopeExport, BatchInputNamesTheStudentsAndTheChange) {
+    const BatchInput in = batch_input(make_export(kMetadata), false);
+    ASSERT_TRUE(in.is_export);
+    ASSERT_EQ(in.entries.size(), 3u);
+    EXPECT_EQ(export_identity(in.entries[0]), R"(,"Ada Lovelace","1815","ada@example.com")");
+    EXPECT_EQ(export_change(in.entries[0], 20), ",12.5,7.5");
+    EXPECT_EQ(export_change(in.entries[2], 20), ",,") << "no old score";
+}
+
+TEST(GradescopeExport, APlainFolderIsNotAnExport) {
+    const fs::path dir = fs::path(::testing::TempDir()) / "plain-batch";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "alice");
+    fs::create_directories(dir / "bob");
+    EXPECT_FALSE(export_root(dir));
+    const BatchInput in = batch_input(dir, false);
+    EXPECT_FALSE(in.is_export);
+    ASSERT_EQ(in.entries.size(), 2u);
+    EXPECT_EQ(in.entries[0].name, "alice");
+}
+
+TEST(GradescopeExport, MistakesNameTheFileAndTheSubmission) {
+    for (const char* bad : {"submission_1:\n  :created_at: 2026-12-01T00:00:00Z\n",
+                            "submission_1:\n  :submitters:\n  - :name: A\n  :created_at: soon\n",
+                            "../etc:\n  :submitters:\n  - :name: A\n", "- a\n- b\n", "a: [b\n"}) {
+        const fs::path top = make_export(bad);
+        try {
+            read_gradescope_export(*export_root(top));
+            ADD_FAILURE() << "accepted: " << bad;
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("submission_metadata.yml: "), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt::grader
