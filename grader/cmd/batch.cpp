@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <mutex>
 
+#include "cmd/dashboard.h"
 #include "core/parallel_for.h"
 #include "util.h"
 #include "workspace/workspace_prepare.h"
@@ -14,6 +15,54 @@
 namespace fs = std::filesystem;
 
 namespace rt::grader {
+
+namespace {
+
+// One submission's line of scores.csv.
+struct Row {
+    std::string name;
+    bool graded = false;
+    GradeSummary summary;
+    std::string error;  // what the grader threw
+};
+
+std::string csv_cell(const std::string& text) {
+    std::string cell = "\"";
+    for (const char c : text) cell += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return cell + "\"";
+}
+
+// One column per stage (stageNN), ready for a gradebook import: a row the grader could not
+// grade keeps its stage cells empty, so its status never shifts into a stage's column.
+std::string scores_csv(const std::vector<Row>& rows, const std::vector<int>& stages) {
+    std::string csv = "submission,score,max_score";
+    char cell[64];
+    for (const int n : stages) csv += ",stage" + two_digits(n);
+    csv += ",status,seconds\n";
+    for (const auto& r : rows) {
+        if (r.name.empty()) continue;  // skipped after an interruption
+        const GradeSummary& s = r.summary;
+        std::snprintf(cell, sizeof cell, ",%g,%g", s.score, s.max_score);
+        csv += csv_cell(r.name) + cell;
+        for (const int n : stages) {
+            const auto at = std::find(s.stage_numbers.begin(), s.stage_numbers.end(), n);
+            cell[0] = '\0';
+            if (at != s.stage_numbers.end() &&
+                std::size_t(at - s.stage_numbers.begin()) < s.stage_scores.size())
+                std::snprintf(cell, sizeof cell, "%g",
+                              s.stage_scores[at - s.stage_numbers.begin()]);
+            csv += "," + std::string(cell);
+        }
+        const std::string status = !r.graded        ? "grader error: " + r.error
+                                   : s.build_failed ? "build failed"
+                                                    : "ok";
+        std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
+        csv += "," + csv_cell(status) + cell + "\n";
+    }
+    return csv;
+}
+
+}  // namespace
 
 int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out, int jobs,
               std::ostream& log) {
@@ -25,7 +74,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
     // One workspace serves every job: gradings only read it (each links in a scratch folder).
     if (!prepare_workspace(base, log)) return 1;
     fs::create_directories(out);
-    std::vector<std::string> rows(submissions.size());
+    std::vector<Row> rows(submissions.size());
     std::vector<int> stage_numbers;
     std::mutex mutex;
     const int per_job_tests = std::max(1, default_thread_count() / jobs);
@@ -39,44 +88,28 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
         o.submission = submissions[i];
         o.results = out / name / "results.json";
         o.html = out / name / "report.html";
+        o.renders = out / name / "renders";  // the dashboard's thumbnails of failing scenes
         o.quiet = true;
         o.jobs = per_job_tests;
-        std::string row = "\"" + name + "\",";
+        Row row{name, false, {}, {}};
         try {
             // One broken submission never stops the batch: anything thrown is its row's error.
-            const GradeSummary s = grade_submission(o, log);
-            char cell[64];
-            std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
-            row += cell;
-            for (double v : s.stage_scores) {
-                std::snprintf(cell, sizeof cell, ",%g", v);
-                row += cell;
-            }
-            row += s.build_failed ? ",build failed" : ",ok";
-            std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
-            row += cell;
+            row.summary = grade_submission(o, log);
+            row.graded = true;
             std::lock_guard lock(mutex);
-            if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
-            log << name << ": " << s.score << " / " << s.max_score << "\n";
+            if (stage_numbers.empty()) stage_numbers = row.summary.stage_numbers;
+            log << name << ": " << row.summary.score << " / " << row.summary.max_score << "\n";
         } catch (const std::exception& e) {
-            row += "0,0,grader error: " + clean_output(e.what());
+            row.error = clean_output(e.what());
             std::lock_guard lock(mutex);
             log << name << ": grader error: " << e.what() << "\n";
         }
         std::lock_guard lock(mutex);
-        rows[i] = row;
+        rows[i] = std::move(row);
     });
-    std::string csv = "submission,score,max_score";
-    char cell[32];
-    for (int n : stage_numbers) {
-        std::snprintf(cell, sizeof cell, ",stage%02d", n);
-        csv += cell;
-    }
-    csv += ",status,seconds\n";
-    for (const auto& r : rows)
-        if (!r.empty()) csv += r + "\n";
-    write_text_atomically(out / "scores.csv", csv);
+    write_text_atomically(out / "scores.csv", scores_csv(rows, stage_numbers));
     log << "scores: " << (out / "scores.csv").string() << "\n";
+    write_batch_dashboard(out, file_url(base.source), log);
     return 0;
 }
 
