@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "cmd/batch_input.h"
+#include "cmd/dashboard.h"
 #include "core/parallel_for.h"
 #include "util.h"
 #include "workspace/workspace_prepare.h"
@@ -18,40 +19,64 @@ namespace rt::grader {
 
 namespace {
 
-// One submission's CSV row (its scores, or why it has none); `score` receives its total.
-std::string grade_row(const GradeOptions& base, const BatchEntry& entry, const fs::path& out,
-                      int tests_per_job, double& score, bool& graded,
-                      std::vector<int>& stage_numbers, std::mutex& mutex, std::ostream& log) {
-    GradeOptions o = base;
-    o.submission = entry.path;
-    o.results = out / entry.name / "results.json";
-    o.html = out / entry.name / "report.html";
-    o.quiet = true;
-    o.jobs = tests_per_job;
-    std::string row = "\"" + entry.name + "\"" + export_identity(entry) + ",";
-    try {
-        // One broken submission never stops the batch: anything thrown is its row's error.
-        const GradeSummary s = grade_submission(o, log);
-        char cell[64];
-        std::snprintf(cell, sizeof cell, "%g,%g", s.score, s.max_score);
-        row += cell;
-        for (double v : s.stage_scores) {
-            std::snprintf(cell, sizeof cell, ",%g", v);
-            row += cell;
+// One submission's line of scores.csv.
+struct Row {
+    std::string name;
+    const BatchEntry* entry = nullptr;
+    bool graded = false;
+    GradeSummary summary;
+    std::string error;  // what the grader threw
+};
+
+// One column per stage (stageNN), ready for a gradebook import: a row the grader could not
+// grade keeps its stage cells empty, so its status never shifts into a stage's column.
+// An export's rows also name the students (after the submission) and compare with
+// Gradescope's score (at the end).
+std::string scores_csv(const std::vector<Row>& rows, const std::vector<int>& stages,
+                       bool is_export) {
+    std::string csv =
+        std::string("submission") + (is_export ? export_header() : "") + ",score,max_score";
+    char cell[64];
+    for (const int n : stages) csv += ",stage" + two_digits(n);
+    csv += std::string(",status,seconds") + (is_export ? ",old_score,change" : "") + "\n";
+    for (const auto& r : rows) {
+        if (r.name.empty()) continue;  // skipped after an interruption
+        const GradeSummary& s = r.summary;
+        std::snprintf(cell, sizeof cell, ",%g,%g", s.score, s.max_score);
+        csv += csv_cell(r.name) + export_identity(*r.entry) + cell;
+        for (const int n : stages) {
+            const auto at = std::find(s.stage_numbers.begin(), s.stage_numbers.end(), n);
+            cell[0] = '\0';
+            if (at != s.stage_numbers.end() &&
+                std::size_t(at - s.stage_numbers.begin()) < s.stage_scores.size())
+                std::snprintf(cell, sizeof cell, "%g",
+                              s.stage_scores[at - s.stage_numbers.begin()]);
+            csv += "," + std::string(cell);
         }
-        row += s.build_failed ? ",build failed" : ",ok";
+        const std::string status = !r.graded        ? "grader error: " + r.error
+                                   : s.build_failed ? "build failed"
+                                                    : "ok";
         std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
-        row += cell;
-        score = s.score, graded = true;
-        std::lock_guard lock(mutex);
-        if (stage_numbers.empty()) stage_numbers = s.stage_numbers;
-        log << entry.name << ": " << s.score << " / " << s.max_score << "\n";
-    } catch (const std::exception& e) {
-        row += "0,0,grader error: " + clean_output(e.what());
-        std::lock_guard lock(mutex);
-        log << entry.name << ": grader error: " << e.what() << "\n";
+        csv += "," + csv_cell(status) + cell;
+        csv += (is_export && r.graded ? export_change(*r.entry, s.score) : "") + "\n";
     }
-    return row;
+    return csv;
+}
+
+// changes.csv: what a regrade changed against the scores Gradescope had.
+void write_export_changes(const std::vector<Row>& rows, const fs::path& file, std::ostream& log) {
+    std::vector<BatchEntry> entries;
+    std::vector<double> scores;
+    std::vector<bool> graded;
+    for (const Row& r : rows) {
+        if (!r.entry) continue;  // skipped after an interruption
+        entries.push_back(*r.entry);
+        scores.push_back(r.summary.score);
+        graded.push_back(r.graded);
+    }
+    const int changed = write_changes(entries, scores, graded, file);
+    log << "changes: " << file.string() << " (" << changed
+        << " submissions whose score changed or that Gradescope had not scored)\n";
 }
 
 }  // namespace
@@ -59,45 +84,46 @@ std::string grade_row(const GradeOptions& base, const BatchEntry& entry, const f
 int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out, int jobs,
               bool latest_only, std::ostream& log) {
     const BatchInput in = batch_input(dir, latest_only);
-    const std::vector<BatchEntry>& entries = in.entries;
-    jobs = std::max(1, std::min<int>(jobs, int(entries.size())));
+    jobs = std::max(1, std::min<int>(jobs, int(in.entries.size())));
     // One workspace serves every job: gradings only read it (each links in a scratch folder).
     if (!prepare_workspace(base, log)) return 1;
     fs::create_directories(out);
-    std::vector<std::string> rows(entries.size());
-    std::vector<double> scores(entries.size(), 0);
-    std::vector<bool> graded(entries.size(), false);
+    std::vector<Row> rows(in.entries.size());
     std::vector<int> stage_numbers;
     std::mutex mutex;
     const int per_job_tests = std::max(1, default_thread_count() / jobs);
     // Each submission's row goes to its own index, so the CSV keeps the sorted order.
-    parallel_for(entries.size(), jobs, [&](std::size_t i) {
+    parallel_for(in.entries.size(), jobs, [&](std::size_t i) {
         if (g_interrupted) return;  // once interrupted, the rest are skipped
-        double score = 0;
-        bool done = false;
-        std::string row =
-            grade_row(base, entries[i], out, per_job_tests, score, done, stage_numbers, mutex, log);
-        row += in.is_export ? export_change(entries[i], score) : "";
+        const BatchEntry& entry = in.entries[i];
+        GradeOptions o = base;
+        o.submission = entry.path;
+        o.results = out / entry.name / "results.json";
+        o.html = out / entry.name / "report.html";
+        o.renders = out / entry.name / "renders";  // the dashboard's thumbnails of failing scenes
+        o.quiet = true;
+        o.jobs = per_job_tests;
+        Row row{entry.name, &entry, false, {}, {}};
+        try {
+            // One broken submission never stops the batch: anything thrown is its row's error.
+            row.summary = grade_submission(o, log);
+            row.graded = true;
+            std::lock_guard lock(mutex);
+            if (stage_numbers.empty()) stage_numbers = row.summary.stage_numbers;
+            log << entry.name << ": " << row.summary.score << " / " << row.summary.max_score
+                << "\n";
+        } catch (const std::exception& e) {
+            row.error = clean_output(e.what());
+            std::lock_guard lock(mutex);
+            log << entry.name << ": grader error: " << e.what() << "\n";
+        }
         std::lock_guard lock(mutex);
-        rows[i] = row, scores[i] = score, graded[i] = done;
+        rows[i] = std::move(row);
     });
-    std::string csv =
-        std::string("submission") + (in.is_export ? export_header() : "") + ",score,max_score";
-    char cell[32];
-    for (int n : stage_numbers) {
-        std::snprintf(cell, sizeof cell, ",stage%02d", n);
-        csv += cell;
-    }
-    csv += std::string(",status,seconds") + (in.is_export ? ",old_score,change" : "") + "\n";
-    for (const auto& r : rows)
-        if (!r.empty()) csv += r + "\n";
-    write_text_atomically(out / "scores.csv", csv);
+    write_text_atomically(out / "scores.csv", scores_csv(rows, stage_numbers, in.is_export));
     log << "scores: " << (out / "scores.csv").string() << "\n";
-    if (in.is_export) {
-        const int changed = write_changes(entries, scores, graded, out / "changes.csv");
-        log << "changes: " << (out / "changes.csv").string() << " (" << changed
-            << " submissions whose score changed or that Gradescope had not scored)\n";
-    }
+    if (in.is_export) write_export_changes(rows, out / "changes.csv", log);
+    write_batch_dashboard(out, file_url(base.source), log);
     std::error_code ec;
     if (!in.unpacked.empty()) fs::remove_all(in.unpacked, ec);
     return 0;

@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A CSV field: quoted, with quotes doubled.
-std::string csv(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 std::string number(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);
@@ -40,6 +33,12 @@ fs::path unpack(const fs::path& zip) {
 }
 
 }  // namespace
+
+std::string csv_cell(const std::string& text) {
+    std::string cell = "\"";
+    for (const char c : text) cell += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return cell + "\"";
+}
 
 BatchInput batch_input(const fs::path& dir, bool latest_only) {
     BatchInput in;
@@ -72,8 +71,8 @@ std::string export_header() {
 
 std::string export_identity(const BatchEntry& e) {
     if (!e.exported) return "";
-    return "," + csv(e.exported->names) + "," + csv(e.exported->sids) + "," +
-           csv(e.exported->emails);
+    return "," + csv_cell(e.exported->names) + "," + csv_cell(e.exported->sids) + "," +
+           csv_cell(e.exported->emails);
 }
 
 std::string export_change(const BatchEntry& e, double new_score) {
@@ -92,7 +91,7 @@ int write_changes(const std::vector<BatchEntry>& entries, const std::vector<doub
         const auto& x = *e.exported;
         const double change = x.old_score ? new_scores[i] - *x.old_score : 0;
         if (!x.old_score || std::abs(change) > 0.005) ++changed;
-        text += csv(e.name) + "," + csv(x.names) + "," + csv(x.sids) + "," +
+        text += csv_cell(e.name) + "," + csv_cell(x.names) + "," + csv_cell(x.sids) + "," +
                 (x.old_score ? number(*x.old_score) : "") + "," + number(new_scores[i]) + "," +
                 (x.old_score ? number(std::round(change * 100) / 100) : "new") + "\n";
     }

@@ -30,6 +30,9 @@ struct BatchInput {
 // std::runtime_error with a one-line reason when it cannot be read.
 BatchInput batch_input(const std::filesystem::path& dir, bool latest_only);
 
+// A CSV field: quoted, with quotes doubled.
+std::string csv_cell(const std::string& text);
+
 // The CSV columns an export adds after the submission's name, and after its new score.
 std::string export_header();
 std::string export_identity(const BatchEntry& entry);

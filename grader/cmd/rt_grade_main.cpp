@@ -12,6 +12,7 @@
 
 #include "cmd/batch.h"
 #include "cmd/compare.h"
+#include "cmd/dashboard.h"
 #include "cmd/similarity.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
@@ -128,6 +129,37 @@ CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
     batch_cmd->add_option("--jobs", a.jobs, "submissions graded at a time")
         ->check(CLI::Range(1, 64));
     return batch_cmd;
+}
+
+struct DashboardArgs {
+    std::string out, handout_base;
+};
+
+CLI::App* add_dashboard_command(CLI::App& app, DashboardArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "dashboard",
+        "Rebuild OUT/index.html, the class dashboard, from a batch's results.json files");
+    cmd->add_option("out", a.out, "a batch's --out folder")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    cmd->add_option("--handout-base", a.handout_base,
+                    "prefix of the handout links, e.g. a repository's web address ending in / "
+                    "(default: file:// of --source)");
+    return cmd;
+}
+
+// `rt-grade dashboard OUT`: a folder without a single readable results.json is an error.
+int run_dashboard(const DashboardArgs& a, const fs::path& source) {
+    const std::string base = a.handout_base.empty() ? rt::grader::file_url(source) : a.handout_base;
+    const int read = rt::grader::write_dashboard(a.out, base, std::cerr);
+    const fs::path page = fs::path(a.out) / "index.html";
+    if (read == 0) {
+        std::cerr << "rt-grade: error: no readable OUT/NAME/results.json in " << a.out
+                  << " (is it a batch's --out folder?)\n";
+        return 1;
+    }
+    std::cout << "dashboard: " << page.string() << " (" << read << " submissions)\n";
+    return 0;
 }
 
 CLI::App* add_compare_command(CLI::App& app, rt::grader::CompareRequest& compare) {
@@ -257,8 +289,11 @@ int main(int argc, char** argv) {
     CLI::App* compare_cmd = add_compare_command(app, compare);
     SimilarityArgs similarity;
     CLI::App* similarity_cmd = add_similarity_command(app, similarity);
+    DashboardArgs dashboard;
+    CLI::App* dashboard_cmd = add_dashboard_command(app, dashboard);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
-    for (CLI::App* sub : {prepare_cmd, batch_cmd, package_cmd, compare_cmd, similarity_cmd})
+    for (CLI::App* sub :
+         {prepare_cmd, batch_cmd, package_cmd, compare_cmd, similarity_cmd, dashboard_cmd})
         sub->fallthrough();
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
@@ -275,6 +310,7 @@ int main(int argc, char** argv) {
         if (*batch_cmd)
             return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, batch.latest,
                                          std::cout);
+        if (*dashboard_cmd) return run_dashboard(dashboard, grade.source);
         if (*compare_cmd) {
             compare.source = grade.source;
             compare.stages = grade.stages;

@@ -200,6 +200,11 @@ void summarise(Grading& g, std::ostream& log) {
     const Report report = g.to_report();
     if (!g.o.results.empty()) write_results_json(report, g.o.results);
     if (!g.o.html.empty()) write_html_report(report, g.o.html);
+    if (!g.o.renders.empty()) {
+        std::error_code ec;
+        fs::remove_all(g.o.renders, ec);  // a regrade's images only: none left from the last one
+        write_failing_renders(report, g.o.renders);
+    }
     if (!g.o.quiet) write_terminal_summary(report, log, g.o.reveal_hidden);
 }
 

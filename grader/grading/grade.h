@@ -16,6 +16,7 @@ struct GradeOptions {
     std::vector<int> stages;           // empty: every stage with a grading.json
     std::filesystem::path results;     // Gradescope results.json (optional)
     std::filesystem::path html;        // HTML report (optional)
+    std::filesystem::path renders;     // failing scenes' images, for the dashboard (optional)
     int jobs = 0;                      // parallel test processes (0: hardware threads)
     bool quiet = false;                // no terminal summary
     bool started_only = false;         // no --stages: grade the stages started (self-grading)

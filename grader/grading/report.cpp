@@ -162,6 +162,23 @@ std::string stage_html(const Report& report, const ReportStage& s) {
 
 }  // namespace
 
+const char* report_style() {
+    return kReportStyle;
+}
+
+std::string render_png_name(const std::string& test_name) {
+    std::string name = test_name;
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.') c = '-';
+    return name + ".png";
+}
+
+void write_failing_renders(const Report& report, const fs::path& dir) {
+    for (const auto& t : report.tests)
+        if (t.is_scene && t.status != "passed" && !t.student_png.empty())
+            write_text_atomically(dir / render_png_name(t.name), t.student_png);
+}
+
 void write_html_report(const Report& report, const fs::path& file) {
     double score = 0, max_score = 0;
     for (const auto& t : report.tests) {

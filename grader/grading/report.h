@@ -45,4 +45,12 @@ void write_results_json(const Report& report, const std::filesystem::path& file)
 void write_html_report(const Report& report, const std::filesystem::path& file);
 void write_terminal_summary(const Report& report, std::ostream& out, bool reveal_hidden);
 
+// The student's image of each failing scene, as `dir`/render_png_name(test's name) (batch: for
+// the class dashboard, cmd/dashboard.h). Passing scenes' images are the reference: not kept.
+void write_failing_renders(const Report& report, const std::filesystem::path& dir);
+// "Stage 02 image spheres_normals" -> "Stage-02-image-spheres_normals.png": one name per test.
+std::string render_png_name(const std::string& test_name);
+// The reports' CSS, shared by the class dashboard.
+const char* report_style();
+
 }  // namespace rt::grader

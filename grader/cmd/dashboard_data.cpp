@@ -1,0 +1,228 @@
+// The class dashboard's numbers (cmd/dashboard.h): a batch's results.json files read back, and
+// counted per stage, per test and per scene.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cmd/dashboard.h"
+#include "grading/report.h"
+#include "grading/test_output.h"
+#include "util.h"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace rt::grader {
+namespace {
+
+double number(const json& j, const char* key) {
+    const auto it = j.find(key);
+    return it != j.end() && it->is_number() ? it->get<double>() : 0;
+}
+
+std::string text(const json& j, const char* key) {
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+// "stage02" -> 2; 0 when no tag names a stage.
+int stage_of(const json& tags) {
+    if (!tags.is_array()) return 0;
+    for (const auto& tag : tags) {
+        if (!tag.is_string()) continue;
+        const std::string t = tag.get<std::string>();
+        if (t.size() == 7 && t.starts_with("stage") && std::isdigit((unsigned char)t[5]) &&
+            std::isdigit((unsigned char)t[6]))
+            return (t[5] - '0') * 10 + (t[6] - '0');
+    }
+    return 0;
+}
+
+bool has_tag(const json& tags, const std::string& wanted) {
+    if (!tags.is_array()) return false;
+    return std::any_of(tags.begin(), tags.end(), [&](const json& t) {
+        return t.is_string() && t.get<std::string>() == wanted;
+    });
+}
+
+// A failing image test's render, kept by the batch beside results.json (report.h).
+void find_render(const fs::path& out, const std::string& submission, DashTest& t) {
+    const fs::path rel = fs::path(submission) / "renders" / render_png_name(t.name);
+    std::string bytes;
+    if (!read_text_if(out / rel, bytes)) return;
+    t.render = rel.generic_string();
+    t.render_hash = fnv1a(bytes);
+}
+
+// One entry of results.json's tests[]; false (with `why`) when it is not a test.
+bool read_test(const json& j, DashTest& t, std::string& why) {
+    if (!j.is_object() || !j.contains("name") || !j["name"].is_string()) {
+        why = "a test without a name";
+        return false;
+    }
+    t.name = j["name"].get<std::string>();
+    const json tags = j.value("tags", json::array());
+    t.stage = stage_of(tags);
+    t.image = has_tag(tags, "image");
+    t.passed = text(j, "status") == "passed";
+    t.hints = handout_hints(text(j, "output"));
+    return true;
+}
+
+// OUT/NAME/results.json; false (with `why`) when it is missing or not Gradescope's format.
+bool read_submission(const fs::path& out, DashSubmission& s, std::string& why) {
+    const fs::path file = out / s.name / "results.json";
+    std::string body;
+    if (!fs::is_regular_file(file) || !read_text_if(file, body)) {
+        why = "missing or unreadable";
+        return false;
+    }
+    const json j = json::parse(body, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) {
+        why = "not valid JSON";
+        return false;
+    }
+    if (!j.contains("tests") || !j["tests"].is_array()) {
+        why = "no \"tests\" list (not a Gradescope results.json)";
+        return false;
+    }
+    s.seconds = number(j, "execution_time");
+    for (const auto& entry : j["tests"]) {
+        DashTest t;
+        if (!read_test(entry, t, why)) return false;
+        const double score = number(entry, "score"), max = number(entry, "max_score");
+        s.score += score;
+        s.max_score += max;
+        if (t.stage > 0) {
+            s.stages[t.stage].first += score;
+            s.stages[t.stage].second += max;
+        }
+        if (t.image && !t.passed) find_render(out, s.name, t);
+        s.tests.push_back(std::move(t));
+    }
+    return true;
+}
+
+double median_of(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+}  // namespace
+
+ClassResults read_class_results(const fs::path& out, std::ostream& log) {
+    ClassResults r;
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec))
+        if (e.is_directory()) names.push_back(e.path().filename().string());
+    if (ec) throw std::runtime_error("cannot list " + out.string() + " (" + ec.message() + ")");
+    std::sort(names.begin(), names.end());
+    for (const auto& name : names) {
+        DashSubmission s;
+        s.name = name;
+        std::string why;
+        if (read_submission(out, s, why)) {
+            r.submissions.push_back(std::move(s));
+            continue;
+        }
+        const std::string file = (out / name / "results.json").string();
+        r.problems.push_back(file + ": " + why + ", left out");
+        log << "rt-grade: warning: " << r.problems.back() << "\n";
+    }
+    return r;
+}
+
+std::vector<StageHistogram> stage_histograms(const ClassResults& results) {
+    std::map<int, std::vector<double>> percents;
+    for (const auto& s : results.submissions)
+        for (const auto& [stage, points] : s.stages)
+            if (points.second > 0) percents[stage].push_back(100 * points.first / points.second);
+    std::vector<StageHistogram> out;
+    for (const auto& [stage, values] : percents) {
+        StageHistogram h;
+        h.stage = stage;
+        h.graded = int(values.size());
+        double sum = 0;
+        for (const double p : values) {
+            // Rounding in results.json (points to 2 decimals) must not drop full marks a bin.
+            const int bin = p >= 99.995 ? kHistogramBins - 1 : std::clamp(int(p / 10), 0, 9);
+            ++h.counts[std::size_t(bin)];
+            sum += p;
+        }
+        h.mean = sum / double(values.size());
+        h.median = median_of(values);
+        out.push_back(h);
+    }
+    return out;
+}
+
+namespace {
+
+// One test's failures being counted: its handout sections and its failing images.
+struct Tally {
+    TestFailures f;
+    std::map<std::string, int> hints;
+    std::map<std::uint64_t, std::pair<int, std::string>> renders;  // hash -> (count, an image)
+    std::vector<std::uint64_t> render_order;                       // first seen first (ties)
+};
+
+void count_failure(Tally& tally, const DashTest& t) {
+    ++tally.f.failed;
+    for (const auto& h : t.hints) ++tally.hints[h];
+    if (t.render.empty()) return;
+    auto [it, fresh] = tally.renders.try_emplace(t.render_hash, 0, t.render);
+    if (fresh) tally.render_order.push_back(t.render_hash);
+    ++it->second.first;
+}
+
+TestFailures finish(Tally& tally) {
+    TestFailures f = std::move(tally.f);
+    f.hints.assign(tally.hints.begin(), tally.hints.end());
+    std::stable_sort(f.hints.begin(), f.hints.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    for (const std::uint64_t hash : tally.render_order) {
+        const auto& [count, file] = tally.renders[hash];
+        if (count > f.common_count) {
+            f.common_count = count;
+            f.common_render = file;
+        }
+    }
+    return f;
+}
+
+}  // namespace
+
+std::vector<TestFailures> test_failures(const ClassResults& results, bool images) {
+    std::map<std::string, Tally> tallies;
+    for (const auto& s : results.submissions)
+        for (const auto& t : s.tests) {
+            if (t.image != images) continue;
+            Tally& tally = tallies[t.name];
+            tally.f.name = t.name;
+            tally.f.stage = t.stage;
+            ++tally.f.graded;
+            if (!t.passed) count_failure(tally, t);
+        }
+    std::vector<TestFailures> out;
+    for (auto& [name, tally] : tallies) out.push_back(finish(tally));
+    // Worst first: the highest failure rate, then the most failures; ties by name (map order).
+    std::stable_sort(out.begin(), out.end(), [](const TestFailures& a, const TestFailures& b) {
+        const double ra = double(a.failed) / a.graded, rb = double(b.failed) / b.graded;
+        return ra != rb ? ra > rb : a.failed > b.failed;
+    });
+    return out;
+}
+
+std::array<double, 3> run_time_summary(const ClassResults& results) {
+    std::vector<double> seconds;
+    for (const auto& s : results.submissions) seconds.push_back(s.seconds);
+    if (seconds.empty()) return {0, 0, 0};
+    const auto [min, max] = std::minmax_element(seconds.begin(), seconds.end());
+    return {*min, median_of(seconds), *max};
+}
+
+}  // namespace rt::grader
