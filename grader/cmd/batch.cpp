@@ -104,6 +104,11 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
         o.quiet = true;
         o.jobs = per_job_tests;
         Row row{entry.name, &entry, false, {}, {}};
+        if (entry.exported) {  // the dashboard's names (cmd/dashboard.h)
+            fs::create_directories(out / entry.name);
+            write_text_atomically(out / entry.name / kStudentsFile,
+                                  entry.exported->names + " (" + entry.exported->sids + ")\n");
+        }
         try {
             // One broken submission never stops the batch: anything thrown is its row's error.
             row.summary = grade_submission(o, log);

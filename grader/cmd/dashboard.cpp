@@ -145,14 +145,18 @@ std::string submissions_html(const ClassResults& results) {
     std::set<int> stages;
     for (const auto& s : results.submissions)
         for (const auto& [stage, points] : s.stages) stages.insert(stage);
-    std::string h = "<h2>Submissions</h2>\n" + run_times_html(results) +
-                    "<table><tr><th>submission (its report)</th><th>points</th>";
+    const bool named = std::any_of(results.submissions.begin(), results.submissions.end(),
+                                   [](const DashSubmission& s) { return !s.students.empty(); });
+    std::string h = "<h2>Submissions</h2>\n" + run_times_html(results) + "<table><tr>" +
+                    (named ? "<th>students</th>" : "") +
+                    "<th>submission (its report)</th><th>points</th>";
     for (const int n : stages) h += "<th>stage " + two_digits(n) + "</th>";
     h += "<th>failed tests</th><th>seconds</th></tr>\n";
     for (const auto& s : results.submissions) {
         const auto failed = std::count_if(s.tests.begin(), s.tests.end(),
                                           [](const DashTest& t) { return !t.passed; });
-        h += "<tr><td><a href=\"" + html_escape(s.name) + "/report.html\">" + html_escape(s.name) +
+        h += "<tr>" + (named ? "<td>" + html_escape(s.students) + "</td>" : std::string()) +
+             "<td><a href=\"" + html_escape(s.name) + "/report.html\">" + html_escape(s.name) +
              "</a></td><td class=\"num\">" + format("%g", s.score) + " / " +
              format("%g", s.max_score) + "</td>";
         for (const int n : stages) {

@@ -26,12 +26,17 @@ struct DashTest {
 };
 
 struct DashSubmission {
-    std::string name;  // its folder under OUT
+    std::string name;      // its folder under OUT
+    std::string students;  // OUT/NAME/students.txt (a Gradescope export's submitters), or empty
     double score = 0, max_score = 0;
     double seconds = 0;                               // results.json's execution_time
     std::map<int, std::pair<double, double>> stages;  // stage -> (points, of max)
     std::vector<DashTest> tests;
 };
+
+// Beside results.json, the students of a submission from a Gradescope export, one line
+// ("Ada Byron (101)"); `rt-grade batch` writes it.
+inline constexpr const char* kStudentsFile = "students.txt";
 
 struct ClassResults {
     std::vector<DashSubmission> submissions;  // in name order

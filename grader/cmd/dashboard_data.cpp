@@ -88,6 +88,8 @@ bool read_submission(const fs::path& out, DashSubmission& s, std::string& why) {
         return false;
     }
     s.seconds = number(j, "execution_time");
+    read_text_if(out / s.name / kStudentsFile, s.students);
+    while (!s.students.empty() && s.students.back() == '\n') s.students.pop_back();
     for (const auto& entry : j["tests"]) {
         DashTest t;
         if (!read_test(entry, t, why)) return false;
@@ -133,6 +135,9 @@ ClassResults read_class_results(const fs::path& out, std::ostream& log) {
         r.problems.push_back(file + ": " + why + ", left out");
         log << "rt-grade: warning: " << r.problems.back() << "\n";
     }
+    // An export's folders are numbers (submission_123456): its students' names order it.
+    std::stable_sort(r.submissions.begin(), r.submissions.end(),
+                     [](const auto& a, const auto& b) { return a.students < b.students; });
     return r;
 }
 
