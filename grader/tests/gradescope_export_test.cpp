@@ -12,9 +12,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A folder of this test's own: CTest runs the tests of this file as processes side by side.
+fs::path own_folder(const std::string& what) {
+    return fs::path(::testing::TempDir()) /
+           (what + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+}
+
 // An export as Gradescope lays it out, inside a wrapping folder as its zip unpacks.
 fs::path make_export(const std::string& metadata) {
-    const fs::path top = fs::path(::testing::TempDir()) / "export-test";
+    const fs::path top = own_folder("export-test");
     fs::remove_all(top);
     const fs::path root = top / "assignment_77_export";
     for (const char* folder : {"submission_1", "submission_2", "submission_3"})
@@ -87,7 +93,7 @@ TEST(GradescopeExport, BatchInputNamesTheStudentsAndTheChange) {
 }
 
 TEST(GradescopeExport, APlainFolderIsNotAnExport) {
-    const fs::path dir = fs::path(::testing::TempDir()) / "plain-batch";
+    const fs::path dir = own_folder("plain-batch");
     fs::remove_all(dir);
     fs::create_directories(dir / "alice");
     fs::create_directories(dir / "bob");

@@ -24,7 +24,11 @@ json earlier(const std::string& time, double score, bool refused = false) {
 }
 
 fs::path write_metadata(const std::string& created_at, const json& previous) {
-    const fs::path file = fs::path(::testing::TempDir()) / "submission_metadata.json";
+    // A file of this test's own: CTest runs the tests of this file as processes side by side.
+    const fs::path file =
+        fs::path(::testing::TempDir()) /
+        (std::string("metadata-") +
+         ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json");
     std::ofstream(file)
         << json{{"id", 7}, {"created_at", created_at}, {"previous_submissions", previous}}.dump();
     return file;
