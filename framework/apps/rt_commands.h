@@ -81,6 +81,15 @@ struct ExportArgs {
 };
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args);
 
+// `rt export-web` (docs/viewer.md#lecture-demos-in-a-browser).
+struct ExportWebArgs {
+    std::string scene, mode;
+    std::filesystem::path output;
+    int width = 0, height = 0;
+    bool no_reference = false;
+};
+CLI::App* add_export_web_command(CLI::App& app, ExportWebArgs& args);
+
 struct FmtArgs {
     std::vector<std::string> files;
     bool check = false;
