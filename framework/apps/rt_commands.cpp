@@ -100,6 +100,10 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
     compare_cmd->add_option("reference", args.reference, "reference image")->required();
     compare_cmd->add_option("--tolerance", args.tolerance, "8-bit steps a channel may differ")
         ->check(CLI::Range(0, 255));
+    compare_cmd
+        ->add_option("--max-failing-percent", args.max_failing_percent,
+                     "share of pixels allowed past the tolerance (stage 09's conformance: 0.5)")
+        ->check(CLI::Range(0.0, 100.0));
     compare_cmd->add_flag("--neighbourhood", args.neighbourhood,
                           "forgive anti-aliased edges (3x3), as the graders do");
     compare_cmd

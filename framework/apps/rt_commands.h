@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/source_dir.h"
+#include "image/compare.h"
 #include "scene/scene.h"
 #include "view/view.h"
 
@@ -61,6 +62,7 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryArgs& args);
 struct CompareArgs {
     std::string actual, reference;
     int tolerance = 2;
+    double max_failing_percent = CompareOptions{}.max_failing_percent;
     bool neighbourhood = false;
     int block = 0;
 };

@@ -143,15 +143,16 @@ int run_render(const RenderArgs& args) {
 }
 
 // The grader's metric on two image files: one line, exit 0 when they match.
-int run_compare(const std::string& actual, const std::string& reference, int tolerance,
-                bool neighbourhood, int block) {
+int run_compare(const CompareArgs& args) {
     CompareOptions options;
-    options.tolerance = tolerance;
-    options.neighbourhood = neighbourhood;
-    options.block = block;
+    options.tolerance = args.tolerance;
+    options.max_failing_percent = args.max_failing_percent;
+    options.neighbourhood = args.neighbourhood;
+    options.block = args.block;
     const CompareResult result =
-        compare_images(read_image8(actual), read_image8(reference), options);
-    std::printf("%s vs %s: %s\n", actual.c_str(), reference.c_str(), result.summary().c_str());
+        compare_images(read_image8(args.actual), read_image8(args.reference), options);
+    std::printf("%s vs %s: %s\n", args.actual.c_str(), args.reference.c_str(),
+                result.summary().c_str());
     return result.passed ? 0 : 1;
 }
 
@@ -313,9 +314,7 @@ int main(int argc, char** argv) {
         }
         if (*gallery_cmd) return run_gallery(gallery.source, gallery.out, gallery.threads);
         if (*info_cmd) return run_info(info_scene);
-        if (*compare_cmd)
-            return run_compare(compare.actual, compare.reference, compare.tolerance,
-                               compare.neighbourhood, compare.block);
+        if (*compare_cmd) return run_compare(compare);
         if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return run_gl_context_info(gl.window ? "window" : gl.kind);
         if (*fmt_cmd) return run_fmt(fmt.files, fmt.check);

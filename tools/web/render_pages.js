@@ -2,7 +2,8 @@
 // each page's first frame, as the page read it back with readPixels (window.__rtPixels), to
 // OUT/NAME.png; the comparison with the CPU render is rt compare's (cmake/check_web_export.cmake).
 //   node render_pages.js OUT PAGE.html...
-// A console error, an uncaught exception or a WebGL error fails the page (exit 1). A browser
+// A console error, an uncaught exception, a WebGL error or any request beyond the page's own
+// file fails the page (exit 1). A browser
 // without WebGL2 prints one "SKIPPED: ..." line naming its renderer and exits 0.
 'use strict';
 const fs = require('fs');
@@ -17,8 +18,13 @@ async function renderPage(browser, file, out) {
   const page = await browser.newPage();
   page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
   page.on('pageerror', (e) => problems.push('uncaught: ' + e.message));
+  // Self-contained: the page's own file and data: URLs only.
+  const own = 'file://' + path.resolve(file);
+  page.on('request', (r) => {
+    if (r.url() !== own && !r.url().startsWith('data:')) problems.push('fetches ' + r.url());
+  });
   const t0 = Date.now();
-  await page.goto('file://' + path.resolve(file));
+  await page.goto(own);
   await page.waitForFunction(() => window.__rtDone !== undefined, { timeout: kTimeoutMs });
   const done = await page.evaluate(() => window.__rtDone);
   if (done.noWebgl2) return { skip: 'SKIPPED: this Chromium offers no WebGL2 (' + done.renderer + ')' };
