@@ -73,7 +73,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Shad
     auto v3 = [](const Vec3& v) {
         return nlohmann::json::array({float(v.x), float(v.y), float(v.z)});
     };
-    nlohmann::json data = {{"scene", scene.source.empty() ? "a scene" : scene.source},
+    nlohmann::json data = {{"scene", scene.source.empty() ? "a scene" : display_path(scene.source)},
                            {"mode", to_string(mode)},
                            {"width", scene.image.width},
                            {"height", scene.image.height},
