@@ -36,4 +36,10 @@ packages=(
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
-echo "install-deps: all packages present"
+# Web.ExportMatchesCpu drives Chromium with puppeteer-core (tools/web/). Debian's nodejs and npm
+# unless a node with npm is already there (NodeSource's nodejs bundles npm and conflicts with it).
+if ! command -v npm > /dev/null || ! command -v node > /dev/null; then
+  $SUDO apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+(cd "$(dirname "$0")/../tools/web" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+echo "install-deps: all packages present, tools/web's node modules installed"

@@ -67,8 +67,10 @@ bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
 #endif
 #include "texturing.glsl"
 
+// An if, not ?: : WebGL (and so Shadertoy and rt export-web's page) rejects ?: on structs.
 Ray camera_ray(vec2 pixel) {
-    return camera.projection == kProjectionPerspective ? perspective_ray(pixel) : orthographic_ray(pixel);
+    if (camera.projection == kProjectionPerspective) return perspective_ray(pixel);
+    return orthographic_ray(pixel);
 }
 
 // One ray's own work (render/shade.cpp's Frame): start_frame fills the last three.

@@ -100,6 +100,10 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
     compare_cmd->add_option("reference", args.reference, "reference image")->required();
     compare_cmd->add_option("--tolerance", args.tolerance, "8-bit steps a channel may differ")
         ->check(CLI::Range(0, 255));
+    compare_cmd
+        ->add_option("--max-failing-percent", args.max_failing_percent,
+                     "share of pixels allowed past the tolerance (stage 09's conformance: 0.5)")
+        ->check(CLI::Range(0.0, 100.0));
     compare_cmd->add_flag("--neighbourhood", args.neighbourhood,
                           "forgive anti-aliased edges (3x3), as the graders do");
     compare_cmd
@@ -147,6 +151,23 @@ CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
     export_cmd->add_option("--mode", args.mode, "override the scene's mode")
         ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
     return export_cmd;
+}
+
+CLI::App* add_export_web_command(CLI::App& app, ExportWebArgs& args) {
+    auto* web = app.add_subcommand(
+        "export-web",
+        "write one self-contained HTML page that renders the scene in WebGL2 with stages/09-gpu's "
+        "GLSL (docs/viewer.md#lecture-demos-in-a-browser)");
+    web->add_option("scene", args.scene, "scene file (.json)")->required();
+    web->add_option("-o,--output", args.output, "the page to write (.html)")->required();
+    web->add_option("--mode", args.mode, "override the scene's mode")
+        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+    web->add_option("--width", args.width, "override the image width")->check(CLI::Range(1, 4096));
+    web->add_option("--height", args.height, "override the image height")
+        ->check(CLI::Range(1, 4096));
+    web->add_flag("--no-reference", args.no_reference,
+                  "leave out the CPU render the page shows beside the live canvas");
+    return web;
 }
 
 CLI::App* add_fmt_command(CLI::App& app, FmtArgs& args) {

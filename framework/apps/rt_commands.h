@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/source_dir.h"
+#include "image/compare.h"
 #include "scene/scene.h"
 #include "view/view.h"
 
@@ -61,6 +62,7 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryArgs& args);
 struct CompareArgs {
     std::string actual, reference;
     int tolerance = 2;
+    double max_failing_percent = CompareOptions{}.max_failing_percent;
     bool neighbourhood = false;
     int block = 0;
 };
@@ -80,6 +82,15 @@ struct ExportArgs {
     std::filesystem::path output;
 };
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args);
+
+// `rt export-web` (docs/viewer.md#lecture-demos-in-a-browser).
+struct ExportWebArgs {
+    std::string scene, mode;
+    std::filesystem::path output;
+    int width = 0, height = 0;
+    bool no_reference = false;
+};
+CLI::App* add_export_web_command(CLI::App& app, ExportWebArgs& args);
 
 struct FmtArgs {
     std::vector<std::string> files;

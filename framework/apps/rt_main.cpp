@@ -10,6 +10,7 @@
 //   rt info SCENE.json           what the scene contains and which features the renderer uses
 //   rt gl-info [--window]        the OpenGL context the GPU stage will use
 //   rt export-shadertoy SCENE.json -o scene.glsl   stage 09's GLSL and the scene for Shadertoy
+//   rt export-web SCENE.json -o demo.html          the same in one WebGL2 page
 //   rt fmt [--check] SCENE.json...   rewrite scene files in canonical form (--check: only report)
 #include <CLI/CLI.hpp>
 
@@ -36,6 +37,7 @@
 #include "render/gpu/gpu_debug_pixel.h"
 #include "render/gpu/gpu_render.h"
 #include "render/gpu/shadertoy_export.h"
+#include "render/gpu/web_export.h"
 #include "render/prepare.h"
 #include "render/progress.h"
 #include "render/ray_tree.h"
@@ -141,15 +143,16 @@ int run_render(const RenderArgs& args) {
 }
 
 // The grader's metric on two image files: one line, exit 0 when they match.
-int run_compare(const std::string& actual, const std::string& reference, int tolerance,
-                bool neighbourhood, int block) {
+int run_compare(const CompareArgs& args) {
     CompareOptions options;
-    options.tolerance = tolerance;
-    options.neighbourhood = neighbourhood;
-    options.block = block;
+    options.tolerance = args.tolerance;
+    options.max_failing_percent = args.max_failing_percent;
+    options.neighbourhood = args.neighbourhood;
+    options.block = args.block;
     const CompareResult result =
-        compare_images(read_image8(actual), read_image8(reference), options);
-    std::printf("%s vs %s: %s\n", actual.c_str(), reference.c_str(), result.summary().c_str());
+        compare_images(read_image8(args.actual), read_image8(args.reference), options);
+    std::printf("%s vs %s: %s\n", args.actual.c_str(), args.reference.c_str(),
+                result.summary().c_str());
     return result.passed ? 0 : 1;
 }
 
@@ -187,6 +190,23 @@ int run_export_shadertoy(const std::string& file, const fs::path& output,
                                  ": cannot write the shader; check that its folder exists");
     std::printf("%s: %zu KB; paste it into Shadertoy's Image tab\n", output.string().c_str(),
                 (shader.text.size() + 1023) / 1024);
+    return 0;
+}
+
+// `rt export-web`: one self-contained WebGL2 page, the CPU render inside to compare with.
+int run_export_web(const ExportWebArgs& args) {
+    const PreparedScene scene =
+        prepare_scene(load_scene(args.scene), {.width = args.width, .height = args.height});
+    const RenderMode mode = args.mode.empty() ? scene.mode : *parse_render_mode(args.mode);
+    export_shadertoy(scene, mode);  // refuses what it cannot export before the CPU render
+    const Image8 reference = args.no_reference ? Image8{} : to_image8(render(scene, mode));
+    const std::string page = export_web_page(scene, mode, reference);
+    std::ofstream out(args.output, std::ios::binary);
+    if (!(out << page))
+        throw std::runtime_error("rt: error: " + args.output.string() +
+                                 ": cannot write the page; check that its folder exists");
+    std::printf("%s: %zu KB; open it in a browser with WebGL2\n", args.output.string().c_str(),
+                (page.size() + 1023) / 1024);
     return 0;
 }
 
@@ -278,6 +298,8 @@ int main(int argc, char** argv) {
     CLI::App* gl_cmd = add_gl_info_command(app, gl);
     ExportArgs exporting;
     CLI::App* export_cmd = add_export_command(app, exporting);
+    ExportWebArgs web;
+    CLI::App* web_cmd = add_export_web_command(app, web);
     FmtArgs fmt;
     CLI::App* fmt_cmd = add_fmt_command(app, fmt);
     if (const auto stop =
@@ -292,9 +314,7 @@ int main(int argc, char** argv) {
         }
         if (*gallery_cmd) return run_gallery(gallery.source, gallery.out, gallery.threads);
         if (*info_cmd) return run_info(info_scene);
-        if (*compare_cmd)
-            return run_compare(compare.actual, compare.reference, compare.tolerance,
-                               compare.neighbourhood, compare.block);
+        if (*compare_cmd) return run_compare(compare);
         if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return run_gl_context_info(gl.window ? "window" : gl.kind);
         if (*fmt_cmd) return run_fmt(fmt.files, fmt.check);
@@ -302,6 +322,7 @@ int main(int argc, char** argv) {
             return run_export_shadertoy(
                 exporting.scene, exporting.output,
                 exporting.mode.empty() ? std::nullopt : parse_render_mode(exporting.mode));
+        if (*web_cmd) return run_export_web(web);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -125,6 +125,16 @@ add_test(NAME Gallery.IndexPage
           -P ${PROJECT_SOURCE_DIR}/cmake/check_gallery_page.cmake)
 set_tests_properties(Gallery.IndexPage PROPERTIES LABELS "render;gallery" TIMEOUT 900)
 endif()
+# rt export-web's pages in headless Chromium (docs/viewer.md#lecture-demos-in-a-browser): each
+# page's first frame against rt render. Skipped, saying why, without node, puppeteer-core or WebGL2.
+if(RT_INSTRUCTOR)
+add_test(NAME Web.ExportMatchesCpu
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/web
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_web_export.cmake)
+set_tests_properties(Web.ExportMatchesCpu PROPERTIES LABELS "web;render" TIMEOUT 300
+  SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+endif()
 # The viewer under Xvfb (skipped, saying why, without xvfb-run): screenshots in
 # build/test-output/view/.
 if(TARGET rt_view AND RT_INSTRUCTOR)

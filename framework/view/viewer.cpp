@@ -22,17 +22,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The orbit pivot: the surface under the image centre, else as far as the eye from the origin.
-Real pivot_distance(const PreparedScene& scene) {
-    const Ray ray = camera_ray(
-        scene.camera, Vec2(Real(scene.image.width) / 2, Real(scene.image.height) / 2), scene.image);
-    Hit hit;
-    if (nearest_hit(scene, ray, Interval{0, kInfinity}, hit) && std::isfinite(hit.t) && hit.t > 0)
-        return hit.t;
-    const Real from_origin = glm::length(scene.camera.eye);
-    return from_origin > Real(1e-3) ? from_origin : Real(5);
-}
-
 // stages/NN-name/scenes/X.json -> reference_images/NN-name/X.png, when that exists.
 std::optional<Image8> find_reference(const fs::path& scene_file) {
     const fs::path stage = fs::absolute(scene_file).parent_path().parent_path();
@@ -54,7 +43,7 @@ Viewer::Viewer(Scene loaded, const ViewArgs& args, std::vector<ScriptCommand> sc
     settings = source_.initial();
     scene_ = source_.make(settings);
     up_ = settings.camera.v;
-    initial_pivot_distance_ = pivot_distance_ = pivot_distance(scene_);
+    initial_pivot_distance_ = pivot_distance_ = orbit_pivot_distance(scene_);
     reference_ = find_reference(args.scene);
     generation_ = renderer_.restart(scene_, settings.gpu);
     restarted_at_ = std::chrono::steady_clock::now();

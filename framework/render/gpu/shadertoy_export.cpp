@@ -280,6 +280,23 @@ void check_exportable(const PreparedScene& scene, RenderMode mode) {
     check_gpu_supported(scene, mode);
 }
 
+// What Shadertoy puts before the Image tab's code (its uniforms), and a main of our own.
+const char* const kShadertoyHead =
+    "#version 300 es\n"
+    "precision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
+    "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\n"
+    "uniform float iFrameRate;\nuniform int iFrame;\nuniform float iChannelTime[4];\n"
+    "uniform vec3 iChannelResolution[4];\nuniform vec4 iMouse;\nuniform vec4 iDate;\n"
+    "uniform float iSampleRate;\nuniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\n"
+    "uniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
+const char* const kShadertoyTail =
+    "\nout vec4 rt_frag_color;\n"
+    "void main() {\n"
+    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
+    "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
+    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
+    "}\n";
+
 }  // namespace
 
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
@@ -308,6 +325,14 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                        " KB (a browser compiles it all at every load): use fewer triangles");
     out.stubs = shader.stubs;
     return out;
+}
+
+std::string wrap_shadertoy_export(const ShadertoyExport& shader) {
+    return kShadertoyHead + shader.text + kShadertoyTail;
+}
+
+long shadertoy_wrapper_head_lines() {
+    return std::count(kShadertoyHead, kShadertoyHead + std::strlen(kShadertoyHead), '\n');
 }
 
 }  // namespace rt

@@ -40,4 +40,11 @@ constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const std::filesystem::path& student_dir = {});
 
+// The export as a whole GLSL ES 3.00 fragment shader, as Shadertoy and a WebGL2 page run it: after
+// `#version 300 es` and Shadertoy's uniforms, the export, then a main calling mainImage that also
+// writes the stub a pixel reached (rt_first_stub) as alpha/255 (255: none).
+std::string wrap_shadertoy_export(const ShadertoyExport& shader);
+// The lines the wrapper puts before the export (to map a compiler's line numbers back to it).
+long shadertoy_wrapper_head_lines();
+
 }  // namespace rt

@@ -27,30 +27,12 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-// What Shadertoy puts before the Image tab's code (its uniforms), and a main of our own.
-const char* const kShadertoyHead =
-    "#version 300 es\n"
-    "precision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
-    "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\n"
-    "uniform float iFrameRate;\nuniform int iFrame;\nuniform float iChannelTime[4];\n"
-    "uniform vec3 iChannelResolution[4];\nuniform vec4 iMouse;\nuniform vec4 iDate;\n"
-    "uniform float iSampleRate;\nuniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\n"
-    "uniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
-const char* const kShadertoyTail =
-    "\nout vec4 rt_frag_color;\n"
-    "void main() {\n"
-    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
-    "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
-    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
-    "}\n";
-
 // A compiler's log of the wrapped export with each line number it names ("ERROR: x.frag:379:"
 // from glslang, "0:379(12):" from Mesa) replaced by the student's file and line it came from,
 // or by "the export's line N" for the scene's constants: the wrapped file is gone by now.
 std::string with_source_lines(const std::string& log, const ShadertoyExport& shader) {
     static const std::regex line_re(R"((?:[^\s:]*\.frag|\b0):(\d+))");
-    const long head =
-        std::count(kShadertoyHead, kShadertoyHead + std::strlen(kShadertoyHead), '\n');
+    const long head = shadertoy_wrapper_head_lines();
     std::string out;
     auto from = log.cbegin();
     for (std::sregex_iterator it(log.begin(), log.end(), line_re), end; it != end; ++it) {
@@ -104,7 +86,7 @@ void report_export_stubs(const ShadertoyExport& shader, const std::vector<std::u
 
 ShadertoyRun run_shadertoy_export(const PreparedScene& scene, RenderMode mode) {
     const ShadertoyExport shader = export_shadertoy(scene, mode);
-    const std::string wrapped = kShadertoyHead + shader.text + kShadertoyTail;
+    const std::string wrapped = wrap_shadertoy_export(shader);
     ShadertoyRun run;
     run.compile_errors = glslang_errors(wrapped, shader);
     const std::unique_ptr<GlContext> context = GlContext::create(GlKind::Egl, run.draw_error);

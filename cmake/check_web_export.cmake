@@ -1,0 +1,85 @@
+# Web.ExportMatchesCpu (docs/viewer.md#lecture-demos-in-a-browser): every scene of stages 01-05
+# through `rt export-web`, each page opened in headless Chromium (SwiftShader's WebGL2) by
+# tools/web/render_pages.js, which writes the first frame the page read back with readPixels; that
+# frame must match `rt render` under stage 09's conformance metric (tolerance 2, at most 0.5% of
+# pixels failing: stages/09-gpu/tests/conformance_test.cpp), by `rt compare`. The scenes the export
+# refuses must be exactly EXPECTED_REFUSALS, each with a one-line error naming the scene.
+#   cmake -DRT=<rt> -DSOURCE=<tree> -DOUT=<dir> [-DNODE=<node>] -P check_web_export.cmake
+set(EXPECTED_REFUSALS "02-intersections/plane_depth")  # mode depth: needs the whole image's range
+
+find_program(NODE_EXE NAMES node nodejs)
+if(NOT NODE_EXE)
+  message("SKIPPED: node is missing (scripts/install-deps.sh installs nodejs and npm)")
+  return()
+endif()
+if(NOT EXISTS ${SOURCE}/tools/web/node_modules/puppeteer-core)
+  message("SKIPPED: puppeteer-core is missing (scripts/install-deps.sh runs npm ci in tools/web)")
+  return()
+endif()
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT}/pages ${OUT}/frames)
+
+# Export and render on the CPU every scene; a refusal is one line naming the scene.
+file(GLOB scenes ${SOURCE}/stages/0[1-5]-*/scenes/*.json)
+set(refused "")
+set(exported "")
+foreach(scene ${scenes})
+  get_filename_component(name ${scene} NAME_WE)
+  get_filename_component(stage_dir ${scene} DIRECTORY)
+  get_filename_component(stage_dir ${stage_dir} DIRECTORY)
+  get_filename_component(stage ${stage_dir} NAME)
+  execute_process(COMMAND ${RT} export-web ${scene} -o ${OUT}/pages/${name}.html
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    string(STRIP "${err}" err)
+    if(NOT err MATCHES "^[^\n]*${name}.json: [^\n]+$")
+      message(FATAL_ERROR "rt export-web ${stage}/${name}: the refusal is not one line naming the scene:\n${err}")
+    endif()
+    list(APPEND refused "${stage}/${name}")
+    message(STATUS "refused ${stage}/${name}: ${err}")
+    continue()
+  endif()
+  string(STRIP "${out}" out)
+  message(STATUS "${out}")
+  execute_process(COMMAND ${RT} render ${scene} -o ${OUT}/frames/${name}_cpu.png
+                  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "rt render ${stage}/${name} failed (${rc}): ${err}")
+  endif()
+  list(APPEND exported ${name})
+endforeach()
+if(NOT refused STREQUAL EXPECTED_REFUSALS)
+  message(FATAL_ERROR "rt export-web refused [${refused}]; expected [${EXPECTED_REFUSALS}]")
+endif()
+
+# One browser for every page.
+list(TRANSFORM exported PREPEND ${OUT}/pages/ OUTPUT_VARIABLE pages)
+list(TRANSFORM pages APPEND .html)
+execute_process(COMMAND ${NODE_EXE} ${SOURCE}/tools/web/render_pages.js ${OUT}/frames ${pages}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(out MATCHES "SKIPPED: ")
+  return()
+endif()
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "a page failed in Chromium (above)")
+endif()
+
+# The metric of stages/09-gpu/tests/conformance_test.cpp.
+set(failed "")
+foreach(name ${exported})
+  execute_process(COMMAND ${RT} compare ${OUT}/frames/${name}.png ${OUT}/frames/${name}_cpu.png
+                          --tolerance 2 --max-failing-percent 0.5
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(STRIP "${out}${err}" line)
+  string(REPLACE "${OUT}/frames/" "" line "${line}")
+  message(STATUS "${line}")
+  if(NOT rc EQUAL 0)
+    list(APPEND failed ${name})
+  endif()
+endforeach()
+if(failed)
+  message(FATAL_ERROR "the page's first frame differs from rt render for: ${failed}")
+endif()
+list(LENGTH exported count)
+message(STATUS "${count} pages match rt render; refused as expected: ${refused}")
