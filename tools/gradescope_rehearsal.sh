@@ -2,13 +2,14 @@
 # Gradescope's limits rehearsed (issue 28): the package's setup.sh and run_autograder on a fresh
 # Debian 12 root (debootstrap), run_autograder under Gradescope's default limits (768 MB, half a
 # CPU, 10 minutes) in a cgroup (v1), for the reference files and the starter stubs of each stage.
-# Prints wall time, peak memory and score per stage and submission. Needs root; takes long (the
-# setup build at half a core), so CTest runs it only when configured with -DRT_REHEARSAL=ON.
+# Prints wall time, peak memory and score per stage and submission. setup.sh gets the grading's
+# limits unless --setup-* says otherwise (Gradescope does not document the image build's). Needs
+# root and takes minutes, so CTest has it only when configured with -DRT_REHEARSAL=ON.
 #
-#   sudo tools/gradescope_rehearsal.sh [--stages 1,6,10] [--fresh] [--work /var/tmp/rt-rehearsal]
-#        [--memory-mb 768] [--cpus 0.5] [--timeout 600] [--setup-memory-mb MB] [--setup-cpus N]
-#        [--setup-unlimited]
-#        [--isolation uid] [--mirror URL] [--source TREE] [--rt-grade BIN] [--check]
+#   sudo tools/gradescope_rehearsal.sh [--stages 1,6,10] [--together] [--fresh] [--check]
+#        [--memory-mb 768] [--cpus 0.5] [--timeout 600] [--work /var/tmp/rt-rehearsal]
+#        [--setup-memory-mb MB] [--setup-cpus N] [--setup-unlimited] [--isolation uid]
+#        [--mirror URL] [--source TREE] [--rt-grade BIN]
 set -euo pipefail
 
 die() { echo "gradescope_rehearsal: error: $*" >&2; exit 2; }
@@ -18,7 +19,7 @@ rt_grade=""
 args="$*"
 work=/var/tmp/rt-rehearsal
 stages="" fresh=0 memory_mb=768 cpus=0.5 timeout_s=600 setup_limited=1 isolation="" check=0
-setup_memory_mb="" setup_cpus=""
+setup_memory_mb="" setup_cpus="" together=0
 mirror=""
 while [ $# -gt 0 ]; do
   case $1 in
@@ -35,8 +36,9 @@ while [ $# -gt 0 ]; do
     --mirror) mirror=$2; shift 2 ;;
     --source) src=$(cd "$2" && pwd); shift 2 ;;
     --rt-grade) rt_grade=$2; shift 2 ;;  # default: SOURCE/build/bin/rt-grade, built when missing
+    --together) together=1; shift ;;  # also all the stages in one package (the default package)
     --check) check=1; shift ;;  # CTest: exit 1 unless every reference run fits and scores full marks
-    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
     *) die "unknown option $1 (see --help)" ;;
   esac
 done
@@ -73,7 +75,6 @@ flock -n 9 || die "another rehearsal holds $work/lock: wait for it or pass --wor
 # --- Mounts and cgroups, undone on every exit. ---
 mounted=()
 cleanup() {
-  local m
   for cgdir in "$cg/memory/rt-rehearsal" "$cg/cpu/rt-rehearsal"; do
     [ -d "$cgdir" ] || continue
     # Only the processes this script put in its own cgroup (a run the timeout left behind).
@@ -201,19 +202,24 @@ set_limits "$memory_mb" "$cpus"
 rows=$work/rows.tsv
 : > "$rows"
 failed=0
-for n in ${stages//,/ }; do
-  dir=$(stage_dir "$n")
-  "$rt_grade" package --source "$src" --stages "$n" --out "$work/stage.zip" > /dev/null
+# grade LABEL STAGES: one package for STAGES (an assignment), graded on the reference files and on
+# the starter stubs of those stages, each run under the limits; one table row per run.
+grade() {
+  local label=$1 list=$2 who n dir from f res score max sandbox fits
+  "$rt_grade" package --source "$src" --stages "$list" --out "$work/stage.zip" > /dev/null
   unzip -p "$work/stage.zip" run_autograder > "$ag/run_autograder" && chmod 755 "$ag/run_autograder"
   for who in reference starter; do
-    from=$src/stages/$dir; [ $who = starter ] && from=$work/starter/stages/$dir
     rm -rf "$ag/submission" "$ag/results" && mkdir -p "$ag/submission" "$ag/results"
     # Gradescope unpacks the upload loose into submission/.
-    for f in $(jq -r '.student_files[]' "$src/stages/$dir/stage.json"); do cp "$from/$f" "$ag/submission/"; done
-    run_measured 1 "$timeout_s" "${in_root[@]}" /autograder/run_autograder > "$work/run-$n-$who.log" 2>&1 < /dev/null
+    for n in ${list//,/ }; do
+      dir=$(stage_dir "$n")
+      from=$src/stages/$dir; [ $who = starter ] && from=$work/starter/stages/$dir
+      for f in $(jq -r '.student_files[]' "$src/stages/$dir/stage.json"); do cp "$from/$f" "$ag/submission/"; done
+    done
+    run_measured 1 "$timeout_s" "${in_root[@]}" /autograder/run_autograder > "$work/run-$label-$who.log" 2>&1 < /dev/null
     res=$ag/results/results.json score=- max=- sandbox=-
     if [ -s "$res" ]; then
-      cp "$res" "$work/results-$n-$who.json"
+      cp "$res" "$work/results-$label-$who.json"
       score=$(jq -r '.score' "$res")
       max=$(jq -r '[.tests[].max_score] | add' "$res")
       sandbox=$(jq -r '.output' "$res" | grep -oE 'Sandbox: (namespaces|uid drop|NONE)' | head -n1 | cut -c10- || true)
@@ -226,11 +232,14 @@ for n in ${stages//,/ }; do
       awk -v s="$score" -v m="$max" 'BEGIN {exit !(s + 0 < m + 0)}'; then fits="no: not full marks"
     fi
     [ $who = reference ] && [ "$fits" != yes ] && failed=1
-    printf '%02d\t%s\t%s\t%s\t%s\t%s\t%s / %s\t%s\t%s\n' "$n" $who "$wall" "$peak_mb" "$rss_mb" "$oom" \
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s / %s\t%s\t%s\n' "$label" $who "$wall" "$peak_mb" "$rss_mb" "$oom" \
       "$score" "$max" "$fits" "${sandbox:--}" >> "$rows"
-    echo "stage $n $who: ${wall} s, ${peak_mb} MB, $score / $max, $fits"
+    echo "stages $list $who: ${wall} s, ${peak_mb} MB, $score / $max, $fits"
   done
-done
+}
+for n in ${stages//,/ }; do grade "$(printf %02d "$n")" "$n"; done
+# The default package grades every stage in one run_autograder: does the sum fit too?
+[ $together -eq 0 ] || [ "${stages//[^,]/}" = "" ] || grade together "$stages"
 
 echo
 {
@@ -238,5 +247,5 @@ echo
   [ -f "$work/setup.row" ] && cat "$work/setup.row"
   cat "$rows"
 } | column -t -s $'\t'
-echo "logs and results: $work (setup.log, run-N-WHO.log, results-N-WHO.json)"
+echo "logs and results: $work (setup.log, run-NN-WHO.log, results-NN-WHO.json)"
 [ $check -eq 0 ] || exit $failed
