@@ -175,13 +175,18 @@ for n in ${stages//,/ }; do stage_dir "$n" > /dev/null || die "stage $n has no g
 rm -rf "$work/unpacked" && mkdir -p "$work/unpacked" && (cd "$work/unpacked" && unzip -q "$work/autograder.zip")
 sum=$(cd "$work/unpacked" && find . -type f -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
 ag=$root/autograder
-echo "Sandbox and limits: memory ${memory_mb} MB, CPU $cpus, run_autograder timeout ${timeout_s} s; root $root; mirror $mirror"
+echo "Limits: memory ${memory_mb} MB, CPU $cpus, run_autograder timeout ${timeout_s} s; root $root; mirror $mirror"
 
 # --- setup.sh, once per package content (the build is what takes long). ---
 if [ "$(cat "$work/setup.sum" 2>/dev/null)" != "$sum" ]; then
   rm -rf "$ag" && mkdir -p "$ag" && cp -a "$work/unpacked/." "$ag/"
   # Gradescope does not say whether the image build has the grading limits: by default they apply.
-  set_limits "$setup_memory_mb" "$setup_cpus"
+  if [ $setup_limited -eq 1 ]; then
+    set_limits "$setup_memory_mb" "$setup_cpus"
+  else  # measured in the memory cgroup, so its limit is lifted
+    [ -f "$mem/memory.memsw.limit_in_bytes" ] && echo -1 > "$mem/memory.memsw.limit_in_bytes"
+    echo -1 > "$mem/memory.limit_in_bytes"
+  fi
   echo "setup.sh: $( [ $setup_limited -eq 1 ] && echo "limited to $setup_memory_mb MB and CPU $setup_cpus (no timeout)" || echo "memory measured, not limited") ..."
   run_measured $setup_limited 0 "${in_root[@]}" bash /autograder/setup.sh > "$work/setup.log" 2>&1 < /dev/null
   echo "setup.sh: exit $code, ${wall} s wall, peak ${peak_mb} MB (cgroup, with cache), ${rss_mb} MB rss+shmem, OOM kills $oom"
