@@ -228,7 +228,10 @@ int run_package(const fs::path& source, const fs::path& out, const std::vector<i
         log << "rt-grade: error: zip failed (is the zip package installed?)\n" << output;
         return 1;
     }
-    log << "autograder: " << zip.string() << " (upload it as is; setup.sh builds on Gradescope)\n";
+    log << "autograder: " << zip.string() << " (upload it as is; setup.sh builds on Gradescope)\n"
+        << "Gradescope settings: grading fits the defaults (768 MB, half a CPU, 10 minutes); "
+           "setup.sh's build peaked at 1.1 GB, so if the image build fails or stalls, ask for "
+           "1.5 GB of memory (docs/grading.md#gradescopes-limits-rehearsed)\n";
     return 0;
 }
 
