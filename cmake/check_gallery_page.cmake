@@ -79,6 +79,12 @@ foreach(grading ${gradings})
   endforeach()
 endforeach()
 
+# The lecture's slides: stage 05's Whitted scene links its live WebGL2 page (rt export-web).
+string(FIND "${page}" "href=\"05-recursion/whitted.web.html\">live WebGL2 page" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "index.html does not link 05-recursion/whitted.web.html (rt export-web)")
+endif()
+
 string(REGEX MATCHALL "(src|href)=\"[^\"]+\"" links "${page}")
 set(checked 0)
 foreach(link ${links})

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/text_file.h"
+#include "render/gpu/web_export.h"
 #include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
@@ -16,6 +17,21 @@ namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
+
+// `rt export-web`'s page of the scene beside its render (NAME.web.html), or an empty path with
+// `problem` saying why the scene has none (export_web_page refuses what WebGL cannot hold).
+fs::path write_web_page(const PreparedScene& scene, const Image& image, const fs::path& image_file,
+                        std::string& problem) {
+    fs::path page = image_file;
+    page.replace_extension(".web.html");
+    try {
+        write_text_atomically(page, export_web_page(scene, scene.mode, to_image8(image)));
+        return page;
+    } catch (const std::exception& e) {
+        problem = e.what();
+        return {};
+    }
+}
 
 // A link from the gallery folder to `target`, with '/' separators (a browser's form).
 std::string relative_link(const fs::path& target, const fs::path& from) {
@@ -69,7 +85,8 @@ const GalleryPage::Stage& GalleryPage::stage_info(const fs::path& stage) {
 }
 
 void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const fs::path& image_file,
-                      const Image& image) {
+                      const Image& image, const fs::path& web_page,
+                      const std::string& web_problem) {
     const Stage& s = stage_info(stage);
     Entry e;
     e.stage = stage.filename().string();
@@ -82,6 +99,8 @@ void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const f
     e.options = thresholds.compare_options();
     e.fail_percent = thresholds.fail_percent;
     e.image = relative_link(image_file, out_);
+    if (!web_page.empty()) e.web = relative_link(web_page, out_);
+    e.web_problem = web_problem;
     const fs::path reference = source_ / "reference_images" / e.stage / (e.name + ".png");
     if (fs::exists(reference)) {
         const fs::path folder = image_file.parent_path();
@@ -130,6 +149,13 @@ void GalleryPage::write_scene(std::ostream& page, const Entry& e) {
     column(e.reference, "reference");
     column(e.difference, "difference");
     page << "</div>\n";
+    // The lecture's slide: the scene live in the browser (docs/viewer.md).
+    if (!e.web.empty())
+        page << "<div class=\"metric\"><a href=\"" << html_escape(e.web)
+             << "\">live WebGL2 page</a> (stage 09's GLSL in the browser: orbit, zoom)</div>\n";
+    else if (!e.web_problem.empty())
+        page << "<div class=\"metric\">no WebGL2 page: " << html_escape(e.web_problem)
+             << "</div>\n";
     if (e.compared)
         page << "<div class=\"metric\">" << html_escape(e.result.summary()) << " (tolerance "
              << e.options.tolerance << ", pass up to " << e.options.max_failing_percent << "%"
@@ -229,7 +255,11 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
             const Image image = render(scene, scene.mode, options);
             write_image(image, image_file);
-            if (!regenerating) page.add(stage, scene_file, image_file, image);
+            if (!regenerating) {
+                std::string web_problem;
+                const fs::path web = write_web_page(scene, image, image_file, web_problem);
+                page.add(stage, scene_file, image_file, image, web, web_problem);
+            }
             std::printf("  %s\n", image_file.c_str());
             ++count;
         }

@@ -22,9 +22,11 @@ class GalleryPage {
     GalleryPage(std::filesystem::path source, std::filesystem::path out);
 
     // A scene's render, written as `image_file` (inside out/): copies its reference image beside
-    // it and writes the difference image when the reference exists.
+    // it and writes the difference image when the reference exists. `web_page`: its `rt
+    // export-web` page (inside out/), or empty with `web_problem` saying why there is none.
     void add(const std::filesystem::path& stage, const std::filesystem::path& scene_file,
-             const std::filesystem::path& image_file, const Image& image);
+             const std::filesystem::path& image_file, const Image& image,
+             const std::filesystem::path& web_page = {}, const std::string& web_problem = {});
 
     // Writes out/index.html; returns its path.
     std::filesystem::path write() const;
@@ -36,6 +38,7 @@ class GalleryPage {
         std::string stage, name;  // folder name, scene file stem
         bool graded = false;
         std::string image, reference, difference;  // paths relative to out/ ("" when absent)
+        std::string web, web_problem;  // the live WebGL2 page (relative), or why it has none
         CompareOptions options;
         double fail_percent = 2.0;  // past this the grader gives nothing (grading.json)
         bool compared = false;
