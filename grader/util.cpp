@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
@@ -161,6 +163,39 @@ std::string clean_output(std::string_view text) {
     std::string ascii;
     for (unsigned char c : out) ascii += c < 0x80 ? char(c) : '?';
     return ascii;
+}
+
+std::optional<std::int64_t> parse_iso8601(const std::string& text) {
+    int y = 0, mo = 0, d = 0, h = 0, mi = 0, s = 0, used = 0;
+    // The metadata JSON writes "2018-07-01T14:22:32.365935-07:00", an export's YAML
+    // "2018-07-01 14:22:32.365935000 -0700".
+    if (text.size() < 19 || (text[10] != 'T' && text[10] != ' ') ||
+        std::sscanf(text.c_str(), "%4d-%2d-%2d%*c%2d:%2d:%2d%n", &y, &mo, &d, &h, &mi, &s, &used) !=
+            6 ||
+        used != 19)
+        return std::nullopt;
+    std::size_t i = 19;
+    if (i < text.size() && text[i] == '.') {  // fractions of a second: ignored
+        ++i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    }
+    if (i < text.size() && text[i] == ' ') ++i;
+    int offset = 0;  // seconds east of UTC
+    const bool colon = i + 6 == text.size() && text[i + 3] == ':';
+    if (i < text.size() && text[i] == 'Z') {
+        ++i;
+    } else if ((colon || i + 5 == text.size()) && (text[i] == '+' || text[i] == '-')) {
+        int oh = 0, om = 0;
+        if (std::sscanf(text.c_str() + i + 1, colon ? "%2d:%2d" : "%2d%2d", &oh, &om) != 2)
+            return std::nullopt;
+        offset = (text[i] == '-' ? -1 : 1) * (oh * 3600 + om * 60);
+        i += colon ? 6 : 5;
+    }
+    const std::chrono::year_month_day date{std::chrono::year(y), std::chrono::month(unsigned(mo)),
+                                           std::chrono::day(unsigned(d))};
+    if (i != text.size() || !date.ok() || h > 23 || mi > 59 || s > 60) return std::nullopt;
+    const std::int64_t days = std::chrono::sys_days(date).time_since_epoch().count();
+    return days * 86400 + h * 3600 + mi * 60 + s - offset;
 }
 
 }  // namespace rt::grader

@@ -40,4 +40,9 @@ std::string base64(std::string_view data);
 // Drops ANSI escapes and bytes that are not printable UTF-8-ish text.
 std::string clean_output(std::string_view text);
 
+// A Gradescope time as seconds since the epoch, UTC: "2018-07-01T14:22:32.365935-07:00" (ISO 8601
+// with an offset or Z, as submission_metadata.json writes it) or "2018-07-01 14:22:32.365935000
+// -0700" (an export's submission_metadata.yml); nothing when the text is not such a time.
+std::optional<std::int64_t> parse_iso8601(const std::string& text);
+
 }  // namespace rt::grader

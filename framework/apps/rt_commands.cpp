@@ -141,15 +141,24 @@ CLI::App* add_gl_info_command(CLI::App& app, GlInfoArgs& args) {
     return gl_cmd;
 }
 
+namespace {
+
+// The options both exports share: the scene, the file written (`what`) and the modes they draw.
+void add_export_options(CLI::App* cmd, ExportArgs& args, const std::string& what) {
+    cmd->add_option("scene", args.scene, "scene file (.json)")->required();
+    cmd->add_option("-o,--output", args.output, "the " + what + " to write")->required();
+    cmd->add_option("--mode", args.mode, "override the scene's mode")
+        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+}
+
+}  // namespace
+
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
     auto* export_cmd = app.add_subcommand(
         "export-shadertoy",
         "write the scene and stages/09-gpu's GLSL as one self-contained Shadertoy shader "
         "(stages/09-gpu/README.md#publish-on-shadertoy)");
-    export_cmd->add_option("scene", args.scene, "scene file (.json)")->required();
-    export_cmd->add_option("-o,--output", args.output, "the shader to write (.glsl)")->required();
-    export_cmd->add_option("--mode", args.mode, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+    add_export_options(export_cmd, args, "shader (.glsl)");
     return export_cmd;
 }
 
@@ -158,10 +167,7 @@ CLI::App* add_export_web_command(CLI::App& app, ExportWebArgs& args) {
         "export-web",
         "write one self-contained HTML page that renders the scene in WebGL2 with stages/09-gpu's "
         "GLSL (docs/viewer.md#lecture-demos-in-a-browser)");
-    web->add_option("scene", args.scene, "scene file (.json)")->required();
-    web->add_option("-o,--output", args.output, "the page to write (.html)")->required();
-    web->add_option("--mode", args.mode, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+    add_export_options(web, args, "page (.html)");
     web->add_option("--width", args.width, "override the image width")->check(CLI::Range(1, 4096));
     web->add_option("--height", args.height, "override the image height")
         ->check(CLI::Range(1, 4096));

@@ -84,9 +84,7 @@ struct ExportArgs {
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args);
 
 // `rt export-web` (docs/viewer.md#lecture-demos-in-a-browser).
-struct ExportWebArgs {
-    std::string scene, mode;
-    std::filesystem::path output;
+struct ExportWebArgs : ExportArgs {
     int width = 0, height = 0;
     bool no_reference = false;
 };

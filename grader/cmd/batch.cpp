@@ -65,16 +65,15 @@ std::string scores_csv(const std::vector<Row>& rows, const std::vector<int>& sta
 
 // changes.csv: what a regrade changed against the scores Gradescope had.
 void write_export_changes(const std::vector<Row>& rows, const fs::path& file, std::ostream& log) {
-    std::vector<BatchEntry> entries;
-    std::vector<double> scores;
-    std::vector<bool> graded;
+    std::string text = changes_header();
+    int changed = 0;
     for (const Row& r : rows) {
-        if (!r.entry) continue;  // skipped after an interruption
-        entries.push_back(*r.entry);
-        scores.push_back(r.summary.score);
-        graded.push_back(r.graded);
+        if (!r.graded || !r.entry || !r.entry->exported) continue;  // no new score
+        bool moved = false;
+        text += changes_line(*r.entry, r.summary.score, moved);
+        changed += moved;
     }
-    const int changed = write_changes(entries, scores, graded, file);
+    write_text_atomically(file, text);
     log << "changes: " << file.string() << " (" << changed
         << " submissions whose score changed or that Gradescope had not scored)\n";
 }

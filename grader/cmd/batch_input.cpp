@@ -81,22 +81,17 @@ std::string export_change(const BatchEntry& e, double new_score) {
     return "," + number(old) + "," + number(std::round((new_score - old) * 100) / 100);
 }
 
-int write_changes(const std::vector<BatchEntry>& entries, const std::vector<double>& new_scores,
-                  const std::vector<bool>& graded, const fs::path& file) {
-    std::string text = "submission,student,sid,old_score,new_score,change\n";
-    int changed = 0;
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        const BatchEntry& e = entries[i];
-        if (!graded[i] || !e.exported) continue;
-        const auto& x = *e.exported;
-        const double change = x.old_score ? new_scores[i] - *x.old_score : 0;
-        if (!x.old_score || std::abs(change) > 0.005) ++changed;
-        text += csv_cell(e.name) + "," + csv_cell(x.names) + "," + csv_cell(x.sids) + "," +
-                (x.old_score ? number(*x.old_score) : "") + "," + number(new_scores[i]) + "," +
-                (x.old_score ? number(std::round(change * 100) / 100) : "new") + "\n";
-    }
-    write_text_atomically(file, text);
-    return changed;
+std::string changes_header() {
+    return "submission,student,sid,old_score,new_score,change\n";
+}
+
+std::string changes_line(const BatchEntry& e, double new_score, bool& changed) {
+    const ExportedSubmission& x = *e.exported;
+    const double change = x.old_score ? new_score - *x.old_score : 0;
+    changed = !x.old_score || std::abs(change) > 0.005;
+    return csv_cell(e.name) + "," + csv_cell(x.names) + "," + csv_cell(x.sids) + "," +
+           (x.old_score ? number(*x.old_score) : "") + "," + number(new_score) + "," +
+           (x.old_score ? number(std::round(change * 100) / 100) : "new") + "\n";
 }
 
 }  // namespace rt::grader

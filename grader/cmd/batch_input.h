@@ -38,9 +38,9 @@ std::string export_header();
 std::string export_identity(const BatchEntry& entry);
 std::string export_change(const BatchEntry& entry, double new_score);
 
-// changes.csv: per graded submission of an export, the old score, the new one and the change.
-// Returns how many changed.
-int write_changes(const std::vector<BatchEntry>& entries, const std::vector<double>& new_scores,
-                  const std::vector<bool>& graded, const std::filesystem::path& file);
+// changes.csv's header, and the line of `entry` (of an export) regraded to `new_score`; `changed`
+// is set when the score moved or Gradescope had none.
+std::string changes_header();
+std::string changes_line(const BatchEntry& entry, double new_score, bool& changed);
 
 }  // namespace rt::grader

@@ -6,7 +6,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "grading/rate_limit.h"  // parse_iso8601: Gradescope's times
+#include "util.h"  // parse_iso8601: Gradescope's times
 
 namespace rt::grader {
 

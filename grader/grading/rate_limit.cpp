@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -11,43 +10,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "util.h"  // parse_iso8601
+
 namespace rt::grader {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-
-std::optional<std::int64_t> parse_iso8601(const std::string& text) {
-    int y = 0, mo = 0, d = 0, h = 0, mi = 0, s = 0, used = 0;
-    // The metadata JSON writes "2018-07-01T14:22:32.365935-07:00", an export's YAML
-    // "2018-07-01 14:22:32.365935000 -0700".
-    if (text.size() < 19 || (text[10] != 'T' && text[10] != ' ') ||
-        std::sscanf(text.c_str(), "%4d-%2d-%2d%*c%2d:%2d:%2d%n", &y, &mo, &d, &h, &mi, &s, &used) !=
-            6 ||
-        used != 19)
-        return std::nullopt;
-    std::size_t i = 19;
-    if (i < text.size() && text[i] == '.') {  // fractions of a second: ignored
-        ++i;
-        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
-    }
-    if (i < text.size() && text[i] == ' ') ++i;
-    int offset = 0;  // seconds east of UTC
-    const bool colon = i + 6 == text.size() && text[i + 3] == ':';
-    if (i < text.size() && text[i] == 'Z') {
-        ++i;
-    } else if ((colon || i + 5 == text.size()) && (text[i] == '+' || text[i] == '-')) {
-        int oh = 0, om = 0;
-        if (std::sscanf(text.c_str() + i + 1, colon ? "%2d:%2d" : "%2d%2d", &oh, &om) != 2)
-            return std::nullopt;
-        offset = (text[i] == '-' ? -1 : 1) * (oh * 3600 + om * 60);
-        i += colon ? 6 : 5;
-    }
-    const std::chrono::year_month_day date{std::chrono::year(y), std::chrono::month(unsigned(mo)),
-                                           std::chrono::day(unsigned(d))};
-    if (i != text.size() || !date.ok() || h > 23 || mi > 59 || s > 60) return std::nullopt;
-    const std::int64_t days = std::chrono::sys_days(date).time_since_epoch().count();
-    return days * 86400 + h * 3600 + mi * 60 + s - offset;
-}
 
 namespace {
 

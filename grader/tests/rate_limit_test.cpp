@@ -1,5 +1,6 @@
 // The rate limit's decision from Gradescope's submission metadata (grading/rate_limit.h).
 #include "grading/rate_limit.h"
+#include "util.h"  // parse_iso8601
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
