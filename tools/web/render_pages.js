@@ -1,7 +1,11 @@
 // Opens pages written by `rt export-web` in headless Chromium (SwiftShader's WebGL2) and writes
 // each page's first frame, as the page read it back with readPixels (window.__rtPixels), to
 // OUT/NAME.png; the comparison with the CPU render is rt compare's (cmake/check_web_export.cmake).
-//   node render_pages.js OUT PAGE.html...
+//   node render_pages.js OUT PAGE.html[@SWITCH,...]...
+// With @SWITCH,...: after the first frame each switch of the page's panel (its checkbox
+// #toggle-SWITCH: specular, shadows, ...) is clicked, the frame it draws written to
+// OUT/NAME.SWITCH.png (cmake/check_web_toggles.cmake compares it with rt render's), and clicked
+// again, which must draw the first frame exactly.
 // A console error, an uncaught exception, a WebGL error or any request beyond the page's own
 // file fails the page (exit 1). A browser
 // without WebGL2 prints one "SKIPPED: ..." line naming its renderer and exits 0.
@@ -13,7 +17,30 @@ const puppeteer = require('puppeteer-core');
 const kChromium = process.env.RT_CHROMIUM || '/usr/bin/chromium';
 const kTimeoutMs = 100000;  // the slowest page compiles and draws in a few seconds
 
-async function renderPage(browser, file, out) {
+// Clicks each switch, writes the frame it draws, clicks it back; returns the problems.
+async function flipSwitches(page, name, switches, out) {
+  const problems = [];
+  const first = await page.evaluate(() => window.__rtPixels);
+  for (const s of switches) {
+    const box = await page.$('#toggle-' + s);
+    if (!box || await page.evaluate((b) => b.disabled, box)) {
+      problems.push('the page has no switch "' + s + '" to click');
+      continue;
+    }
+    await box.click();
+    const url = await page.evaluate(() => window.__rtFrame());
+    fs.writeFileSync(path.join(out, name + '.' + s + '.png'),
+      Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64'));
+    await box.click();
+    if (await page.evaluate(() => window.__rtFrame()) !== first)
+      problems.push('switching ' + s + ' back does not draw the first frame again');
+  }
+  return problems;
+}
+
+async function renderPage(browser, argument, out) {
+  const [file, switchList] = argument.split('@');
+  const switches = switchList ? switchList.split(',') : [];
   const problems = [];
   const page = await browser.newPage();
   page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
@@ -33,6 +60,13 @@ async function renderPage(browser, file, out) {
     const url = await page.evaluate(() => window.__rtPixels);
     fs.writeFileSync(path.join(out, name + '.png'),
       Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64'));
+    try {
+      problems.push(...await flipSwitches(page, name, switches, out));
+    } catch (e) {
+      problems.push('switching: ' + e.message);
+    }
+  } else {
+    problems.push('the page failed: ' + done.error);
   }
   const seconds = ((Date.now() - t0) / 1000).toFixed(1);
   await page.close();
