@@ -22,8 +22,9 @@ function rtControls(ctx) {
   }
   function checkbox(parent, name, label, disabled, title) {
     const l = add(parent, 'label', { title: title || '' });
-    const box = add(l, 'input', { type: 'checkbox', id: 'toggle-' + name, checked: !!settings[name],
-      disabled: !!disabled });
+    // A disabled switch shows what the page draws: no environment is drawn unchecked.
+    const box = add(l, 'input', { type: 'checkbox', id: 'toggle-' + name,
+      checked: !!settings[name] && !(disabled && !panel.has_environment), disabled: !!disabled });
     l.appendChild(document.createTextNode(label));
     box.addEventListener('change', () => { settings[name] = box.checked; changed(); });
   }
