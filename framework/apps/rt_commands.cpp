@@ -1,5 +1,9 @@
 #include "apps/rt_commands.h"
 
+#include <iterator>
+
+#include "render/prepare.h"
+
 namespace rt {
 
 // `rt render`'s options: what to render and write.
@@ -55,6 +59,16 @@ void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
         ->check(CLI::Range(-45.0, 45.0));
     render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
     render_cmd->add_option("--shadows", render_args.shadows, "override the scene's shadows")
+        ->check(CLI::IsMember({"on", "off"}));
+    render_cmd
+        ->add_option("--off", render_args.off,
+                     "switch terms off as rt view's panel does (a comma list): ambient, diffuse, "
+                     "specular, emissive, reflection or refraction zeroes that coefficient in "
+                     "every material; environment drops the environment")
+        ->delimiter(',')
+        ->check(
+            CLI::IsMember(std::vector<std::string>(std::begin(kTermNames), std::end(kTermNames))));
+    render_cmd->add_option("--fresnel", render_args.fresnel, "override the scene's fresnel")
         ->check(CLI::IsMember({"on", "off"}));
     render_cmd
         ->add_option("--max-depth", render_args.max_depth,

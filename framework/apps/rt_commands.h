@@ -35,12 +35,14 @@ struct RenderArgs {
     bool quiet = false;
     std::string debug_pixel, overlay_pixel;  // "X,Y"
     std::string debug_format = "text";
-    std::string accelerator;     // "", "none" or "bvh": overrides the scene's
-    std::string texture_filter;  // "", nearest, bilinear, oiio, oiio-aniso: for every image
-    double yaw_degrees = 0;      // turns the camera about its up axis (the grader's unseen views)
-    std::string shadows;         // "", on or off: overrides the scene's (the viewer's toggle)
-    int max_depth = -1;          // >= 0: overrides the scene's
-    int spp = 0;                 // > 0: overrides the scene's samples_per_pixel (stage 10)
+    std::string accelerator;       // "", "none" or "bvh": overrides the scene's
+    std::string texture_filter;    // "", nearest, bilinear, oiio, oiio-aniso: for every image
+    double yaw_degrees = 0;        // turns the camera about its up axis (the grader's unseen views)
+    std::string shadows;           // "", on or off: overrides the scene's (the viewer's toggle)
+    int max_depth = -1;            // >= 0: overrides the scene's
+    std::vector<std::string> off;  // --off: kTermNames switched off (the viewer's toggles)
+    std::string fresnel;           // "", on or off: overrides the scene's
+    int spp = 0;                   // > 0: overrides the scene's samples_per_pixel (stage 10)
     std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
     bool gpu = false;        // stage 09: a compute shader renders it (render/gpu/gpu_render.h)
     std::string gl = "egl";  // the context --gpu uses: egl, osmesa or window

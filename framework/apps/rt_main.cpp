@@ -95,6 +95,8 @@ SceneOverrides overrides_of(const RenderArgs& args) {
         if (args.texture_filter == name) o.texture_lookup = lookup;
     if (!args.shadows.empty()) o.shadows = args.shadows == "on";
     if (args.max_depth >= 0) o.max_depth = args.max_depth;
+    for (const std::string& term : args.off) *term_switch(o.terms, term) = false;
+    if (!args.fresnel.empty()) o.fresnel = args.fresnel == "on";
     if (args.spp > 0) o.samples_per_pixel = args.spp;
     o.seed = args.seed;
     return o;

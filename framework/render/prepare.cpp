@@ -1,5 +1,7 @@
 #include "render/prepare.h"
 
+#include <iterator>
+
 #include "camera/camera_moves.h"
 #include "render/oiio_textures.h"
 
@@ -17,9 +19,31 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
     if (o.samples_per_pixel && *o.samples_per_pixel > 0)
         scene.sampling.samples_per_pixel = *o.samples_per_pixel;
     if (o.seed) scene.sampling.seed = *o.seed;
+    if (o.fresnel) scene.fresnel = *o.fresnel;
+    switch_off_terms(scene, o.terms);
 }
 
 }  // namespace
+
+bool* term_switch(TermSwitches& s, const std::string& name) {
+    bool* const switches[] = {&s.ambient,    &s.diffuse,    &s.specular,   &s.emissive,
+                              &s.reflection, &s.refraction, &s.environment};
+    for (std::size_t i = 0; i < std::size(kTermNames); ++i)
+        if (name == kTermNames[i]) return switches[i];
+    return nullptr;
+}
+
+void switch_off_terms(Scene& scene, const TermSwitches& on) {
+    for (Material& m : scene.materials) {
+        if (!on.ambient) m.ambient = Color(0);
+        if (!on.diffuse) m.diffuse = Color(0);
+        if (!on.specular) m.specular = Color(0);
+        if (!on.emissive) m.emissive = Color(0);
+        if (!on.reflection) m.reflective = Color(0);
+        if (!on.refraction) m.transmissive = Color(0);
+    }
+    if (!on.environment) scene.environment.kind = EnvironmentKind::None;
+}
 
 void load_texture_system(PreparedScene& scene) {
     // OpenImageIO's TextureSystem (and the plug-in) are loaded only when asked for, once.

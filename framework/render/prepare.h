@@ -15,11 +15,31 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "render/accelerate.h"
 #include "scene/prepared_scene.h"
 
 namespace rt {
+
+// The viewer's switches of stage 03's terms and the effects of stages 05 and 08 (rt view's panel,
+// rt render --off, rt export-web's page): a term off is a coefficient of zero in every material
+// (texture maps multiply it, so they go too), the environment off is none; prepare_scene's step 3
+// then leaves it out of what the renderer computes. All on changes nothing.
+struct TermSwitches {
+    bool ambient = true, diffuse = true, specular = true, emissive = true;
+    bool reflection = true, refraction = true, environment = true;
+};
+
+// Their names, as --off and the page spell them, in this order.
+inline constexpr const char* kTermNames[] = {"ambient",    "diffuse",    "specular",   "emissive",
+                                             "reflection", "refraction", "environment"};
+// The switch of that name (one of kTermNames), or nullptr.
+bool* term_switch(TermSwitches& switches, const std::string& name);
+
+// Zeroes what `switches` has off in `scene` (the description or a prepared copy; a prepared
+// copy then needs refresh_features).
+void switch_off_terms(Scene& scene, const TermSwitches& switches);
 
 struct SceneOverrides {
     int width = 0, height = 0;  // > 0: the image size instead of the scene's
@@ -31,6 +51,8 @@ struct SceneOverrides {
     std::optional<int> max_depth{};          // >= 0
     std::optional<int> samples_per_pixel{};  // > 0 (stage 10)
     std::optional<std::uint64_t> seed{};     // stage 10
+    TermSwitches terms{};                    // the viewer's switches (all on: none)
+    std::optional<bool> fresnel{};
 };
 
 // Step 2 alone, for a scene that arrives prepared (the grading worker's, framework/remote/):

@@ -134,6 +134,13 @@ add_test(NAME Web.ExportMatchesCpu
           -P ${PROJECT_SOURCE_DIR}/cmake/check_web_export.cmake)
 set_tests_properties(Web.ExportMatchesCpu PROPERTIES LABELS "web;render" TIMEOUT 300
   SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+# The page's switches (specular, shadows, ...) against rt render with the same switch.
+add_test(NAME Web.TogglesMatchCpu
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/web-toggles
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_web_toggles.cmake)
+set_tests_properties(Web.TogglesMatchCpu PROPERTIES LABELS "web;render" TIMEOUT 300
+  SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 endif()
 # The viewer under Xvfb (skipped, saying why, without xvfb-run): screenshots in
 # build/test-output/view/.

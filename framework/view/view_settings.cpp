@@ -81,17 +81,13 @@ PreparedScene SceneSource::make(const ViewSettings& settings) {
     scene.texture_lookup = settings.texture_lookup;
     scene.camera = settings.camera;
     scene.fresnel = settings.fresnel;
-    // A term off is a coefficient of zero in every material (texture maps multiply it, so they
-    // go too); refresh_features then leaves the term out of what the renderer computes.
-    for (Material& m : scene.materials) {
-        if (!settings.ambient) m.ambient = Color(0);
-        if (!settings.diffuse) m.diffuse = Color(0);
-        if (!settings.specular) m.specular = Color(0);
-        if (!settings.emissive) m.emissive = Color(0);
-        if (!settings.reflection) m.reflective = Color(0);
-        if (!settings.refraction) m.transmissive = Color(0);
-    }
-    if (!settings.environment) scene.environment.kind = EnvironmentKind::None;
+    switch_off_terms(scene, {.ambient = settings.ambient,
+                             .diffuse = settings.diffuse,
+                             .specular = settings.specular,
+                             .emissive = settings.emissive,
+                             .reflection = settings.reflection,
+                             .refraction = settings.refraction,
+                             .environment = settings.environment});
     refresh_features(scene);  // prepare_scene's step 3 again, after the viewer's own changes
     return scene;
 }

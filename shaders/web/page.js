@@ -1,13 +1,13 @@
 // rt export-web's page script (framework/render/gpu/web_export.h). It draws the scene's first
 // frame with the inlined fragment shader in WebGL2, reads it back with readPixels and hands it to
-// the test as a PNG data URL (window.__rtPixels, window.__rtDone), then follows the mouse as
-// `rt view` does: drag orbits about the surface under the image centre, the wheel zooms.
-'use strict';
+// the test as a PNG data URL (window.__rtPixels, window.__rtDone); then page_controls.js's panel,
+// keys and mouse change the settings and the camera (page_camera.js) as `rt view`'s do, and each
+// change draws again (window.__rtFrame() reads the latest frame back for the test).
 (function () {
   const data = JSON.parse(document.getElementById('rt-data').textContent);
   const status = document.getElementById('status');
   const live = document.getElementById('live');
-  const kOrbitDegreesPerPixel = 0.3, kZoomPerWheelStep = 0.9;  // rt view's (viewer_window.cpp)
+  const frameTime = document.getElementById('frame-time');
 
   document.getElementById('title').textContent = data.scene + ' (' + data.mode + ')';
   // Small course images blown up by a whole factor, each pixel a crisp square, as in rt view.
@@ -76,52 +76,60 @@
     return program;
   }
 
-  // --- The camera (camera/camera_moves.cpp's orbit and zoom, in doubles) ---
-  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-  const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
-  const mul = (a, s) => [a[0] * s, a[1] * s, a[2] * s];
-  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-    a[0] * b[1] - a[1] * b[0]];
-  const normalize = (a) => mul(a, 1 / Math.sqrt(dot(a, a)));
-  function rotate(x, axis, degrees) {  // Rodrigues' formula
-    const k = normalize(axis), t = degrees * Math.PI / 180, c = Math.cos(t), s = Math.sin(t);
-    return add(add(mul(x, c), mul(cross(k, x), s)), mul(k, dot(k, x) * (1 - c)));
-  }
-  const initial = JSON.parse(JSON.stringify(data.camera));
-  const up = initial.v;  // orbits keep the scene camera's up, so the horizon never rolls
-  let camera = JSON.parse(JSON.stringify(initial)), pivotDistance = data.pivot_distance;
-
-  function lookAt(eye, target) {
-    const w = normalize(sub(eye, target)), u = normalize(cross(up, w));
-    Object.assign(camera, { eye: eye, u: u, v: cross(w, u), w: w });
-  }
-  function orbit(yaw, pitch) {
-    const pivot = sub(camera.eye, mul(camera.w, pivotDistance));
-    let offset = rotate(sub(camera.eye, pivot), up, -yaw);
-    const pitched = rotate(offset, normalize(cross(up, offset)), pitch);
-    if (Math.abs(dot(normalize(pitched), up)) < 0.998) offset = pitched;
-    lookAt(add(pivot, offset), pivot);
-  }
-  function zoom(factor) {
-    if (camera.projection === 1) { camera.view_height *= factor; return; }
-    const pivot = sub(camera.eye, mul(camera.w, pivotDistance));
-    pivotDistance = Math.max(pivotDistance * factor, 1e-3);
-    camera.eye = add(pivot, mul(camera.w, pivotDistance));
-  }
+  const view = rtCamera(data);
+  // rt view's settings (view/view_settings.h), as the panel sets them: the scene file's at first.
+  const panel = data.settings;
+  const settings = Object.assign({}, panel.initial);
+  for (const term of panel.terms) settings[term] = true;
+  const initialSettings = JSON.stringify(settings);
+  const settingsChanged = () => JSON.stringify(settings) !== initialSettings;
 
   // --- Drawing ---
   let program = null;
+  // What the settings make of the shader's uniforms: web_export.cpp's feature bits per mode,
+  // shadows and refraction (as gpu_feature_bits gives them), the switched-off terms as bits.
+  function setSettingUniforms(at) {
+    const mode = panel.modes.find((m) => m.name === settings.mode);
+    gl.uniform1i(at('render_mode'), mode.value);
+    const shaded = mode.value === panel.shaded;
+    gl.uniform1i(at('max_depth'), shaded ? settings.max_depth : 0);
+    gl.uniform1i(at('fresnel'), settings.fresnel ? 1 : 0);
+    const index = (settings.shadows ? 2 : 0) + (settings.refraction ? 1 : 0);
+    gl.uniform1i(at('scene_features'), panel.feature_bits[settings.mode][index]);
+    let off = 0;
+    panel.terms.forEach((term, i) => { if (!settings[term] && i < 6) off |= 1 << i; });
+    gl.uniform1i(at('rt_terms_off'), off);
+  }
+
   function draw() {
     gl.useProgram(program);
     const at = (name) => gl.getUniformLocation(program, name);
+    const camera = view.camera();
     gl.uniform3f(at('iResolution'), data.width, data.height, 1);
     gl.uniform1i(at('camera.projection'), camera.projection);
     for (const axis of ['eye', 'u', 'v', 'w']) gl.uniform3fv(at('camera.' + axis), camera[axis]);
     gl.uniform1f(at('camera.vertical_fov_degrees'), camera.vertical_fov_degrees);
     gl.uniform1f(at('camera.view_height'), camera.view_height);
+    setSettingUniforms(at);
     gl.viewport(0, 0, data.width, data.height);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  // A frame drawn and waited for (one pixel read back), its time shown as rt view's HUD does.
+  let frames = 0;
+  function redraw() {
+    if (!program) return;
+    const t0 = performance.now();
+    draw();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+    const ms = performance.now() - t0;
+    const error = gl.getError();
+    if (error !== gl.NO_ERROR) console.error('rt export-web: WebGL error 0x' + error.toString(16));
+    ++frames;
+    frameTime.textContent = 'frame ' + frames + ': ' + ms.toFixed(1) + ' ms (' +
+      (1000 / Math.max(ms, 0.1)).toFixed(1) + ' fps), ' + data.width + 'x' + data.height +
+      ' on ' + renderer;
+    if (controls) controls.drawn();
   }
 
   // Each stub a pixel reached (alpha < 255 holds its number), once, as rt render reports them.
@@ -138,88 +146,49 @@
     return seen.size;
   }
 
-  // The first frame, top row first, opaque, as an image the test can write and compare.
-  let firstFrame = null;
-  function readFirstFrame() {
+  // The frame on the canvas, top row first, opaque (alpha held the stubs), as ImageData and as a
+  // PNG data URL the test can write and compare; a WebGL error throws.
+  function readFrame(report) {
     const rgba = new Uint8Array(data.width * data.height * 4);
     gl.readPixels(0, 0, data.width, data.height, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
     const error = gl.getError();
     if (error !== gl.NO_ERROR) throw new Error('WebGL error 0x' + error.toString(16));
-    const stubs = reportStubs(rgba);
-    firstFrame = new ImageData(data.width, data.height);
+    const stubs = report ? reportStubs(rgba) : 0;
+    const image = new ImageData(data.width, data.height);
     const row = data.width * 4;
     for (let y = 0; y < data.height; ++y)  // readPixels' rows are bottom first
-      firstFrame.data.set(rgba.subarray((data.height - 1 - y) * row, (data.height - y) * row), y * row);
-    for (let i = 3; i < firstFrame.data.length; i += 4) firstFrame.data[i] = 255;
-    const image = document.createElement('canvas');
-    image.width = data.width;
-    image.height = data.height;
-    image.getContext('2d').putImageData(firstFrame, 0, 0);
-    window.__rtPixels = image.toDataURL('image/png');
-    return stubs;
+      image.data.set(rgba.subarray((data.height - 1 - y) * row, (data.height - y) * row), y * row);
+    for (let i = 3; i < image.data.length; i += 4) image.data[i] = 255;
+    const canvas = document.createElement('canvas');
+    canvas.width = data.width;
+    canvas.height = data.height;
+    canvas.getContext('2d').putImageData(image, 0, 0);
+    return { image: image, stubs: stubs, url: canvas.toDataURL('image/png') };
   }
+  // For the test: the latest frame, after a click on the panel has drawn it (synchronously).
+  window.__rtFrame = () => readFrame(false).url;
 
+  let controls = null;
   function start() {
     const t0 = performance.now();
     try {
       program = link();
       draw();
-      const stubs = readFirstFrame();
+      const first = readFrame(true);
+      window.__rtPixels = first.url;
       const ms = Math.round(performance.now() - t0);
       status.textContent = 'First frame ' + data.width + 'x' + data.height + ' in ' + ms +
         ' ms (compile and draw) on ' + renderer +
-        (stubs ? '; magenta pixels reached stubs (see the console)' : '') + '.';
+        (first.stubs ? '; magenta pixels reached stubs (see the console)' : '') + '.';
+      controls = rtControls({ data: data, settings: settings, view: view, redraw: redraw,
+        readFrame: readFrame, live: live, scale: scale, status: status,
+        changed: () => settingsChanged() || view.changed() });
+      redraw();
       window.__rtDone = { ok: true, renderer: renderer, ms: ms };
     } catch (e) {
       fail('rt export-web: ' + e.message);
     }
   }
-
-  // --- The CPU render beside the live canvas, and the first frame's difference from it ---
-  function showReference() {
-    if (!data.reference) { status.textContent = 'This page holds no CPU render.'; return; }
-    const img = document.getElementById('reference');
-    img.src = data.reference;
-    img.style.width = data.width * scale + 'px';
-    img.onload = () => {
-      const c = document.createElement('canvas');
-      c.width = data.width;
-      c.height = data.height;
-      const g = c.getContext('2d');
-      g.drawImage(img, 0, 0);
-      const ref = g.getImageData(0, 0, data.width, data.height).data;
-      const out = new ImageData(data.width, data.height);
-      for (let i = 0; i < ref.length; ++i)  // a picture for the eye, not the test's metric
-        out.data[i] = i % 4 === 3 ? 255 : Math.min(255, 8 * Math.abs(firstFrame.data[i] - ref[i]));
-      document.getElementById('difference').getContext('2d').putImageData(out, 0, 0);
-    };
-    document.getElementById('reference-figure').hidden = false;
-    document.getElementById('difference-figure').hidden = !firstFrame;
-  }
-
-  // --- The mouse ---
-  let dragging = null;
-  live.addEventListener('mousedown', (e) => { dragging = [e.clientX, e.clientY]; });
-  window.addEventListener('mouseup', () => { dragging = null; });
-  window.addEventListener('mousemove', (e) => {
-    if (!dragging || !program) return;
-    orbit((e.clientX - dragging[0]) * kOrbitDegreesPerPixel,
-      (e.clientY - dragging[1]) * kOrbitDegreesPerPixel);
-    dragging = [e.clientX, e.clientY];
-    requestAnimationFrame(draw);
-  });
-  live.addEventListener('wheel', (e) => {
-    e.preventDefault();
-    if (!program) return;
-    zoom(Math.pow(kZoomPerWheelStep, e.deltaY < 0 ? 1 : -1));
-    requestAnimationFrame(draw);
-  }, { passive: false });
-  document.getElementById('reset').addEventListener('click', () => {
-    camera = JSON.parse(JSON.stringify(initial));
-    pivotDistance = data.pivot_distance;
-    if (program) draw();
-  });
-  document.getElementById('compare').addEventListener('click', showReference);
 
   // Let the page paint "Compiling..." before the (blocking) compile.
   requestAnimationFrame(() => setTimeout(start, 0));

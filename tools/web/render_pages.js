@@ -1,7 +1,13 @@
 // Opens pages written by `rt export-web` in headless Chromium (SwiftShader's WebGL2) and writes
 // each page's first frame, as the page read it back with readPixels (window.__rtPixels), to
 // OUT/NAME.png; the comparison with the CPU render is rt compare's (cmake/check_web_export.cmake).
-//   node render_pages.js OUT PAGE.html...
+//   node render_pages.js OUT PAGE.html[@ACTION,...]...
+// With @ACTION,...: after the first frame, each switch of the page's panel named (its checkbox
+// #toggle-ACTION: specular, shadows, ...) is clicked, the frame it draws written to
+// OUT/NAME.ACTION.png (cmake/check_web_toggles.cmake compares it with rt render's), and clicked
+// again, which must draw the first frame exactly; `moves` and `ortho` move the camera with the
+// mouse (and P) and write the frame and the camera W shows; `reference` checks the CPU render
+// button's difference and the frame time (runActions).
 // A console error, an uncaught exception, a WebGL error or any request beyond the page's own
 // file fails the page (exit 1). A browser
 // without WebGL2 prints one "SKIPPED: ..." line naming its renderer and exits 0.
@@ -13,9 +19,86 @@ const puppeteer = require('puppeteer-core');
 const kChromium = process.env.RT_CHROMIUM || '/usr/bin/chromium';
 const kTimeoutMs = 100000;  // the slowest page compiles and draws in a few seconds
 
-async function renderPage(browser, file, out) {
+function writePng(file, url) {
+  fs.writeFileSync(file, Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64'));
+}
+
+// The camera moved as a lecturer would (drag to orbit, right drag to pan, the wheel to zoom, P
+// for `ortho`), then W: writes the frame and the camera the page shows for the scene file, and
+// R must bring the first frame back.
+async function moveCamera(page, name, action, out) {
+  await page.$eval('#live', (e) => e.scrollIntoView());
+  const box = await (await page.$('#live')).boundingBox();
+  const x = box.x + box.width / 2, y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 40, y + 10, { steps: 4 });
+  await page.mouse.up();
+  await page.mouse.down({ button: 'right' });
+  await page.mouse.move(x + 60, y - 20, { steps: 4 });
+  await page.mouse.up({ button: 'right' });
+  await page.mouse.wheel({ deltaY: -100 });
+  await page.mouse.wheel({ deltaY: -100 });
+  if (action === 'ortho') await page.keyboard.press('p');
+  await page.keyboard.press('w');
+  await new Promise((r) => setTimeout(r, 300));  // the moves' frames are drawn at the next paint
+  writePng(path.join(out, name + '.' + action + '.png'), await page.evaluate(() => window.__rtFrame()));
+  fs.writeFileSync(path.join(out, name + '.' + action + '.camera.json'),
+    await page.$eval('#camera-json', (e) => e.textContent));
+  await page.keyboard.press('r');
+  return await page.evaluate(() => window.__rtFrame() === window.__rtPixels)
+    ? [] : ['R after the moves does not draw the first frame again'];
+}
+
+// The CPU render button: the difference of the unmoved first frame from it must be near black,
+// and the frame time must show.
+async function checkReference(page) {
+  await page.click('#compare');
+  await page.waitForFunction(() => document.getElementById('reference').complete, { timeout: 10000 });
+  await new Promise((r) => setTimeout(r, 200));
+  const r = await page.evaluate(() => {
+    const c = document.getElementById('difference');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let sum = 0, n = 0;
+    for (let i = 0; i < d.length; i += 4) { sum += d[i] + d[i + 1] + d[i + 2]; n += 3; }
+    return { mean: sum / n, shown: !document.getElementById('difference-figure').hidden,
+      time: document.getElementById('frame-time').textContent };
+  });
+  console.log(`  CPU render shown: ${r.shown}, mean |difference| x 8 ${r.mean.toFixed(3)}; ${r.time}`);
+  const problems = [];
+  if (!r.shown || !(r.mean < 1)) problems.push('the CPU render\'s difference is not near black');
+  if (!/frame \d+: [\d.]+ ms/.test(r.time)) problems.push('no frame time shown');
+  return problems;
+}
+
+// Each action: a switch is clicked, its frame written, and clicked back, which must draw the
+// first frame exactly; `moves` and `ortho` move the camera; `reference` checks the CPU render.
+async function runActions(page, name, actions, out) {
+  const problems = [];
+  const first = await page.evaluate(() => window.__rtPixels);
+  for (const s of actions) {
+    if (s === 'moves' || s === 'ortho') { problems.push(...await moveCamera(page, name, s, out)); continue; }
+    if (s === 'reference') { problems.push(...await checkReference(page)); continue; }
+    const box = await page.$('#toggle-' + s);
+    if (!box || await page.evaluate((b) => b.disabled, box)) {
+      problems.push('the page has no switch "' + s + '" to click');
+      continue;
+    }
+    await box.click();
+    writePng(path.join(out, name + '.' + s + '.png'), await page.evaluate(() => window.__rtFrame()));
+    await box.click();
+    if (await page.evaluate(() => window.__rtFrame()) !== first)
+      problems.push('switching ' + s + ' back does not draw the first frame again');
+  }
+  return problems;
+}
+
+async function renderPage(browser, argument, out) {
+  const [file, switchList] = argument.split('@');
+  const switches = switchList ? switchList.split(',') : [];
   const problems = [];
   const page = await browser.newPage();
+  await page.setViewport({ width: 1600, height: 1200 });  // the canvas and the panel in view
   page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
   page.on('pageerror', (e) => problems.push('uncaught: ' + e.message));
   // Self-contained: the page's own file and data: URLs only.
@@ -33,6 +116,13 @@ async function renderPage(browser, file, out) {
     const url = await page.evaluate(() => window.__rtPixels);
     fs.writeFileSync(path.join(out, name + '.png'),
       Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64'));
+    try {
+      problems.push(...await runActions(page, name, switches, out));
+    } catch (e) {
+      problems.push('switching: ' + e.message);
+    }
+  } else {
+    problems.push('the page failed: ' + done.error);
   }
   const seconds = ((Date.now() - t0) / 1000).toFixed(1);
   await page.close();

@@ -10,6 +10,7 @@
 #include "render/camera_ray.h"
 #include "render/gpu/gpu_render.h"
 #include "render/gpu/shadertoy_export.h"
+#include "render/prepare.h"
 
 namespace fs = std::filesystem;
 
@@ -53,21 +54,120 @@ std::string png_data_url(const Image8& image) {
     return "data:image/png;base64," + base64(bytes.str());
 }
 
-// The export with its baked camera as a uniform of the same name and struct, which the page sets
-// from the scene's camera for the first frame (the same floats) and moves when the mouse orbits.
-std::string shader_with_camera_uniform(const ShadertoyExport& shader) {
-    std::string text = wrap_shadertoy_export(shader);
-    const std::string baked = "\nconst Camera camera = ";
-    const std::size_t at = text.find(baked);
+// A baked declaration ("\nconst bool fresnel = ...;") turned into the line `replacement`.
+void to_uniform(std::string& text, const std::string& baked, const std::string& replacement) {
+    const std::size_t at = text.find("\n" + baked);
     if (at == std::string::npos)
-        throw GpuError("rt: error: the Shadertoy export bakes no camera to make a uniform of");
-    text.replace(at + 1, text.find('\n', at + 1) - at - 1, "uniform Camera camera;");
+        throw GpuError("rt: error: the Shadertoy export bakes no \"" + baked +
+                       "\" to make a uniform of");
+    text.replace(at + 1, text.find('\n', at + 1) - at - 1, replacement);
+}
+
+// The page's switches of rt view's terms (kTermNames' first six, bit i the i-th): main zeroes
+// those coefficients in every material before the pixel is traced, as rt view zeroes them in the
+// scene (render/prepare.h's switch_off_terms). The materials lose their `const` for it.
+const char* const kApplyTerms =
+    "\n// rt export-web's switches (bit i: kTermNames[i] off), as rt view's panel zeroes them.\n"
+    "uniform int rt_terms_off;\n"
+    "void rt_apply_terms() {\n"
+    "    for (int i = 0; i < material_count; ++i) {\n"
+    "        if ((rt_terms_off & 1) != 0) materials[i].ambient.rgb = vec3(0.0);\n"
+    "        if ((rt_terms_off & 2) != 0) materials[i].diffuse.rgb = vec3(0.0);\n"
+    "        if ((rt_terms_off & 4) != 0) materials[i].specular_shininess.rgb = vec3(0.0);\n"
+    "        if ((rt_terms_off & 8) != 0) materials[i].emissive.rgb = vec3(0.0);\n"
+    "        if ((rt_terms_off & 16) != 0) materials[i].reflective.rgb = vec3(0.0);\n"
+    "        if ((rt_terms_off & 32) != 0) materials[i].transmissive_ior.rgb = vec3(0.0);\n"
+    "    }\n"
+    "}\n";
+
+// The export with what the page changes as uniforms of the same names: the camera (orbit, pan,
+// zoom), the mode, the bounces, Fresnel and the feature bits (shadows, refraction), and the
+// materials made writable for the term switches.
+std::string page_shader_text(const ShadertoyExport& shader) {
+    std::string text = wrap_shadertoy_export(shader);
+    to_uniform(text, "const Camera camera = ", "uniform Camera camera;");
+    to_uniform(text, "const bool fresnel = ", "uniform bool fresnel;");
+    to_uniform(text, "const int render_mode = ", "uniform int render_mode;");
+    to_uniform(text, "const int max_depth = ", "uniform int max_depth;");
+    to_uniform(text, "const int scene_features = ", "uniform int scene_features;");
+    const std::string materials = "\nconst Material materials[";
+    const std::size_t at = text.find(materials);
+    if (at == std::string::npos)
+        throw GpuError("rt: error: the Shadertoy export bakes no materials");
+    text.erase(at + 1, 6);  // "const "
+    const std::string call = "    mainImage(rt_frag_color";
+    const std::size_t main_at = text.rfind("\nout vec4 rt_frag_color;");
+    const std::size_t call_at = text.rfind(call);
+    if (main_at == std::string::npos || call_at == std::string::npos)
+        throw GpuError("rt: error: the Shadertoy wrapper has no main to switch terms in");
+    text.insert(call_at, "    rt_apply_terms();\n");
+    text.insert(main_at, kApplyTerms);
     return text;
 }
 
+// What the page's shader is compiled for: every mode a pixel can draw alone, with shaded's code
+// and shadows in it, so that each setting of the panel has its code; or, when the scene cannot be
+// shaded here (stage 10), the requested mode alone.
+struct PageShader {
+    ShadertoyExport shader;
+    std::vector<RenderMode> modes;
+};
+
+PageShader page_shader(const PreparedScene& scene, RenderMode mode) {
+    ShadertoyExport requested = export_shadertoy(scene, mode);  // its refusals are the page's
+    PreparedScene every = scene;
+    every.shadows = true;
+    refresh_features(every);
+    try {
+        return {export_shadertoy(every, RenderMode::Shaded),
+                {RenderMode::Directions, RenderMode::Normals, RenderMode::PrimitiveId,
+                 RenderMode::Shaded}};
+    } catch (const GpuError&) {
+        return {std::move(requested), {mode}};
+    }
+}
+
+// For each mode, scene_features with shadows off and on, refraction off and on (index 2 * shadows
+// + refraction), as gpu_feature_bits gives them for the scene the viewer makes of those settings.
+nlohmann::json feature_bits(const PreparedScene& scene, const std::vector<RenderMode>& modes) {
+    nlohmann::json bits = nlohmann::json::object();
+    for (RenderMode m : modes) {
+        nlohmann::json four = nlohmann::json::array();
+        for (int k = 0; k < 4; ++k) {
+            PreparedScene copy = scene;
+            copy.shadows = k >= 2;
+            switch_off_terms(copy, {.refraction = (k & 1) != 0});
+            refresh_features(copy);
+            four.push_back(gpu_feature_bits(copy, m));
+        }
+        bits[to_string(m)] = four;
+    }
+    return bits;
+}
+
+// What the page's panel starts with: the scene file's settings, every term on.
+nlohmann::json page_settings(const PreparedScene& scene, RenderMode mode,
+                             const std::vector<RenderMode>& modes) {
+    nlohmann::json mode_names = nlohmann::json::array();
+    for (RenderMode m : modes) mode_names.push_back({{"name", to_string(m)}, {"value", int(m)}});
+    nlohmann::json terms = nlohmann::json::array();
+    for (const char* name : kTermNames) terms.push_back(name);
+    return {{"modes", mode_names},
+            {"shaded", int(RenderMode::Shaded)},
+            {"terms", terms},
+            {"has_environment", scene.environment.kind != EnvironmentKind::None},
+            {"feature_bits", feature_bits(scene, modes)},
+            {"max_depth", gpu_trace_depth(scene, RenderMode::Shaded)},
+            {"initial",
+             {{"mode", to_string(mode)},
+              {"shadows", scene.shadows},
+              {"fresnel", scene.fresnel},
+              {"max_depth", gpu_trace_depth(scene, RenderMode::Shaded)}}}};
+}
+
 // What page.js reads: the size, the camera (floats written as doubles, so they read back exact),
-// the stubs (to name the one a magenta pixel reached) and the reference image.
-nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const ShadertoyExport& shader,
+// the panel's settings, the stubs (to name the one a magenta pixel reached) and the reference.
+nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const PageShader& shader,
                          const Image8& reference) {
     const Camera& c = scene.camera;
     auto v3 = [](const Vec3& v) {
@@ -86,9 +186,10 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Shad
                              {"vertical_fov_degrees", float(c.vertical_fov_degrees)},
                              {"view_height", float(c.view_height)}}},
                            {"pivot_distance", float(orbit_pivot_distance(scene))},
+                           {"settings", page_settings(scene, mode, shader.modes)},
                            {"stubs", nlohmann::json::array()},
                            {"reference", png_data_url(reference)}};
-    for (const ShaderStub& s : shader.stubs)
+    for (const ShaderStub& s : shader.shader.stubs)
         data["stubs"].push_back({{"function", s.function},
                                  {"file", s.file},
                                  {"line", s.line},
@@ -119,14 +220,16 @@ std::string script_safe(std::string text, bool json) {
 }  // namespace
 
 std::string export_web_page(const PreparedScene& scene, RenderMode mode, const Image8& reference) {
-    const ShadertoyExport shader = export_shadertoy(scene, mode);
+    const PageShader shader = page_shader(scene, mode);
     std::string page = read_page_file("page.html");
     const std::string title = scene.source.empty() ? "A scene" : fs::path(scene.source).stem();
     replace_once(page, "@RT_TITLE@", title);
-    replace_once(page, "@RT_SHADER@", script_safe(shader_with_camera_uniform(shader), false));
+    replace_once(page, "@RT_SHADER@", script_safe(page_shader_text(shader.shader), false));
     replace_once(page, "@RT_DATA@",
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
-    replace_once(page, "@RT_SCRIPT@", read_page_file("page.js"));
+    replace_once(page, "@RT_SCRIPT@",
+                 read_page_file("page_camera.js") + read_page_file("page_controls.js") +
+                     read_page_file("page.js"));
     return page;
 }
 
