@@ -105,11 +105,12 @@ if(NOT CHROMIUM)
   message(STATUS "SKIPPED the browser check: chromium is not installed (scripts/install-deps.sh)")
   return()
 endif()
+# A profile of its own: the default one is locked while another test's Chromium runs.
 execute_process(COMMAND ${CHROMIUM} --headless --no-sandbox --disable-gpu --virtual-time-budget=10000
-                        --dump-dom file://${OUT}/index.html
-                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_QUIET TIMEOUT 120)
+                        --user-data-dir=${OUT}/chromium-profile --dump-dom file://${OUT}/index.html
+                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE err TIMEOUT 120)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "chromium --dump-dom of ${OUT}/index.html failed (${rc})")
+  message(FATAL_ERROR "chromium --dump-dom of ${OUT}/index.html failed (${rc}):\n${err}")
 endif()
 string(REGEX MATCH "data-images-total=\"([0-9]+)\"" _ "${dom}")
 set(total "${CMAKE_MATCH_1}")

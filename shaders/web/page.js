@@ -76,6 +76,24 @@
     return program;
   }
 
+  // The scene's large arrays (meshes, the BVH, images: web_arrays.h) as RGBA32UI data textures
+  // on texture units 0.., each bound to its sampler rt_data_<name>.
+  function uploadDataTextures(program) {
+    gl.useProgram(program);
+    data.data_textures.forEach((array, unit) => {
+      const bytes = Uint8Array.from(atob(array.base64), (c) => c.charCodeAt(0));
+      const words = new Uint32Array(array.width * array.height * 4);
+      words.set(new Uint32Array(bytes.buffer));
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, gl.createTexture());
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32UI, array.width, array.height, 0,
+        gl.RGBA_INTEGER, gl.UNSIGNED_INT, words);
+      gl.uniform1i(gl.getUniformLocation(program, 'rt_data_' + array.name), unit);
+    });
+  }
+
   const view = rtCamera(data);
   // rt view's settings (view/view_settings.h), as the panel sets them: the scene file's at first.
   const panel = data.settings;
@@ -173,6 +191,7 @@
     const t0 = performance.now();
     try {
       program = link();
+      uploadDataTextures(program);
       draw();
       const first = readFrame(true);
       window.__rtPixels = first.url;

@@ -111,8 +111,14 @@ std::string uniform_constants(const PreparedScene& scene, RenderMode mode) {
     return s;
 }
 
+// `const_array`'s text, or nothing for an array the page reads from a data texture.
+template <typename F>
+std::string unless_data(bool data_textures, const char* name, F text) {
+    return data_textures && is_web_data_array(name) ? "" : text();
+}
+
 // The geometry arrays: spheres, triangles and their vertices.
-std::string geometry_constants(const gpu::GpuScene& g) {
+std::string geometry_constants(const gpu::GpuScene& g, bool data) {
     std::string s;
     s += const_array(
         "Sphere", "spheres", g.spheres,
@@ -120,21 +126,29 @@ std::string geometry_constants(const gpu::GpuScene& g) {
             return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
         },
         "Sphere(" + kZero4 + ", " + kZeroInt4 + ")");
-    s += const_array(
-        "Triangle", "triangles", g.triangles,
-        [](const gpu::GpuTriangle& x) {
-            return "Triangle(" + vec("uvec4", x.vertices_material, 4) + ")";
-        },
-        "Triangle(uvec4(0u))");
-    s += const_array("vec4", "positions", g.positions, vec4_item, kZero4);
-    s += const_array("vec4", "normals", g.normals, vec4_item, kZero4);
-    s += const_array(
-        "vec2", "uvs", g.uvs, [](const glm::vec2& x) { return vec("vec2", x, 2); }, "vec2(0.0)");
+    s += unless_data(data, "triangles", [&] {
+        return const_array(
+            "Triangle", "triangles", g.triangles,
+            [](const gpu::GpuTriangle& x) {
+                return "Triangle(" + vec("uvec4", x.vertices_material, 4) + ")";
+            },
+            "Triangle(uvec4(0u))");
+    });
+    s += unless_data(data, "positions", [&] {
+        return const_array("vec4", "positions", g.positions, vec4_item, kZero4);
+    });
+    s += unless_data(data, "normals",
+                     [&] { return const_array("vec4", "normals", g.normals, vec4_item, kZero4); });
+    s += unless_data(data, "uvs", [&] {
+        return const_array(
+            "vec2", "uvs", g.uvs, [](const glm::vec2& x) { return vec("vec2", x, 2); },
+            "vec2(0.0)");
+    });
     return s;
 }
 
 // Materials, the BVH, textures and the environment.
-std::string material_constants(const gpu::GpuScene& g) {
+std::string material_constants(const gpu::GpuScene& g, bool data) {
     std::string s;
     s += const_array(
         "Material", "materials", g.materials,
@@ -149,16 +163,20 @@ std::string material_constants(const gpu::GpuScene& g) {
         "Material(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 +
             ", " + kZero4 + ", " + kZeroInt4 + ", vec4[4](" + kZero4 + ", " + kZero4 + ", " +
             kZero4 + ", " + kZero4 + "))");
-    s += const_array(
-        "BvhNode", "bvh_nodes", g.bvh_nodes,
-        [](const BvhNode& n) {
-            return "BvhNode(" + vec("vec3", n.min, 3) + ", " + literal(n.first) + ", " +
-                   vec("vec3", n.max, 3) + ", " + literal(n.count) + ")";
-        },
-        "BvhNode(vec3(0.0), 0u, vec3(0.0), 0u)");
-    s += const_array(
-        "uint", "bvh_primitives", g.bvh_primitives, [](std::uint32_t x) { return literal(x); },
-        "0u");
+    s += unless_data(data, "bvh_nodes", [&] {
+        return const_array(
+            "BvhNode", "bvh_nodes", g.bvh_nodes,
+            [](const BvhNode& n) {
+                return "BvhNode(" + vec("vec3", n.min, 3) + ", " + literal(n.first) + ", " +
+                       vec("vec3", n.max, 3) + ", " + literal(n.count) + ")";
+            },
+            "BvhNode(vec3(0.0), 0u, vec3(0.0), 0u)");
+    });
+    s += unless_data(data, "bvh_primitives", [&] {
+        return const_array(
+            "uint", "bvh_primitives", g.bvh_primitives, [](std::uint32_t x) { return literal(x); },
+            "0u");
+    });
     s += const_array(
         "Texture", "textures", g.textures,
         [](const gpu::GpuTexture& t) {
@@ -166,13 +184,16 @@ std::string material_constants(const gpu::GpuScene& g) {
                    v4(t.b_scale) + ")";
         },
         "Texture(" + kZeroInt4 + ", " + kZero4 + ", " + kZero4 + ")");
-    s += const_array(
-        "TextureImage", "texture_images", g.texture_images,
-        [](const gpu::GpuTextureImage& t) {
-            return "TextureImage(" + iv4(t.width_height_first) + ")";
-        },
-        "TextureImage(" + kZeroInt4 + ")");
-    s += const_array("vec4", "texels", g.texels, vec4_item, kZero4);
+    s += unless_data(data, "texture_images", [&] {
+        return const_array(
+            "TextureImage", "texture_images", g.texture_images,
+            [](const gpu::GpuTextureImage& t) {
+                return "TextureImage(" + iv4(t.width_height_first) + ")";
+            },
+            "TextureImage(" + kZeroInt4 + ")");
+    });
+    s += unless_data(data, "texels",
+                     [&] { return const_array("vec4", "texels", g.texels, vec4_item, kZero4); });
     s += const_array(
         "Environment", "environment", g.environment,
         [](const gpu::GpuEnvironment& e) {
@@ -209,10 +230,11 @@ std::string plane_box_light_constants(const gpu::GpuScene& g) {
     return s;
 }
 
-std::string scene_constants(const PreparedScene& scene, RenderMode mode) {
-    const gpu::GpuScene g = gpu::pack_scene(scene);
-    return uniform_constants(scene, mode) + geometry_constants(g) + material_constants(g) +
-           plane_box_light_constants(g);
+std::string scene_constants(const PreparedScene& scene, RenderMode mode, const gpu::GpuScene& g,
+                            bool data) {
+    return uniform_constants(scene, mode) + geometry_constants(g, data) +
+           material_constants(g, data) + plane_box_light_constants(g) +
+           (data ? web_data_accessors() : "");
 }
 
 // Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
@@ -260,13 +282,13 @@ std::string scene_structs() {
     return out;
 }
 
-void check_exportable(const PreparedScene& scene, RenderMode mode) {
+void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_textures) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
     if (mode == RenderMode::Depth || mode == RenderMode::BvhVisits)
         throw GpuError(where + ": mode \"" + to_string(mode) +
                        "\" scales each pixel by the whole image's range, which one Shadertoy "
                        "pixel cannot know; export it with --mode normals or --mode shaded");
-    if (scene.texels.size() > kMaxShadertoyTexels)
+    if (!data_textures && scene.texels.size() > kMaxShadertoyTexels)
         throw GpuError(where + ": its images hold " + std::to_string(scene.texels.size()) +
                        " texels; Shadertoy cannot load the scene's image files and an export "
                        "bakes at most " +
@@ -300,13 +322,14 @@ const char* const kShadertoyTail =
 }  // namespace
 
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
-                                 const fs::path& student_dir) {
-    check_exportable(scene, mode);
-    const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
+                                 const ShadertoyOptions& options) {
+    check_exportable(scene, mode, options.data_textures);
+    const fs::path students = options.student_dir.empty() ? gpu_student_dir() : options.student_dir;
     const AssembledShader shader =
         assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students},
                         gpu_defines(scene, mode));  // they decide the guarded includes
     if (!shader.error.empty()) throw GpuError(shader.error);
+    const gpu::GpuScene packed = gpu::pack_scene(scene);
     ShadertoyExport out;
     out.text = "// " + (scene.source.empty() ? std::string("A scene") : scene.source) +
                " in mode " + to_string(mode) +
@@ -314,9 +337,13 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "
                "field of view; the image takes the canvas's shape.\n\n" +
                gpu_defines(scene, mode) + "\n" + gpu::shader_prelude() + scene_structs() + "\n" +
-               scene_constants(scene, mode) + "\n";
+               scene_constants(scene, mode, packed, options.data_textures) + "\n";
     out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
     for_shadertoy(shader, out.text, out.line_origins);
+    if (options.data_textures) {
+        out.text = read_through_accessors(std::move(out.text));
+        out.data_arrays = web_data_arrays(packed);
+    }
     if (out.text.size() > kMaxShadertoyBytes)
         throw GpuError((scene.source.empty() ? "the scene" : scene.source) + ": its export " +
                        "would be " + std::to_string(out.text.size() / 1024) +

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gpu/gl/shader_source.h"
+#include "render/gpu/web_arrays.h"
 #include "scene/prepared_scene.h"
 
 namespace rt {
@@ -22,6 +23,15 @@ struct ShadertoyExport {
     // For each line of `text` (index 0: line 1), the GLSL file and line it came from, as
     // "stages/09-gpu/intersect.glsl:42"; "" for the export's own lines (the scene's constants).
     std::vector<std::string> line_origins;
+    // With ShadertoyOptions::data_textures: the arrays the shader reads from data textures.
+    std::vector<DataArray> data_arrays;
+};
+
+struct ShadertoyOptions {
+    std::filesystem::path student_dir{};  // the stage 09 GLSL's folder; empty: gpu_student_dir()
+    // rt export-web: the large arrays (meshes, the BVH, images) in data textures instead of
+    // constants (render/gpu/web_arrays.h), so neither size limit below applies to them.
+    bool data_textures = false;
 };
 
 // Images are baked as constant arrays up to this many texels in all; Shadertoy cannot load the
@@ -38,7 +48,7 @@ constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
 // beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes, and what render --gpu cannot
 // draw either.
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
-                                 const std::filesystem::path& student_dir = {});
+                                 const ShadertoyOptions& options = {});
 
 // The export as a whole GLSL ES 3.00 fragment shader, as Shadertoy and a WebGL2 page run it: after
 // `#version 300 es` and Shadertoy's uniforms, the export, then a main calling mainImage that also

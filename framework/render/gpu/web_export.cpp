@@ -113,13 +113,16 @@ struct PageShader {
     std::vector<RenderMode> modes;
 };
 
+// The page's shader reads meshes, BVHs and images from data textures (render/gpu/web_arrays.h).
+const ShadertoyOptions kWeb{.data_textures = true};
+
 PageShader page_shader(const PreparedScene& scene, RenderMode mode) {
-    ShadertoyExport requested = export_shadertoy(scene, mode);  // its refusals are the page's
+    ShadertoyExport requested = export_shadertoy(scene, mode, kWeb);  // its refusals: the page's
     PreparedScene every = scene;
     every.shadows = true;
     refresh_features(every);
     try {
-        return {export_shadertoy(every, RenderMode::Shaded),
+        return {export_shadertoy(every, RenderMode::Shaded, kWeb),
                 {RenderMode::Directions, RenderMode::Normals, RenderMode::PrimitiveId,
                  RenderMode::Shaded}};
     } catch (const GpuError&) {
@@ -165,6 +168,22 @@ nlohmann::json page_settings(const PreparedScene& scene, RenderMode mode,
               {"max_depth", gpu_trace_depth(scene, RenderMode::Shaded)}}}};
 }
 
+// The data textures, as page.js uploads them: RGBA32UI, kDataTextureWidth texels a row (fewer
+// when the array is shorter), the words as little-endian bytes in base64.
+nlohmann::json data_textures(const std::vector<DataArray>& arrays) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const DataArray& a : arrays) {
+        const std::size_t texels = a.words.size() / 4;
+        const std::size_t width = std::min<std::size_t>(texels, kDataTextureWidth);
+        const std::string bytes(reinterpret_cast<const char*>(a.words.data()), a.words.size() * 4);
+        out.push_back({{"name", a.name},
+                       {"width", width},
+                       {"height", (texels + width - 1) / width},
+                       {"base64", base64(bytes)}});
+    }
+    return out;
+}
+
 // What page.js reads: the size, the camera (floats written as doubles, so they read back exact),
 // the panel's settings, the stubs (to name the one a magenta pixel reached) and the reference.
 nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const PageShader& shader,
@@ -188,6 +207,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
                            {"pivot_distance", float(orbit_pivot_distance(scene))},
                            {"settings", page_settings(scene, mode, shader.modes)},
                            {"stubs", nlohmann::json::array()},
+                           {"data_textures", data_textures(shader.shader.data_arrays)},
                            {"reference", png_data_url(reference)}};
     for (const ShaderStub& s : shader.shader.stubs)
         data["stubs"].push_back({{"function", s.function},

@@ -303,7 +303,8 @@ TEST(GpuShader, ShadertoyExportDropsLocalConstAnywhereOnTheLine) {
     insert_in_intersect_plane(copy.dir() / "intersect.glsl",
                               "    float st_a = ray.origin.x; const float st_b = st_a;");
     const PreparedScene scene = small_scene("02-intersections/scenes/spheres_normals.json");
-    const std::string text = export_shadertoy(scene, RenderMode::Normals, copy.dir()).text;
+    const std::string text =
+        export_shadertoy(scene, RenderMode::Normals, {.student_dir = copy.dir()}).text;
     EXPECT_NE(text.find("float st_a = ray.origin.x; float st_b = st_a;"), std::string::npos);
 }
 
@@ -360,7 +361,7 @@ TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
     const std::string text =
         "#version 300 es\nprecision highp float;\nprecision highp int;\n"
         "uniform vec3 iResolution;\n" +
-        export_shadertoy(scene, scene.mode, stubs.dir()).text +
+        export_shadertoy(scene, scene.mode, {.student_dir = stubs.dir()}).text +
         "out vec4 colour;\nvoid main() { mainImage(colour, gl_FragCoord.xy); }\n";
     const fs::path file =
         fs::temp_directory_path() / ("rt-stage09-toy-" + std::to_string(getpid()) + ".frag");
