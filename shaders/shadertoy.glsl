@@ -20,6 +20,17 @@ bool rt_loop_guard(int iteration, int loop) {
     return false;
 }
 
+#ifdef HAS_SAMPLING
+// Stage 10, in rt export-web's pages only (Shadertoy's export refuses it): each frame draws camera
+// samples sample_first .. sample_first + sample_count - 1 of every pixel, as one dispatch of
+// trace.comp does, and the page adds the frames up and divides (shaders/web/page_samples.js).
+uniform int sample_first;
+uniform int sample_count;
+#endif
+#ifdef HAS_MOTION_BLUR
+Sphere spheres[MAX_SPHERES];  // the spheres at the camera sample's time (trace.glsl's move_spheres)
+#endif
+
 #include "trace.glsl"
 
 // image/image.cpp's linear_to_srgb: Shadertoy shows fragColor as sRGB-encoded bytes.
@@ -31,6 +42,16 @@ float rt_encode_srgb(float x) {
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     image_size = ivec2(iResolution.xy);
+#ifdef HAS_SAMPLING
+    if (render_mode == kModeShaded && scene_has(kFeatureSampled)) {
+        // This frame's camera samples of the pixel, summed and linear: the page divides.
+        const ivec2 pixel = ivec2(fragCoord.x, iResolution.y - fragCoord.y);
+        vec3 sum = vec3(0);
+        for (int s = sample_first; s < sample_first + sample_count; ++s) sum += sample_pixel(pixel, s);
+        fragColor = vec4(sum, 1.0);
+        return;
+    }
+#endif
     // Shadertoy's fragCoord has y up; the camera's image points have y down.
     vec4 result = trace_pixel(vec2(fragCoord.x, iResolution.y - fragCoord.y));
     vec3 c = result.rgb;

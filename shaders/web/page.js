@@ -104,6 +104,7 @@
 
   // --- Drawing ---
   let program = null;
+  let samples = null;  // stage 10's accumulation (page_samples.js), for a sampled scene
   // What the settings make of the shader's uniforms: web_export.cpp's feature bits per mode,
   // shadows and refraction (as gpu_feature_bits gives them), the switched-off terms as bits.
   function setSettingUniforms(at) {
@@ -130,7 +131,17 @@
     gl.uniform1f(at('camera.view_height'), camera.view_height);
     setSettingUniforms(at);
     gl.viewport(0, 0, data.width, data.height);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    const mode = panel.modes.find((m) => m.name === settings.mode);
+    if (!samples || mode.value !== panel.shaded) {
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      return;
+    }
+    samples.draw((first, count) => {  // stage 10: the camera samples, a few a draw
+      gl.useProgram(program);
+      gl.uniform1i(at('sample_first'), first);
+      gl.uniform1i(at('sample_count'), count);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    });
   }
 
   // A frame drawn and waited for (one pixel read back), its time shown as rt view's HUD does.
@@ -190,8 +201,10 @@
   function start() {
     const t0 = performance.now();
     try {
+      samples = rtSamples(gl, data, kVertexShader, compile);
       program = link();
       uploadDataTextures(program);
+      if (samples) samples.attach(program);
       draw();
       const first = readFrame(true);
       window.__rtPixels = first.url;

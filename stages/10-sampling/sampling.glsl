@@ -209,9 +209,12 @@ float sphere_pdf(AreaLight light, vec3 from, vec3 direction) {
 LightSample sample_area_light(AreaLight light, vec3 point, vec2 u) {
     LightSample out_sample = LightSample(vec3(0), 0.0, vec3(0));
     // BEGIN SOLUTION
-    const AreaSample s = floatBitsToInt(light.corner_kind.w) == 0
-                             ? sample_rectangle(light, point, u)
-                             : sample_sphere(light, point, u);
+    // An if, not ?: (WebGL rejects ?: on structs, and rt export-web runs this in a browser).
+    AreaSample s;
+    if (floatBitsToInt(light.corner_kind.w) == 0)
+        s = sample_rectangle(light, point, u);
+    else
+        s = sample_sphere(light, point, u);
     if (!(s.pdf > 0.0)) return out_sample;
     const vec3 d = s.point - point;
     out_sample.distance = length(d);

@@ -118,10 +118,10 @@ std::string unless_data(bool data_textures, const char* name, F text) {
 }
 
 // The geometry arrays: spheres, triangles and their vertices.
-std::string geometry_constants(const gpu::GpuScene& g, bool data) {
+std::string geometry_constants(const gpu::GpuScene& g, bool data, bool moving) {
     std::string s;
     s += const_array(
-        "Sphere", "spheres", g.spheres,
+        "Sphere", moving ? "spheres_at_rest" : "spheres", g.spheres,
         [](const gpu::GpuSphere& x) {
             return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
         },
@@ -232,9 +232,16 @@ std::string plane_box_light_constants(const gpu::GpuScene& g) {
 
 std::string scene_constants(const PreparedScene& scene, RenderMode mode, const gpu::GpuScene& g,
                             bool data) {
-    return uniform_constants(scene, mode) + geometry_constants(g, data) +
+    // Stage 10 (rt export-web only): the sampled scene's uniform block, which the page fills with
+    // gpu::sampled_block's bytes, and the moving spheres' rest positions.
+    const bool sampled = data && mode == RenderMode::Shaded && scene.features.sampled();
+    const std::string block =
+        "layout(std140) uniform SampledScene { Sampling sampling; AreaLight "
+        "area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };\n";
+    return uniform_constants(scene, mode) +
+           geometry_constants(g, data, sampled && scene.features.motion_blur) +
            material_constants(g, data) + plane_box_light_constants(g) +
-           (data ? web_data_accessors() : "");
+           (data ? web_data_accessors() : "") + (sampled ? block : "");
 }
 
 // Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
@@ -294,7 +301,7 @@ void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_tex
                        "bakes at most " +
                        std::to_string(kMaxShadertoyTexels) +
                        " as constants: use a checker or marble texture, or a smaller image");
-    if (mode == RenderMode::Shaded && scene.features.sampled())
+    if (!data_textures && mode == RenderMode::Shaded && scene.features.sampled())
         throw GpuError(
             where +
             ": stage 10 (several camera samples per pixel, accumulated over "
@@ -326,7 +333,7 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
     check_exportable(scene, mode, options.data_textures);
     const fs::path students = options.student_dir.empty() ? gpu_student_dir() : options.student_dir;
     const AssembledShader shader =
-        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students},
+        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students, gpu_sampling_dir()},
                         gpu_defines(scene, mode));  // they decide the guarded includes
     if (!shader.error.empty()) throw GpuError(shader.error);
     const gpu::GpuScene packed = gpu::pack_scene(scene);

@@ -113,6 +113,10 @@ struct PageShader {
     std::vector<RenderMode> modes;
 };
 
+// Stage 10's camera samples a draw of the page adds (as trace.comp's dispatches do): a few, so
+// that a slow GPU still answers between draws.
+constexpr int kWebSamplesPerFrame = 4;
+
 // The page's shader reads meshes, BVHs and images from data textures (render/gpu/web_arrays.h).
 const ShadertoyOptions kWeb{.data_textures = true};
 
@@ -184,6 +188,18 @@ nlohmann::json data_textures(const std::vector<DataArray>& arrays) {
     return out;
 }
 
+// Stage 10: how the page accumulates camera samples (shaders/web/page_samples.js), and the bytes
+// of the uniform block SampledScene (as rt render --gpu uploads them); null for other scenes.
+nlohmann::json sampled_settings(const PreparedScene& scene, RenderMode mode) {
+    if (mode != RenderMode::Shaded || !scene.features.sampled()) return nullptr;
+    const std::vector<unsigned char> block =
+        gpu::sampled_block(gpu::pack_scene(scene), std::max(1, int(scene.area_lights.size())),
+                           std::max(1, int(scene.moving_spheres.size())));
+    return {{"samples_per_pixel", std::max(1, scene.sampling.samples_per_pixel)},
+            {"samples_per_frame", kWebSamplesPerFrame},
+            {"block", base64(std::string(block.begin(), block.end()))}};
+}
+
 // What page.js reads: the size, the camera (floats written as doubles, so they read back exact),
 // the panel's settings, the stubs (to name the one a magenta pixel reached) and the reference.
 nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const PageShader& shader,
@@ -208,6 +224,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
                            {"settings", page_settings(scene, mode, shader.modes)},
                            {"stubs", nlohmann::json::array()},
                            {"data_textures", data_textures(shader.shader.data_arrays)},
+                           {"sampled", sampled_settings(scene, mode)},
                            {"reference", png_data_url(reference)}};
     for (const ShaderStub& s : shader.shader.stubs)
         data["stubs"].push_back({{"function", s.function},
@@ -249,7 +266,7 @@ std::string export_web_page(const PreparedScene& scene, RenderMode mode, const I
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
     replace_once(page, "@RT_SCRIPT@",
                  read_page_file("page_camera.js") + read_page_file("page_controls.js") +
-                     read_page_file("page.js"));
+                     read_page_file("page_samples.js") + read_page_file("page.js"));
     return page;
 }
 
