@@ -46,7 +46,6 @@ const Order kSurface{"type",        "center",    "radius",   "velocity", "point"
                      "heightfield", "triangles", "seed",     "scale",    "translate", "object",
                      "transform",   "material",  "materials"};
 const Order kObject{"name", "surfaces"};
-const Order kTransformStep{"scale", "rotate", "euler_degrees", "matrix", "translate"};
 const Order kRotation{"axis", "degrees"};
 const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
 const Order kFog{"density", "albedo", "min", "max"};
@@ -78,12 +77,11 @@ std::string number_text(const json& v) {
 }
 
 // The key order of an object nested under `key` (texture slots, procedural textures, the
-// environment's "cube" faces), or of the objects in an array under `key` (an object's
-// "surfaces", a "transform"'s steps).
+// environment's "cube" faces, a transform step's "rotate"), or of the objects in an array under
+// `key` (an object's "surfaces"). A transform step has one key, so needs no order.
 const Order& order_of_member(const std::string& key) {
     if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
     if (key == "surfaces") return kSurface;
-    if (key == "transform") return kTransformStep;
     if (key == "rotate") return kRotation;
     if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
     if (key == "cube") return kCubeFaces;
