@@ -1,7 +1,8 @@
 // Transforms and instances against hand-computed hits (docs/scene-format.md#transforms-and-
 // instances): the framework's two-level query (intersect_instance in stage_api/stage06.h) over the
 // stage 02 functions and, with "accelerator": "bvh", this stage's tree at both levels. Not graded
-// (a binary of its own): it checks the framework, with the reference solution.
+// (a binary of its own): it checks the framework, with the reference solution. Every test uses
+// the tree, so that in a starter tree they fail on this stage's stubs like the others.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +32,9 @@ void expect_near(const Vec3& a, const Vec3& b, double tolerance = 1e-5) {
     EXPECT_NEAR(a.z, b.z, tolerance) << "z";
 }
 
-const Accelerator kBoth[] = {Accelerator::None, Accelerator::Bvh};
+// The tree first: every test needs this stage's code (a starter tree's stage06 tests all fail on
+// its stubs), then stage 02's loop, which must give the same hits.
+const Accelerator kBoth[] = {Accelerator::Bvh, Accelerator::None};
 
 TEST(Instance, RotatedBox) {
     // The cube [-1, 1]^3 turned 45 degrees about +y: its +z face now faces (1, 0, 1) / sqrt 2, at
@@ -131,7 +134,8 @@ TEST(Instance, MirroredMeshFacesOutward) {
     // A mirrored icosphere, baked: hit from outside along every axis, it shows its front.
     const PreparedScene s = prepared(
         R"({"type": "mesh", "procedural": "icosphere", "triangles": 320,
-            "transform": {"scale": [-1, 1, 1]}})");
+            "transform": {"scale": [-1, 1, 1]}})",
+        "", Accelerator::Bvh);
     for (const Vec3 d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(-1, 0, 0)}) {
         Hit hit;
         ASSERT_TRUE(nearest_hit(s, Ray{d * Real(5), -d}, Interval{0, kInfinity}, hit));
@@ -146,7 +150,8 @@ TEST(Instance, InstanceEqualsBakedMesh) {
         R"([{"scale": [1, 0.5, 2]}, {"euler_degrees": [10, 20, 30]}, {"translate": [0.5, 0, 0]}])";
     const PreparedScene baked =
         prepared(R"({"type": "mesh", "procedural": "torus", "triangles": 500, "transform": )" +
-                 transform + "}");
+                     transform + "}",
+                 "", Accelerator::Bvh);
     const PreparedScene instanced =
         prepared(R"({"type": "instance", "object": "t", "transform": )" + transform + "}",
                  R"("objects": [{"name": "t", "surfaces": [{"type": "mesh", "procedural": "torus",
