@@ -268,6 +268,11 @@ void SceneSections::read_objects(const json& root) {
             if (!scene_.planes.empty())
                 fail_value(s, "an object cannot hold a plane (a plane has no bounds to place)",
                            "put planes among the scene's \"surfaces\"");
+            if (!scene_.moving_spheres.empty())
+                fail_value(JsonPositions::child(s, "velocity"),
+                           "an object cannot hold a moving sphere (its box would change with "
+                           "time)",
+                           "put moving spheres among the scene's \"surfaces\"");
         }
         pad_shading_data();
         reading_object_.reset();

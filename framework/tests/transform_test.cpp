@@ -252,6 +252,8 @@ TEST(Transform, BadObjectsGiveOneLineErrors) {
         {R"([{"name": "a", "surfaces": []}])", "object \"a\" has no surfaces"},
         {R"([{"name": "a", "surfaces": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}]}])",
          "an object cannot hold a plane"},
+        {R"([{"name": "a", "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "velocity": [1, 0, 0]}]}])",
+         "an object cannot hold a moving sphere"},
         {R"([{"name": "a", "surfaces": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "transform": {"rotate": {"axis": [0, 1, 0], "degrees": 10}}}]}])",
          "put this transform on the object's instances instead"},
         {R"([{"name": "a", "surfaces": [)" + sphere + R"(], "scale": 2}])",

@@ -136,7 +136,8 @@ void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
     if (!scene.instances.empty())
         throw GpuError(where + ": " + std::to_string(scene.instances.size()) +
                        " instances (named objects, or a rotated box or non-uniformly scaled "
-                       "sphere): instances are not on the GPU yet; render it without --gpu");
+                       "sphere): instances are not on the GPU yet; render it on the CPU (rt render "
+                       "without --gpu)");
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
                        ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
