@@ -168,6 +168,12 @@ int run_info(const std::string& file) {
         scene.spheres.size(), scene.planes.size(), scene.triangles.size(), scene.vertices.size(),
         scene.boxes.size(), scene.materials.size(), scene.lights.size(),
         scene.features.describe().c_str());
+    if (!scene.instances.empty()) {
+        std::size_t triangles = 0;
+        for (const auto& object : scene.objects) triangles += object->triangles.size();
+        std::printf("  %zu instances of %zu objects (%zu triangles in the objects)\n",
+                    scene.instances.size(), scene.objects.size(), triangles);
+    }
     if (scene.features.sampled())  // stage 10
         std::printf(
             "  sampling: %d samples per pixel, seed %llu, %zu area lights, %zu moving spheres\n",

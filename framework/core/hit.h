@@ -13,6 +13,9 @@ struct Hit {
     Vec2 uv{0};              // surface coordinates; triangles: barycentrics (beta, gamma)
     int primitive = -1;      // global primitive id (Scene::primitive_id), -1 if none
     int material = -1;       // index into Scene::materials
+    // When `primitive` is an instance (Scene::Kind::Instance): the primitive of its object that
+    // was hit, an id of the object's own arrays. -1 otherwise.
+    int object_primitive = -1;
 
     // Stores `outward_normal` (unit length, pointing out of the surface) turned to face the ray,
     // and records in front_face whether the ray hit the outside.

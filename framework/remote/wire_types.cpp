@@ -108,10 +108,24 @@ void get(Reader& r, PreparedScene& v) {
     get(r, v.bvh);
 }
 
+void put(Writer& w, const std::shared_ptr<PreparedScene>& v) {
+    put(w, bool(v));
+    if (v) put(w, *v);
+}
+void get(Reader& r, std::shared_ptr<PreparedScene>& v) {
+    bool present = false;
+    get(r, present);
+    v.reset();
+    if (present) {
+        v = std::make_shared<PreparedScene>();
+        get(r, *v);
+    }
+}
+
 // sizeof(Scene) and sizeof(PreparedScene) (with float) when their field lists were written.
-static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 664,
+static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 736,
               "Scene changed: add its new field to RT_WIRE_FIELDS(Scene) in wire_types.h");
-static_assert(sizeof(Real) != sizeof(float) || sizeof(PreparedScene) == 760,
+static_assert(sizeof(Real) != sizeof(float) || sizeof(PreparedScene) == 832,
               "PreparedScene changed: add its new field to put/get(PreparedScene) above");
 
 }  // namespace rt::remote

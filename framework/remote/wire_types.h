@@ -3,6 +3,7 @@
 #pragma once
 
 #include <concepts>
+#include <memory>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -78,13 +79,17 @@ RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v
 RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.color, v.root)
 RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face, v.uv)
 RT_WIRE_FIELDS(ShadertoyRun, v.compile_errors, v.draw_error, v.image)
+// An instanced object (Scene::objects): a flag for null, then the prepared scene.
+void put(Writer& w, const std::shared_ptr<PreparedScene>& v);
+void get(Reader& r, std::shared_ptr<PreparedScene>& v);
 // Every field but the OpenImageIO texture system, which the worker makes anew from the texture
 // table (worker_serve.cpp). wire_types.cpp checks the size: a new field must be added here.
 RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambient_light,
                v.max_depth, v.shadows, v.fresnel, v.accelerator, v.texture_lookup, v.spheres,
                v.planes, v.boxes, v.vertices, v.normals, v.uvs, v.triangles, v.materials,
                v.material_names, v.lights, v.area_lights, v.moving_spheres, v.sampling, v.fog,
-               v.textures, v.texture_names, v.texture_images, v.texels, v.environment)
+               v.textures, v.texture_names, v.texture_images, v.texels, v.environment, v.instances,
+               v.objects, v.object_names)
 #undef RT_WIRE_FIELDS
 
 template <class T>

@@ -11,6 +11,13 @@ namespace rt {
 AccelerationReport build_acceleration(PreparedScene& scene, const BvhBuildOptions& options) {
     AccelerationReport report;
     scene.bvh = Bvh{};
+    // Instanced objects: copies of this prepared scene's own (copies of a scene share them), each
+    // with the student's tree when this scene has one: the bottom level of two.
+    for (std::shared_ptr<PreparedScene>& object : scene.objects) {
+        object = std::make_shared<PreparedScene>(static_cast<const Scene&>(*object));
+        object->accelerator = scene.accelerator;
+        build_acceleration(*object, options);
+    }
     if (scene.accelerator != Accelerator::Bvh) return report;
     report.requested = true;
     if (!scene.moving_spheres.empty()) {  // its boxes would change with the shutter time

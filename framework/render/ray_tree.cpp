@@ -26,6 +26,8 @@ const char* kind_name(Scene::Kind kind) {
             return "triangle";
         case Scene::Kind::Box:
             return "box";
+        case Scene::Kind::Instance:
+            return "instance";
     }
     return "?";
 }

@@ -122,6 +122,21 @@ struct PreparedHit {
     Vec3 to_viewer{0};
 };
 
+// An instance of a mesh with vertex normals is lit, like the mesh, with the object's
+// interpolated normal, mapped to the world by the inverse transpose.
+void instance_lighting_normal(const PreparedScene& scene, const Ray& ray, const Hit& hit,
+                              Vec3& lighting_normal) {
+    const ObjectView view = object_view(scene, ray, hit);
+    std::size_t index = 0;
+    if (!view.object || view.object->normals.empty() ||
+        view.object->primitive_kind(view.hit.primitive, index) != Scene::Kind::Triangle)
+        return;
+    const Vec3 smooth = shading_normal(*view.object, index, hit.uv);
+    if (smooth == Vec3(0)) return;
+    const Vec3 world = world_normal(*view.instance, smooth);
+    lighting_normal = hit.front_face ? world : -world;
+}
+
 void prepare_hit(const PreparedScene& scene, const Ray& ray, const Hit& hit,
                  const RayDifferential* rays, PreparedHit& p) {
     // A scene built in code may lack materials; an out-of-range index must not crash.
@@ -141,6 +156,7 @@ void prepare_hit(const PreparedScene& scene, const Ray& ray, const Hit& hit,
             if (smooth != Vec3(0)) p.lighting_normal = hit.front_face ? smooth : -smooth;
         }
     }
+    if (!scene.instances.empty()) instance_lighting_normal(scene, ray, hit, p.lighting_normal);
     // Stage 07: the material as its maps colour it here, and the normal-mapped normal. Only
     // textured scenes pay for the copy (and run stage 07 code).
     p.material = &scene_material;

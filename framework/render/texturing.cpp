@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "scene/transform.h"
 #include "stage_api/stage07.h"
 
 namespace rt {
@@ -30,6 +31,32 @@ Vec3 noise_gradient(int x, int y, int z) {
     return directions[h % 12] * k;
 }
 
+namespace {
+
+// An instance's hit and surface point as its object sees them (object_view without the ray).
+struct LocalHit {
+    const PreparedScene* object = nullptr;
+    const Instance* instance = nullptr;
+    Hit hit;
+    SurfacePoint at;
+};
+
+LocalHit local_hit(const PreparedScene& scene, std::size_t i, const Hit& hit,
+                   const SurfacePoint& at) {
+    LocalHit l;
+    l.instance = &scene.instances[i];
+    l.object = scene.objects[l.instance->object].get();
+    l.hit = hit;
+    l.hit.primitive = hit.object_primitive;
+    l.at = at;
+    l.at.point = object_point(*l.instance, at.point);
+    l.at.normal = object_normal(*l.instance, at.normal);
+    l.at.primitive = hit.object_primitive;
+    return l;
+}
+
+}  // namespace
+
 Vec2 surface_texcoord(const PreparedScene& scene, const Hit& hit, const SurfacePoint& at) {
     std::size_t i = 0;
     if (!scene.is_primitive(hit.primitive)) return Vec2(0);
@@ -48,6 +75,10 @@ Vec2 surface_texcoord(const PreparedScene& scene, const Hit& hit, const SurfaceP
             Vec2 a, b, c;
             triangle_vertex_uvs(scene, i, a, b, c);
             return triangle_texcoord(a, b, c, hit.uv);
+        }
+        case Scene::Kind::Instance: {  // the object's own coordinates: textures move with it
+            const LocalHit l = local_hit(scene, i, hit, at);
+            return surface_texcoord(*l.object, l.hit, l.at);
         }
     }
     return Vec2(0);
@@ -91,6 +122,12 @@ Vec3 surface_tangent(const PreparedScene& scene, const Hit& hit, const SurfacePo
                 if (glm::length(t) > 0) return glm::normalize(t);
             }
             return any_perpendicular(at.normal);
+        }
+        case Scene::Kind::Instance: {  // the object's tangent, a direction: mapped by M
+            const LocalHit l = local_hit(scene, i, hit, at);
+            const Vec3 t = glm::mat<3, 3, Real>(l.instance->object_to_world) *
+                           surface_tangent(*l.object, l.hit, l.at);
+            return glm::length(t) > 0 ? glm::normalize(t) : any_perpendicular(at.normal);
         }
     }
     return any_perpendicular(at.normal);

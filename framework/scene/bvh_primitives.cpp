@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/prepared_scene.h"
+#include "scene/transform.h"
+
 namespace rt {
 namespace {
 
@@ -29,7 +32,8 @@ Vec3f up(const Vec3& v) {
 
 std::vector<BvhPrimitive> bvh_primitives(const Scene& scene) {
     std::vector<BvhPrimitive> out;
-    out.reserve(scene.spheres.size() + scene.triangles.size() + scene.boxes.size());
+    out.reserve(scene.spheres.size() + scene.triangles.size() + scene.boxes.size() +
+                scene.instances.size());
     auto add = [&](const Aabb& box, Scene::Kind kind, std::size_t i) {
         BvhPrimitive p;
         p.bounds = box;
@@ -59,6 +63,18 @@ std::vector<BvhPrimitive> bvh_primitives(const Scene& scene) {
     }
     for (std::size_t i = 0; i < scene.boxes.size(); ++i)
         add(Aabb{down(scene.boxes[i].min), up(scene.boxes[i].max)}, Scene::Kind::Box, i);
+    // Instances: each object's box (made once), mapped to the world.
+    std::vector<Aabb> object_bounds(scene.objects.size());
+    std::vector<bool> known(scene.objects.size(), false);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const std::size_t o = scene.instances[i].object;
+        if (!known[o]) {
+            for (const BvhPrimitive& p : bvh_primitives(*scene.objects[o]))
+                object_bounds[o].grow(p.bounds);
+            known[o] = true;
+        }
+        add(instance_bounds(scene.instances[i], object_bounds[o]), Scene::Kind::Instance, i);
+    }
     return out;
 }
 

@@ -8,6 +8,11 @@ Features scene_features(const Scene& scene) {
     f.planes = !scene.planes.empty();
     f.triangles = !scene.triangles.empty();
     f.boxes = !scene.boxes.empty();
+    for (const std::shared_ptr<PreparedScene>& object : scene.objects) {  // what instances show
+        f.spheres |= !object->spheres.empty();
+        f.triangles |= !object->triangles.empty();
+        f.boxes |= !object->boxes.empty();
+    }
     auto nonzero = [](const Color& c) { return c.r > 0 || c.g > 0 || c.b > 0; };
     for (const Material& m : scene.materials) {
         f.ambient |= nonzero(m.ambient) && nonzero(scene.ambient_light);
@@ -45,9 +50,13 @@ Features scene_features(const Scene& scene) {
     f.area_lights = !scene.area_lights.empty();
     f.depth_of_field =
         scene.sampling.aperture > 0 && scene.camera.projection == Projection::Perspective;
-    for (const MovingSphere& m : scene.moving_spheres)
-        f.motion_blur |=
-            m.velocity != Vec3(0) && scene.sampling.shutter_close > scene.sampling.shutter_open;
+    auto moves = [&](const Scene& s) {
+        for (const MovingSphere& m : s.moving_spheres)
+            f.motion_blur |=
+                m.velocity != Vec3(0) && scene.sampling.shutter_close > scene.sampling.shutter_open;
+    };
+    moves(scene);
+    for (const std::shared_ptr<PreparedScene>& object : scene.objects) moves(*object);
     for (const Material& m : scene.materials) f.glossy |= m.fuzz > 0 && nonzero(m.reflective);
     f.ambient_occlusion = scene.sampling.indirect == IndirectLight::Occlusion && f.ambient;
     f.indirect_diffuse = scene.sampling.indirect == IndirectLight::Diffuse;

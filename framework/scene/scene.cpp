@@ -17,6 +17,8 @@ bool Scene::is_primitive(int id) const {
             return index < triangles.size();
         case Kind::Box:
             return index < boxes.size();
+        case Kind::Instance:
+            return index < instances.size();
     }
     return false;  // a kind this scene does not know
 }
@@ -25,6 +27,9 @@ std::size_t Scene::primitive_rank(int id) const {
     std::size_t index = 0;
     std::size_t offset = 0;
     switch (primitive_kind(id, index)) {
+        case Kind::Instance:
+            offset += boxes.size();
+            [[fallthrough]];
         case Kind::Box:
             offset += triangles.size();
             [[fallthrough]];
@@ -54,7 +59,7 @@ const std::string& Scene::material_name(int m) const {
 }
 
 std::size_t Scene::primitive_count() const {
-    return spheres.size() + planes.size() + triangles.size() + boxes.size();
+    return spheres.size() + planes.size() + triangles.size() + boxes.size() + instances.size();
 }
 
 int Scene::add_texture_image(int width, int height, const std::vector<Color>& pixels) {

@@ -137,6 +137,21 @@ static_assert(std::is_trivially_copyable_v<Sphere> && std::is_trivially_copyable
               std::is_trivially_copyable_v<Box> && std::is_trivially_copyable_v<Triangle> &&
               std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Light>);
 
+// A placement of one of Scene::objects (docs/scene-format.md#transforms-and-instances): the
+// object's surfaces seen through an affine map. A ray meets it as world_to_object maps the ray
+// into the object's space (the same t: the map is affine); normals go back by the inverse
+// transpose, transpose(world_to_object). Made by the loader for a surface of "type": "instance",
+// and for a rotated box or a non-uniformly scaled sphere (shapes a transform does not keep).
+using Mat4 = glm::mat<4, 4, Real>;
+struct Instance {
+    Mat4 object_to_world{1};
+    Mat4 world_to_object{1};
+    std::size_t object = 0;  // index into Scene::objects
+    int material = -1;       // >= 0: every hit on it has this material; -1: the object's own
+};
+
+struct PreparedScene;  // scene/prepared_scene.h
+
 enum class RenderMode { Directions, Normals, Depth, PrimitiveId, Shaded, BvhVisits };
 inline constexpr int kRenderModeCount = int(RenderMode::BvhVisits) + 1;
 
@@ -192,11 +207,20 @@ struct Scene {
     // Stage 08: what rays that hit nothing see when it is more than `background`. Its images are
     // entries of texture_images, stored linear (8-bit files decoded from sRGB on loading).
     Environment environment;
+    // Named objects and their instances (docs/scene-format.md#transforms-and-instances). Each
+    // object is a scene of its own (its surfaces only, in its own space; its materials index
+    // this scene's table), prepared once: with the stage 06 BVH when this scene has one, so the
+    // student's tree is the bottom level and this scene's tree, over the instances' boxes, the
+    // top level. Objects are shared between copies of a scene; prepare_scene gives each
+    // prepared scene objects of its own. Not on the GPU (gpu::pack_scene refuses instances).
+    std::vector<Instance> instances;
+    std::vector<std::shared_ptr<PreparedScene>> objects;
+    std::vector<std::string> object_names;  // parallel to `objects`; "" for a shape's own
 
     // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding
     // a kind renumbers nothing (and a shader decodes an id with a shift and a mask). Ids of one
     // kind are ordered by index and kinds in this order, so sorting ids sorts as before.
-    enum class Kind { Sphere, Plane, Triangle, Box };
+    enum class Kind { Sphere, Plane, Triangle, Box, Instance };
     static constexpr int kKindShift = 28;
     static constexpr std::size_t kMaxPrimitivesOfAKind = std::size_t(1) << kKindShift;
     static constexpr int primitive_id(Kind kind, std::size_t index) {
@@ -218,8 +242,8 @@ struct Scene {
     int add_material(const Material& material, std::string name = "");
     // The name of material `m`, or "" (unnamed, or out of range).
     const std::string& material_name(int m) const;
-    // The position of `id` when every primitive is listed spheres first, then planes, triangles
-    // and boxes: the number debug colours are made from (the primitive-id view).
+    // The position of `id` when every primitive is listed spheres first, then planes, triangles,
+    // boxes and instances: the number debug colours are made from (the primitive-id view).
     std::size_t primitive_rank(int id) const;
 
     // Sphere i as a ray of time `time` meets it: moved along its velocity when it is one of the

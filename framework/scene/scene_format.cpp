@@ -25,8 +25,9 @@ using Order = std::vector<std::string>;
 
 // Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
 // a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",        "image",    "render",    "background", "environment", "fog",
-                      "ambient_light", "textures", "materials", "surfaces",   "lights"};
+const Order kTopLevel{"camera",      "image",   "render",        "background",
+                      "environment", "fog",     "ambient_light", "textures",
+                      "materials",   "objects", "surfaces",      "lights"};
 const Order kCamera{"projection",  "eye",      "look_at",        "up",     "fov",
                     "view_height", "aperture", "focus_distance", "shutter"};
 const Order kImage{"width", "height"};
@@ -40,10 +41,12 @@ const Order kTexture{"name",   "image", "checker",     "checker_3d",  "marble",
                      "filter", "wrap",  "color_space", "colour_space"};
 const Order kTextureSlot{"texture", "scale", "offset"};
 const Order kProcedural{"a", "b", "scale"};
-const Order kSurface{"type",   "center",     "radius",      "velocity",  "point",
-                     "normal", "vertices",   "min",         "max",       "tiles",
-                     "file",   "procedural", "heightfield", "triangles", "seed",
-                     "scale",  "translate",  "material",    "materials"};
+const Order kSurface{"type",        "center",    "radius",   "velocity", "point",     "normal",
+                     "vertices",    "min",       "max",      "tiles",    "file",      "procedural",
+                     "heightfield", "triangles", "seed",     "scale",    "translate", "object",
+                     "transform",   "material",  "materials"};
+const Order kObject{"name", "surfaces"};
+const Order kRotation{"axis", "degrees"};
 const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
 const Order kFog{"density", "albedo", "min", "max"};
 const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
@@ -74,15 +77,19 @@ std::string number_text(const json& v) {
 }
 
 // The key order of an object nested under `key` (texture slots, procedural textures, the
-// environment's "cube" faces).
+// environment's "cube" faces, a transform step's "rotate"), or of the objects in an array under
+// `key` (an object's "surfaces"). A transform step has one key, so needs no order.
 const Order& order_of_member(const std::string& key) {
     if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
+    if (key == "surfaces") return kSurface;
+    if (key == "rotate") return kRotation;
     if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
     if (key == "cube") return kCubeFaces;
     return kNone;
 }
 
-// A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself.
+// A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself, or of
+// each object in it when `v` is an array.
 void write_inline(const json& v, const Order& order, std::string& out) {
     switch (v.type()) {
         case json::value_t::object: {
@@ -101,7 +108,7 @@ void write_inline(const json& v, const Order& order, std::string& out) {
             out += '[';
             for (std::size_t i = 0; i < v.size(); ++i) {
                 if (i > 0) out += ", ";
-                write_inline(v[i], kNone, out);
+                write_inline(v[i], order, out);
             }
             out += ']';
             break;
@@ -133,6 +140,7 @@ const Order& order_of_section(const std::string& key) {
 const Order& order_of_items(const std::string& key) {
     if (key == "textures") return kTexture;
     if (key == "materials") return kMaterial;
+    if (key == "objects") return kObject;
     if (key == "surfaces") return kSurface;
     if (key == "lights") return kLight;
     return kNone;

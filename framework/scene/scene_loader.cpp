@@ -20,7 +20,7 @@ Scene SceneSections::load() {
                    "wrap the scene in { ... }");
     check_keys(root, "", "the scene",
                {"camera", "image", "render", "background", "environment", "fog", "ambient_light",
-                "textures", "materials", "surfaces", "lights"});
+                "textures", "materials", "objects", "surfaces", "lights"});
     scene_.source = name_;
     read_image(root);
     read_render(root);
@@ -32,6 +32,7 @@ Scene SceneSections::load() {
     read_textures(root);
     read_materials(root);
     finish_textures();
+    read_objects(root);
     read_surfaces(root);
     read_lights(root);
     read_fog(root);

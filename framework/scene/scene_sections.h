@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -107,7 +108,23 @@ class SceneSections : public SceneReader {
                      MaterialOf material_of_triangle);
     void pad_shading_data();
 
+    // scene_transforms.cpp
+    // How many of each primitive there were before a surface was read.
+    struct GeometryMark {
+        std::size_t spheres, planes, boxes, vertices, triangles;
+    };
+    GeometryMark mark_geometry() const;
+    glm::dvec3 dvec3(const json& value, const std::string& pointer) const;
+    glm::dmat4 read_matrix(const json& rows, const std::string& pointer) const;
+    glm::dmat4 read_transform_step(const json& step, const std::string& pointer) const;
+    glm::dmat4 read_transform(const json& value, const std::string& pointer) const;
+    void place_surface(const glm::dmat4& m, const GeometryMark& mark, const std::string& pointer);
+    void add_shape_instance(Scene shape, const glm::dmat4& m, const std::string& pointer);
+    void read_instance(const json& s, const std::string& pointer);
+    void read_objects(const json& root);
+
     std::filesystem::path base_dir_;
+    std::optional<std::string> reading_object_;  // the object whose surfaces are being read
     Scene scene_;
     std::map<std::string, int> material_ids_;
     std::map<std::string, int> texture_ids_;

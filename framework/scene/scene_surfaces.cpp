@@ -33,18 +33,19 @@ void SceneSections::read_surface(const json& s, const std::string& pointer) {
     };
     static const Kind kinds[] = {
         {"sphere",
-         {"type", "center", "radius", "velocity", "material"},
+         {"type", "center", "radius", "velocity", "transform", "material"},
          &SceneSections::read_sphere},
-        {"plane", {"type", "point", "normal", "material"}, &SceneSections::read_plane},
-        {"triangle", {"type", "vertices", "material"}, &SceneSections::read_triangle},
-        {"box", {"type", "min", "max", "material"}, &SceneSections::read_box},
+        {"plane", {"type", "point", "normal", "transform", "material"}, &SceneSections::read_plane},
+        {"triangle", {"type", "vertices", "transform", "material"}, &SceneSections::read_triangle},
+        {"box", {"type", "min", "max", "transform", "material"}, &SceneSections::read_box},
         {"mesh",
          {"type", "file", "procedural", "heightfield", "triangles", "seed", "translate", "scale",
-          "material"},
+          "transform", "material"},
          &SceneSections::read_mesh},
         {"checkerboard",
-         {"type", "min", "max", "tiles", "materials"},
+         {"type", "min", "max", "tiles", "materials", "transform"},
          &SceneSections::read_checkerboard},
+        {"instance", {"type", "object", "transform", "material"}, &SceneSections::read_instance},
     };
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names;
@@ -54,8 +55,13 @@ void SceneSections::read_surface(const json& s, const std::string& pointer) {
     require_object(s, pointer, "{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}");
     const json& type_value = required(s, pointer, "type", "a surface", list_of(types));
     const Kind& kind = kinds[choice(type_value, JsonPositions::child(pointer, "type"), types)];
-    check_keys(s, pointer, std::string("a ") + kind.name, kind.keys);
+    check_keys(s, pointer, std::string(kind.name[0] == 'i' ? "an " : "a ") + kind.name, kind.keys);
+    const GeometryMark mark = mark_geometry();
     (this->*kind.read)(s, pointer);
+    const json* transform = member(s, "transform");
+    if (transform && kind.read != &SceneSections::read_instance)  // an instance keeps its own
+        place_surface(read_transform(*transform, JsonPositions::child(pointer, "transform")), mark,
+                      pointer);
 }
 
 void SceneSections::read_sphere(const json& s, const std::string& pointer) {
@@ -131,6 +137,11 @@ void SceneSections::check_corners(const Vec3& min, const Vec3& max, const std::s
 // it gets materials[(i + j) % 2]. Boxes are appended with i outer, j inner.
 void SceneSections::read_checkerboard(const json& s, const std::string& pointer) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    if (member(s, "transform"))
+        fail_key(at("transform"),
+                 "a checkerboard takes no \"transform\" (its tiles are boxes "
+                 "along the axes)",
+                 "give \"min\" and \"max\" where the board lies, or transform boxes one by one");
     const json& lo_value = required(s, pointer, "min", "a checkerboard", "[x, y, z]");
     const json& hi_value = required(s, pointer, "max", "a checkerboard", "[x, y, z]");
     const Vec3 lo = vec3(lo_value, at("min")), hi = vec3(hi_value, at("max"));

@@ -3,11 +3,33 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/transform.h"
+
 namespace rt {
 namespace {
 
 Vec3 abs3(const Vec3& v) {
     return glm::abs(v);
+}
+
+// A point of an instance: refined on its object's primitive, mapped to the world. The mapping
+// p = M q + m adds to q's error |M| e_q (1 + gamma(3)) and its own rounding gamma(3) (|M| |q| +
+// |m|) (pbrt-v4's Transform of a point with error).
+SurfacePoint instance_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+    const ObjectView view = object_view(scene, ray, hit);
+    const SurfacePoint local = surface_point(*view.object, view.ray, view.hit);
+    const Mat4& m = view.instance->object_to_world;
+    glm::mat<3, 3, Real> absolute(m);
+    for (int c = 0; c < 3; ++c) absolute[c] = abs3(absolute[c]);
+    SurfacePoint sp{.point = Vec3(m * glm::vec<4, Real>(local.point, 1)),
+                    .normal = hit.normal,
+                    .front_face = hit.front_face,
+                    .primitive = hit.primitive,
+                    .material = hit.material,
+                    .time = ray.time};
+    sp.error = (1 + gamma_bound(3)) * (absolute * local.error) +
+               gamma_bound(3) * (absolute * abs3(local.point) + abs3(Vec3(m[3])));
+    return sp;
 }
 
 }  // namespace
@@ -64,6 +86,8 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
             sp.error[axis] = 0;
             break;
         }
+        case Scene::Kind::Instance:
+            return instance_point(scene, ray, hit);
     }
     return sp;
 }

@@ -28,6 +28,17 @@ rt_cli_error_test(UnknownFlag "--bogus" render ${rt_cli_scene} -o ${PROJECT_BINA
 rt_cli_error_test(ZeroThreads "--threads" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --threads 0)
 rt_cli_error_test(HugeWidth "--width" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --width 100000)
 rt_cli_error_test(BadOutputExtension "x.bmpx" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.bmpx)
+# Instances (docs/scene-format.md#transforms-and-instances) have no GPU port: one line, no image.
+# (A scene without a BVH, so that a starter tree's stubbed build_bvh says nothing first.)
+rt_cli_error_test(ExportRefusesInstances "1 instance (of a named object, or a rotated box"
+                  export-shadertoy ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/rotated_box.json
+                  -o ${PROJECT_BINARY_DIR}/x.glsl)
+set(rt_instance_scene ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/instance_field.json)
+add_test(NAME Render.InstancesThreadCountIsBitIdentical
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${rt_instance_scene}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/determinism-instances
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_thread_determinism.cmake)
+set_tests_properties(Render.InstancesThreadCountIsBitIdentical PROPERTIES LABELS "render")
 rt_cli_error_test(OutputFolderMissing "no/such/dir/x.png" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/no/such/dir/x.png)
 # Stage 09 from the command line: a small GPU render says which context it used; what the port
 # cannot draw is one line.

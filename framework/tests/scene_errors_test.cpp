@@ -44,7 +44,7 @@ const BadScene kBadScenesTable[] = {
     {"07-number-written-as-string", 3, 55, R"("radius" must be a number, got the string "1")"},
     {"08-wrong-array-length", 3, 34, R"("center" must be an array of 3 numbers, got 2 numbers)"},
     {"09-unknown-surface-type", 3, 14,
-     R"(unknown "type" "cube"; use "sphere", "plane", "triangle", "box", "mesh" or "checkerboard")"},
+     R"(unknown "type" "cube"; use "sphere", "plane", "triangle", "box", "mesh", "checkerboard" or "instance")"},
     {"10-unknown-projection", 3, 19,
      R"(unknown "projection" "ortho"; did you mean "orthographic"? (allowed: "perspective" or "orthographic"))"},
     {"11-unknown-render-mode", 2, 22, R"(unknown "mode" "shade")"},

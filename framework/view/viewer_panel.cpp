@@ -43,10 +43,12 @@ std::string what_was_hit(const PreparedScene& scene, const RayNode& n) {
     if (!n.hit) return "miss (background)";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(n.hit_record.primitive, index);
-    static const char* const kinds[] = {"sphere", "plane", "triangle", "box"};
+    static const char* const kinds[] = {"sphere", "plane", "triangle", "box", "instance", "?",
+                                        "?",      "?",     "?",        "?",   "?",        "?",
+                                        "?",      "?",     "?",        "?"};
     char text[160];
     const std::string& material = scene.material_name(n.hit_record.material);
-    std::snprintf(text, sizeof text, "%s %zu, t %.3g, %s", kinds[int(kind) & 3], index,
+    std::snprintf(text, sizeof text, "%s %zu, t %.3g, %s", kinds[int(kind) & 15], index,
                   double(n.hit_record.t),
                   material.empty() ? ("material #" + std::to_string(n.hit_record.material)).c_str()
                                    : ("\"" + material + "\"").c_str());

@@ -133,6 +133,11 @@ int gpu_texture_lookup(const PreparedScene& scene) {
 
 void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
+    if (const std::size_t n = scene.instances.size(); n > 0)
+        throw GpuError(where + ": " + std::to_string(n) + (n == 1 ? " instance" : " instances") +
+                       " (of a named object, or a rotated box or non-uniformly scaled sphere): "
+                       "instances are not on the GPU yet; render it on the CPU (rt render "
+                       "without --gpu)");
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
                        ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
