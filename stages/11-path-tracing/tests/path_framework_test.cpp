@@ -9,22 +9,13 @@
 #include "scene/area_light_hit.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
+#include "testing/scene_text.h"
 
 namespace rt {
 namespace {
 
-PreparedScene scene_of(const std::string& body) {
-    return prepare_scene(parse_scene("{" + body + "}", "s.json", "."));
-}
-
-std::string error_of(const std::string& body) {
-    try {
-        scene_of(body);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using testing::error_of;
+using testing::scene_of;
 
 TEST(PathScenes, KeysReachTheSceneAndFeatures) {
     const PreparedScene plain = scene_of(R"("render": {"mode": "shaded"})");
@@ -48,12 +39,7 @@ TEST(PathScenes, BadInputIsOneLineNamingPlaceAndFix) {
         {R"("materials": [{"roughness": 1.5}])", "\"roughness\" must be between 0 and 1"},
         {R"("materials": [{"roughness": -0.1}])", "\"roughness\" must be between 0 and 1"},
     };
-    for (auto [body, expected] : cases) {
-        const std::string message = error_of(body);
-        EXPECT_NE(message.find(expected), std::string::npos) << body << "\n  gave: " << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-        EXPECT_NE(message.find("; "), std::string::npos) << "no fix named: " << message;
-    }
+    testing::expect_scene_errors(cases);
 }
 
 TEST(PathScenes, CanonicalFormOrdersTheNewKeys) {
