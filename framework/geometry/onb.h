@@ -14,6 +14,10 @@ struct Onb {
 
     // The world direction of `local` (x along t, y along b, z along n).
     Vec3 to_world(const Vec3& local) const { return local.x * t + local.y * b + local.z * n; }
+    // The local coordinates of the world direction `world` (stage 11's shading frames).
+    Vec3 to_local(const Vec3& world) const {
+        return Vec3(glm::dot(world, t), glm::dot(world, b), glm::dot(world, n));
+    }
 };
 
 inline Onb onb_around(const Vec3& n) {

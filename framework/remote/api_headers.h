@@ -24,3 +24,4 @@
 #include "stage_api/stage07.h"
 #include "stage_api/stage08.h"
 #include "stage_api/stage10.h"
+#include "stage_api/stage11.h"

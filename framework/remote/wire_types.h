@@ -21,6 +21,7 @@
 #include "stage_api/stage03.h"
 #include "stage_api/stage05.h"
 #include "stage_api/stage10.h"
+#include "stage_api/stage11.h"
 
 namespace rt::remote {
 
@@ -48,6 +49,7 @@ RT_WIRE_BOOLS(Hit, v.front_face)
 RT_WIRE_BOOLS(SurfacePoint, v.front_face)
 RT_WIRE_BOOLS(SecondaryRays, v.reflected.valid, v.refracted.valid, v.total_internal_reflection)
 RT_WIRE_BOOLS(FogEvent, v.scattered)
+RT_WIRE_BOOLS(BsdfSample, v.delta)
 #undef RT_WIRE_BOOLS
 template <class T>
 requires kBytesWithBools<T>

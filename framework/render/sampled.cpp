@@ -1,28 +1,10 @@
 #include "render/sampled.h"
 
-#include <limits>
-
-#include "core/split_mix64.h"
 #include "render/camera_ray.h"
 #include "render/shade.h"
 #include "stage_api/stage10.h"
 
 namespace rt {
-namespace {
-
-// As many random bits as Real holds exactly (24 for float, 32 for double), so next() < 1.
-constexpr int kBits =
-    std::numeric_limits<Real>::digits < 32 ? std::numeric_limits<Real>::digits : 32;
-
-}  // namespace
-
-// SplitMix64's hash spreads neighbouring pixel indices over the generator's state.
-SampleStream::SampleStream(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample)
-    : rng_(SplitMix64::hash(seed ^ SplitMix64::hash(pixel)), sample) {}
-
-Real SampleStream::next() {
-    return Real(rng_() >> (32 - kBits)) * (Real(1) / Real(std::uint64_t(1) << kBits));
-}
 
 Color sample_pixel(const PreparedScene& scene, int x, int y, int sample, TraceObserver* observer) {
     const SamplingSettings& settings = scene.sampling;

@@ -11,24 +11,10 @@
 
 #include <cstdint>
 
-#include <pcg_random.hpp>
-
+#include "core/sample_stream.h"
 #include "scene/prepared_scene.h"
 
 namespace rt {
-
-class SampleStream {
-  public:
-    SampleStream(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample);
-    Real next();  // uniform in [0, 1)
-    Vec2 next2() {
-        const Real a = next();
-        return Vec2(a, next());
-    }
-
-  private:
-    pcg32 rng_;
-};
 
 class TraceObserver;  // render/shade.h
 

@@ -13,6 +13,7 @@
 #include "stage_api/stage04.h"
 #include "stage_api/stage05.h"
 #include "stage_api/stage10.h"
+#include "stage_api/stage11.h"
 
 namespace rt {
 namespace {
@@ -386,6 +387,8 @@ Color trace_ray(const PreparedScene& scene, const Ray& ray, int depth, RayNode* 
 
 Color trace_sample(const PreparedScene& scene, const Ray& ray, SampleStream& stream,
                    TraceObserver* observer) {
+    // Stage 11: a path-traced scene's samples are path_radiance's (no ray tree for the debugger).
+    if (scene.features.path_tracing) return path_radiance(scene, ray, stream);
     return trace(scene, ray, 0, Color(1), observer, nullptr, &stream);
 }
 

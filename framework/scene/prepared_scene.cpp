@@ -61,6 +61,7 @@ Features scene_features(const Scene& scene) {
     f.ambient_occlusion = scene.sampling.indirect == IndirectLight::Occlusion && f.ambient;
     f.indirect_diffuse = scene.sampling.indirect == IndirectLight::Diffuse;
     f.fog = scene.fog.density > 0;
+    f.path_tracing = scene.sampling.integrator == Integrator::Path;
     return f;
 }
 
@@ -96,6 +97,7 @@ std::string Features::describe() const {
         add(depth_of_field, "depth-of-field"), add(motion_blur, "motion-blur");
         add(glossy, "glossy"), add(ambient_occlusion, "ambient-occlusion");
         add(indirect_diffuse, "indirect-diffuse"), add(fog, "fog");
+        add(path_tracing, "path-tracing");
     }
     return s;
 }

@@ -30,10 +30,12 @@ struct Features {
     bool area_lights = false, depth_of_field = false, motion_blur = false, glossy = false;
     bool ambient_occlusion = false, indirect_diffuse = false;
     bool fog = false;  // a medium of density > 0 (optional part of stage 10)
+    // Stage 11: "integrator": "path"; every camera sample is path_radiance's (stage_api/stage11.h)
+    bool path_tracing = false;
 
     bool sampled() const {
         return antialiasing || area_lights || depth_of_field || motion_blur || glossy ||
-               ambient_occlusion || indirect_diffuse || fog;
+               ambient_occlusion || indirect_diffuse || fog || path_tracing;
     }
 
     std::string describe() const;  // e.g. "spheres planes | diffuse specular | point"

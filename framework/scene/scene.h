@@ -61,6 +61,9 @@ struct Material {
     // Stage 10: glossy reflection; 0 is a perfect mirror. The reflected direction is perturbed
     // by fuzz times a random unit vector (docs/conventions.md#sampling).
     float fuzz = 0;
+    // Stage 11 (path tracing): the GGX roughness of the specular lobe, alpha = roughness^2; 0 is
+    // a perfect mirror (docs/conventions.md#path-tracing). Only the path tracer reads it.
+    float roughness = 0;
 };
 
 enum class LightKind { Point, Directional };
@@ -100,6 +103,9 @@ enum class PixelFilter { Box, Tent };
 // How the ambient term k_a I_a is computed: as it is, scaled by Monte Carlo ambient occlusion,
 // or replaced by a one-bounce Monte Carlo estimate of diffuse indirect light (stage 10).
 enum class IndirectLight { Ambient, Occlusion, Diffuse };
+// What computes a camera sample's radiance: stage 05's recursive ray tracer with stage 10's
+// sampled terms, or stage 11's path tracer (path_radiance, stage_api/stage11.h).
+enum class Integrator { Whitted, Path };
 
 // Stage 10's settings (docs/scene-format.md#sampling). The defaults are the renderer of
 // stages 01-09: one ray through each pixel centre, a pinhole, no shutter interval.
@@ -112,6 +118,7 @@ struct SamplingSettings {
     Real shutter_open = 0, shutter_close = 0;
     IndirectLight indirect = IndirectLight::Ambient;
     Real occlusion_distance = kInfinity;  // ambient occlusion: farther blockers do not count
+    Integrator integrator = Integrator::Whitted;  // stage 11: "path" path-traces every sample
 };
 
 // Stage 10 (optional): fog, a homogeneous participating medium (docs/scene-format.md#fog). Light

@@ -31,12 +31,12 @@ const Order kTopLevel{"camera",      "image",   "render",        "background",
 const Order kCamera{"projection",  "eye",      "look_at",        "up",     "fov",
                     "view_height", "aperture", "focus_distance", "shutter"};
 const Order kImage{"width", "height"};
-const Order kRender{"mode",        "max_depth",         "shadows", "fresnel",
-                    "accelerator", "samples_per_pixel", "seed",    "filter",
-                    "indirect",    "occlusion_distance"};
-const Order kMaterial{"name",        "ambient",      "diffuse",      "specular",  "emissive",
-                      "shininess",   "reflective",   "transmissive", "ior",       "fuzz",
-                      "diffuse_map", "specular_map", "emissive_map", "normal_map"};
+const Order kRender{"mode",        "max_depth",          "shadows",   "fresnel",
+                    "accelerator", "samples_per_pixel",  "seed",      "filter",
+                    "indirect",    "occlusion_distance", "integrator"};
+const Order kMaterial{"name",      "ambient",     "diffuse",      "specular",     "emissive",
+                      "shininess", "reflective",  "transmissive", "ior",          "fuzz",
+                      "roughness", "diffuse_map", "specular_map", "emissive_map", "normal_map"};
 const Order kTexture{"name",   "image", "checker",     "checker_3d",  "marble",
                      "filter", "wrap",  "color_space", "colour_space"};
 const Order kTextureSlot{"texture", "scale", "offset"};

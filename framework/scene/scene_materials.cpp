@@ -20,8 +20,8 @@ void SceneSections::read_material(const json& object, const std::string& pointer
     require_object(object, pointer, "{\"name\": \"red\", \"diffuse\": [0.8, 0.1, 0.1]}");
     check_keys(object, pointer, "a material",
                {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
-                "transmissive", "ior", "fuzz", "diffuse_map", "specular_map", "emissive_map",
-                "normal_map"});
+                "transmissive", "ior", "fuzz", "roughness", "diffuse_map", "specular_map",
+                "emissive_map", "normal_map"});
     Material m;
     std::string name;
     if (const json* v = member(object, "name")) {
@@ -61,6 +61,11 @@ void SceneSections::read_material(const json& object, const std::string& pointer
         m.fuzz = float(real_in(
             *v, JsonPositions::child(pointer, "fuzz"), [](double d) { return d >= 0 && d <= 1; },
             "between 0 and 1", "0 is a mirror, 0.3 brushed metal"));
+    if (const json* v = member(object, "roughness"))
+        m.roughness = float(real_in(
+            *v, JsonPositions::child(pointer, "roughness"),
+            [](double d) { return d >= 0 && d <= 1; }, "between 0 and 1",
+            "0 is a mirror, 0.2 polished, 0.6 rough (path tracing, stage 11)"));
     struct SlotField {
         const char* key;
         TextureSlot Material::*slot;

@@ -49,7 +49,7 @@ void SceneSections::read_render(const json& root) {
     require_object(*render, "/render", "{\"mode\": \"shaded\", \"max_depth\": 5}");
     check_keys(*render, "/render", "\"render\"",
                {"mode", "max_depth", "shadows", "fresnel", "accelerator", "samples_per_pixel",
-                "seed", "filter", "indirect", "occlusion_distance"});
+                "seed", "filter", "indirect", "occlusion_distance", "integrator"});
     if (const json* v = member(*render, "mode")) {
         static const std::vector<std::string> modes = render_mode_names();
         scene_.mode = RenderMode(choice(*v, "/render/mode", modes));
@@ -110,6 +110,10 @@ void SceneSections::read_sampling(const json& render) {
         s.occlusion_distance = real_in(
             *v, "/render/occlusion_distance", [](double d) { return d > 0; }, "> 0",
             "blockers farther than this do not occlude");
+    if (const json* v = member(render, "integrator"))
+        s.integrator = choice(*v, "/render/integrator", {"whitted", "path"}) == 0
+                           ? Integrator::Whitted
+                           : Integrator::Path;
 }
 
 void SceneSections::read_camera(const json& root) {

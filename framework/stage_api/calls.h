@@ -88,6 +88,20 @@
     X(FogEvent, sample_fog, (const Medium& medium, const Ray& ray, Real t_max, Real u), (medium, ray, t_max, u)) \
     X(Color, indirect_diffuse, (const SurfacePoint& at, const Vec3& normal, const Material& material, Vec2 u, const IncomingRadiance& incoming), (at, normal, material, u, incoming))
 
+#define RT_STAGE11_CALLS(X) \
+    X(Real, ggx_d, (const Vec3& h, Real alpha), (h, alpha)) \
+    X(Real, ggx_g1, (const Vec3& v, const Vec3& h, Real alpha), (v, h, alpha)) \
+    X(Vec3, sample_ggx_normal, (Real alpha, Vec2 u), (alpha, u)) \
+    X(Real, ggx_normal_pdf, (const Vec3& h, Real alpha), (h, alpha)) \
+    X(Color, schlick_fresnel, (const Color& f0, Real cos_theta), (f0, cos_theta)) \
+    X(BsdfSample, sample_bsdf, (const Material& material, const Vec3& wo, Real u_lobe, Vec2 u), (material, wo, u_lobe, u)) \
+    X(Color, eval_bsdf, (const Material& material, const Vec3& wo, const Vec3& wi), (material, wo, wi)) \
+    X(Real, bsdf_pdf, (const Material& material, const Vec3& wo, const Vec3& wi), (material, wo, wi)) \
+    X(Real, balance_heuristic, (Real pdf_f, Real pdf_g), (pdf_f, pdf_g)) \
+    X(Real, power_heuristic, (Real pdf_f, Real pdf_g), (pdf_f, pdf_g)) \
+    X(Color, sample_light_mis, (const PreparedScene& scene, const SurfacePoint& at, const Onb& frame, const Material& material, const Vec3& wo, Real u_light, Vec2 u), (scene, at, frame, material, wo, u_light, u)) \
+    X(Color, path_radiance, (const PreparedScene& scene, const Ray& ray, SampleStream& stream), (scene, ray, stream))
+
 // The framework functions of render/ that call student code and that tests call: each crosses
 // as one call (a whole render, a whole BVH build), never as one call per ray.
 #define RT_RENDER_CALLS(X) \
@@ -116,5 +130,5 @@
 #define RT_ALL_CALLS(X) \
     RT_STAGE01_CALLS(X) RT_STAGE02_CALLS(X) RT_STAGE03_CALLS(X) RT_STAGE04_CALLS(X) \
     RT_STAGE05_CALLS(X) RT_STAGE06_CALLS(X) RT_STAGE07_CALLS(X) RT_STAGE08_CALLS(X) \
-    RT_STAGE10_CALLS(X) RT_RENDER_CALLS(X)
+    RT_STAGE10_CALLS(X) RT_STAGE11_CALLS(X) RT_RENDER_CALLS(X)
 // clang-format on

@@ -11,22 +11,13 @@
 #include "render/sampled.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
+#include "testing/scene_text.h"
 
 namespace rt {
 namespace {
 
-PreparedScene scene_of(const std::string& body) {
-    return prepare_scene(parse_scene("{" + body + "}", "s.json", "."));
-}
-
-std::string error_of(const std::string& body) {
-    try {
-        scene_of(body);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using testing::error_of;
+using testing::scene_of;
 
 TEST(SamplingScenes, KeysReachTheScene) {
     const PreparedScene s = scene_of(R"(
@@ -84,12 +75,7 @@ TEST(SamplingScenes, BadInputIsOneLineNamingPlaceAndFix) {
         {R"("fog": {"density": 1}, "lights": [{"type": "sphere", "center": [0, 3, 0], "radius": 0.5}])",
          "fog and area lights together are not supported"},
     };
-    for (auto [body, expected] : cases) {
-        const std::string message = error_of(body);
-        EXPECT_NE(message.find(expected), std::string::npos) << body << "\n  gave: " << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-        EXPECT_NE(message.find("; "), std::string::npos) << "no fix named: " << message;
-    }
+    testing::expect_scene_errors(cases);
 }
 
 // The optional fog: its keys, Features (so scenes without fog never call its code), the box.

@@ -1,0 +1,255 @@
+// Stage 11 tests of bsdf.cpp: the GGX distribution integrates to 1, each sampling routine
+// against its own pdf (chi-square, sphere_bins.h), the pdf integrates to 1 (or to less, the
+// mass of the samples that fail), sample weights are f cos / pdf, the GGX lobe's energy (a
+// white furnace for one surface), and the mirror and glass as delta lobes. statistics.h (stage
+// 10) states the false-failure rates.
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
+#include "remote/call_each.h"
+#include "sphere_bins.h"
+#include "stage_api/stage05.h"
+#include "stage_api/stage11.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+using stats::kPi;
+using stats::kSamples;
+
+Vec3 direction(double theta, double phi = 0.3) {
+    return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                Real(std::cos(theta)));
+}
+
+Material diffuse(Color kd) {
+    Material m;
+    m.diffuse = kd;
+    return m;
+}
+
+Material glossy(Color f0, float roughness, Color kd = Color(0)) {
+    Material m;
+    m.diffuse = kd, m.specular = f0, m.roughness = roughness;
+    return m;
+}
+
+std::string describe(const Material& m, const Vec3& wo) {
+    std::ostringstream s;
+    s << "diffuse " << m.diffuse.r << ", specular " << m.specular.r << ", roughness " << m.roughness
+      << ", wo.z " << wo.z;
+    return s.str();
+}
+
+RT_TEST_SUITE(GgxDistribution);
+
+TEST_F(GgxDistribution, ProjectedAreaIntegratesToOne) {
+    // The integral of D(h) cos theta_h over the hemisphere: the microfacets' projected area is
+    // the macro surface's. A midpoint rule in theta, fine enough for alpha = 0.04.
+    for (double roughness : {0.2, 0.4, 0.7, 1.0}) {
+        const Real alpha = Real(roughness * roughness);
+        constexpr int kSteps = 200000;
+        double total = 0;
+        const double dtheta = kPi / 2 / kSteps;
+        for (int i = 0; i < kSteps; ++i) {
+            const double theta = (i + 0.5) * dtheta;
+            total += ggx_d(direction(theta), alpha) * std::cos(theta) * std::sin(theta) * dtheta;
+        }
+        EXPECT_NEAR(2 * kPi * total, 1, 2e-3)
+            << "the integral of D(h) cos(theta_h) is not 1 for alpha " << alpha
+            << ": is the pi or the square in the denominator missing?";
+        EXPECT_EQ(ggx_d(Vec3(0, 0, -1), alpha), 0) << "D is 0 below the horizon";
+    }
+}
+
+TEST_F(GgxDistribution, NormalSamplesFollowTheirPdf) {
+    for (double roughness : {0.4, 0.8}) {
+        const Real alpha = Real(roughness * roughness);
+        stats::Uniform random(21 + std::uint64_t(roughness * 10));
+        const auto normals = testing::call_for<&sample_ggx_normal>(
+            kSamples, [&](int) { return std::tuple(alpha, random.next2()); });
+        stats::SphereBins bins;
+        for (const Vec3& h : normals) {
+            ASSERT_NEAR(glm::length(h), 1, 1e-4) << "a normal that is not unit";
+            bins.add(h);
+        }
+        double total = 0;
+        const auto expected = stats::SphereBins::expected(
+            [&](const Vec3& h) { return ggx_normal_pdf(h, alpha); }, kSamples, total);
+        EXPECT_NEAR(total, 1, 3e-3) << "ggx_normal_pdf does not integrate to 1 (alpha " << alpha
+                                    << "): it is D(h) cos(theta_h)";
+        stats::expect_chi_square(bins.observed, expected,
+                                 "sample_ggx_normal, alpha " + std::to_string(alpha));
+    }
+}
+
+TEST_F(GgxDistribution, SchlickFresnel) {
+    EXPECT_NEAR(schlick_fresnel(Color(0.04f), 1).r, 0.04, 1e-6) << "F(cos 1) = f0";
+    EXPECT_NEAR(schlick_fresnel(Color(0.04f), 0).g, 1, 1e-6) << "F(cos 0) = 1 (grazing)";
+    EXPECT_NEAR(schlick_fresnel(Color(0.5f), 0.5f).b, 0.5 + 0.5 / 32, 1e-6);
+}
+
+// sample_bsdf's directions against bsdf_pdf (chi-square), bsdf_pdf's integral, and each
+// sample's pdf and weight against bsdf_pdf and eval_bsdf.
+void check_sampling(const Material& m, const Vec3& wo, std::uint64_t seed) {
+    const std::string what = "sample_bsdf (" + describe(m, wo) + ")";
+    stats::Uniform random(seed);
+    const auto samples = testing::call_for<&sample_bsdf>(kSamples, [&](int) {
+        const Real u_lobe = random.next();
+        return std::tuple(m, wo, u_lobe, random.next2());
+    });
+    stats::SphereBins bins;
+    int checked = 0;
+    for (const BsdfSample& s : samples) {
+        if (s.weight == Color(0)) {
+            bins.add_failed();
+            continue;
+        }
+        ASSERT_FALSE(s.delta) << what << ": a delta sample from a material without one";
+        ASSERT_NEAR(glm::length(s.wi), 1, 1e-4) << what << ": wi is not unit";
+        ASSERT_GT(s.wi.z * wo.z, 0) << what << ": an opaque surface reflects to wo's side";
+        bins.add(s.wi);
+        if (checked++ >= 200) continue;
+        const Real pdf = bsdf_pdf(m, wo, s.wi);
+        ASSERT_NEAR(s.pdf, pdf, 1e-3 * pdf) << what << ": its pdf is not bsdf_pdf(wo, wi)";
+        const Color expected = eval_bsdf(m, wo, s.wi) * float(std::abs(s.wi.z) / pdf);
+        ASSERT_NEAR(s.weight.r, expected.r, 2e-3 * expected.r + 1e-6)
+            << what << ": the weight is not f(wo, wi) |cos theta_i| / pdf (weight " << s.weight.r
+            << ", f cos / pdf " << expected.r << ", f / pdf " << expected.r / std::abs(s.wi.z)
+            << "): a missing cosine?";
+    }
+    double total = 0;
+    const auto expected = stats::SphereBins::expected(
+        [&](const Vec3& wi) { return bsdf_pdf(m, wo, wi); }, kSamples, total);
+    EXPECT_LE(total, 1.003)
+        << what << ": bsdf_pdf integrates to " << total << " over the sphere, more than 1: a "
+        << "pdf in the wrong measure? The half vector's density D(h) cos(theta_h) is not wi's: "
+        << "divide it by 4 |wo.h| (the Jacobian of reflection)";
+    EXPECT_GE(total, 0.5) << what << ": bsdf_pdf integrates to only " << total;
+    stats::expect_chi_square(bins.observed, expected, what);
+}
+
+RT_TEST_SUITE(BsdfSampling);
+
+TEST_F(BsdfSampling, DiffuseSamplesFollowTheirPdf) {
+    check_sampling(diffuse(Color(0.7f)), direction(0.5), 31);
+    check_sampling(diffuse(Color(0.7f)), -direction(0.2), 32);  // seen from behind
+}
+
+TEST_F(BsdfSampling, GgxSamplesFollowTheirPdf) {
+    check_sampling(glossy(Color(1), 0.5f), direction(0), 33);
+    check_sampling(glossy(Color(0.9f), 0.6f), direction(1.1), 34);
+    check_sampling(glossy(Color(0.8f), 0.8f), -direction(0.7), 35);
+}
+
+TEST_F(BsdfSampling, MixtureSamplesFollowTheirPdf) {
+    check_sampling(glossy(Color(0.3f), 0.5f, Color(0.5f)), direction(0.4), 36);
+    check_sampling(glossy(Color(0.5f), 0.7f, Color(0.2f)), direction(1.2), 37);
+}
+
+TEST_F(BsdfSampling, PdfIntegratesToOneForRoughLobes) {
+    // Roughness 0.3 at normal incidence: the reflected direction falls below the horizon only
+    // when theta_h > 45 degrees, with probability alpha^2 / (1 + alpha^2) < 1%, so the pdf's
+    // integral is close to 1; a pdf of half vectors used for wi integrates to about 4.
+    const Material m = glossy(Color(1), 0.3f);
+    double total = 0;
+    stats::SphereBins::expected([&](const Vec3& wi) { return bsdf_pdf(m, direction(0), wi); }, 1,
+                                total);
+    EXPECT_NEAR(total, 1, 0.015) << "bsdf_pdf integrates to " << total << ", not 1: a pdf in the "
+                                 << "wrong measure? Divide the half vector's density by 4 |wo.h|";
+}
+
+RT_TEST_SUITE(GgxEnergy);
+
+// The directional albedo, the integral of f cos over wi, as the mean of sample weights.
+stats::Estimate albedo(const Material& m, const Vec3& wo, std::uint64_t seed) {
+    stats::Uniform random(seed);
+    const auto samples = testing::call_for<&sample_bsdf>(kSamples, [&](int) {
+        const Real u_lobe = random.next();
+        return std::tuple(m, wo, u_lobe, random.next2());
+    });
+    std::vector<double> values;
+    for (const BsdfSample& s : samples) values.push_back(s.weight.g);
+    return stats::estimate(values);
+}
+
+TEST_F(GgxEnergy, WhiteFurnaceNeverGainsEnergy) {
+    // F0 = 1: a white microfacet surface. Single-scattering GGX loses the light that bounces
+    // between microfacets (with the separable G, 69% at roughness 1 and normal incidence: the
+    // albedo is 0.307 by quadrature), but never adds: the albedo is at most 1 (within 3.9
+    // standard errors), and above 0.25.
+    for (float roughness : {0.1f, 0.3f, 0.6f, 1.0f})
+        for (double theta : {0.0, 1.0, 1.4}) {
+            const stats::Estimate e =
+                albedo(glossy(Color(1), roughness), direction(theta), 41 + std::uint64_t(theta));
+            EXPECT_LE(e.mean, 1 + stats::kMaxT * e.standard_error + 1e-4)
+                << "a white GGX lobe reflects " << e.mean << " of the light (roughness "
+                << roughness << ", theta_o " << theta << "): more than came in";
+            EXPECT_GE(e.mean, 0.25) << "a white GGX lobe reflects only " << e.mean << " (roughness "
+                                    << roughness << ", theta_o " << theta << ")";
+        }
+}
+
+TEST_F(GgxEnergy, SmoothWhiteLobeKeepsNearlyAll) {
+    // Tolerance: at roughness <= 0.3 and theta_o <= 60 degrees single scattering loses less
+    // than 3% (the separable Smith G); a missing G1 or a wrong 4 in f's denominator does not.
+    for (float roughness : {0.1f, 0.3f})
+        for (double theta : {0.0, 1.0}) {
+            const stats::Estimate e =
+                albedo(glossy(Color(1), roughness), direction(theta), 51 + std::uint64_t(theta));
+            EXPECT_NEAR(e.mean, 1, 0.03 + stats::kMaxT * e.standard_error)
+                << "a smooth white GGX lobe reflects " << e.mean << " (roughness " << roughness
+                << ", theta_o " << theta << "), not about 1";
+        }
+}
+
+RT_TEST_SUITE(DeltaLobes);
+
+TEST_F(DeltaLobes, MirrorReflectsAboutTheNormal) {
+    Material mirror;
+    mirror.diffuse = Color(0), mirror.reflective = Color(0.9f);
+    const Vec3 wo = direction(0.7);
+    const BsdfSample s = sample_bsdf(mirror, wo, 0.5f, Vec2(0.3f, 0.6f));
+    EXPECT_TRUE(s.delta) << "a roughness-0 specular lobe is a perfect mirror (a delta lobe)";
+    EXPECT_NEAR(glm::length(s.wi - Vec3(-wo.x, -wo.y, wo.z)), 0, 1e-5) << "the mirror direction";
+    EXPECT_NEAR(s.weight.r, schlick_fresnel(Color(0.9f), wo.z).r, 1e-4)
+        << "a mirror reflects F(cos theta_o) (Schlick, F0 = reflective)";
+    EXPECT_EQ(eval_bsdf(mirror, wo, s.wi), Color(0)) << "eval_bsdf leaves delta lobes out";
+    EXPECT_EQ(bsdf_pdf(mirror, wo, s.wi), 0) << "bsdf_pdf leaves delta lobes out";
+}
+
+TEST_F(DeltaLobes, GlassReflectsWithTheFresnelProbability) {
+    Material glass;
+    glass.diffuse = Color(0), glass.transmissive = Color(1), glass.ior = 1.5f;
+    for (double theta : {0.3, 1.2}) {
+        for (double sign : {1.0, -1.0}) {  // entering, leaving
+            const Vec3 wo = direction(theta) * Real(sign);
+            int reflected = 0;
+            stats::Uniform random(61);
+            for (int i = 0; i < 20000; ++i) {
+                const BsdfSample s = sample_bsdf(glass, wo, random.next(), random.next2());
+                ASSERT_TRUE(s.delta) << "glass is a delta lobe";
+                ASSERT_NEAR(glm::length(s.wi), 1, 1e-4);
+                if (s.wi.z * wo.z > 0) {
+                    ++reflected;
+                    continue;
+                }
+                const Real n1 = sign > 0 ? 1 : 1.5f, n2 = sign > 0 ? 1.5f : 1;
+                const Real sin_o = std::sqrt(1 - wo.z * wo.z),
+                           sin_i = std::sqrt(1 - s.wi.z * s.wi.z);
+                ASSERT_NEAR(n1 * sin_o, n2 * sin_i, 1e-4) << "Snell's law";
+            }
+            const double expected =
+                schlick_reflectance(std::abs(wo.z), sign > 0 ? 1 : 1.5, sign > 0 ? 1.5 : 1);
+            const double p = double(reflected) / 20000;
+            EXPECT_NEAR(p, expected, 3.9 * std::sqrt(expected * (1 - expected) / 20000) + 1e-4)
+                << "glass reflects with probability F (Schlick), theta " << theta << ", "
+                << (sign > 0 ? "entering" : "leaving");
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt

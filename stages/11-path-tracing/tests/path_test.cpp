@@ -1,0 +1,153 @@
+// Stage 11 tests of path.cpp: MIS weights sum to 1; white furnaces (closed white spheres whose
+// radiance is known in closed form) for emission, Russian roulette and next-event estimation
+// with MIS; and the direct light of a rectangle against stage 10's estimator (t-test). Each
+// test names the mistake it is built to catch. statistics.h (stage 10): false-failure rates.
+#include <cmath>
+#include <tuple>
+
+#include "remote/call_each.h"
+#include "render/prepare.h"
+#include "sphere_bins.h"
+#include "stage_api/stage10.h"
+#include "stage_api/stage11.h"
+#include "testing/stage_test.h"
+
+namespace rt {
+namespace {
+
+using stats::kSamples;
+
+RT_TEST_SUITE(Mis);
+
+TEST_F(Mis, WeightsSumToOne) {
+    stats::Uniform random(71);
+    for (int i = 0; i < 1000; ++i) {
+        const Real a = random.next() * 10, b = random.next() * random.next() * 100;
+        EXPECT_NEAR(balance_heuristic(a, b) + balance_heuristic(b, a), 1, 1e-5)
+            << "balance heuristic, pdfs " << a << " and " << b;
+        EXPECT_NEAR(power_heuristic(a, b) + power_heuristic(b, a), 1, 1e-5)
+            << "power heuristic, pdfs " << a << " and " << b;
+    }
+    EXPECT_NEAR(balance_heuristic(3, 1), 0.75, 1e-6) << "pdf_f / (pdf_f + pdf_g)";
+    EXPECT_NEAR(power_heuristic(3, 1), 0.9, 1e-6) << "pdf_f^2 / (pdf_f^2 + pdf_g^2)";
+    EXPECT_EQ(power_heuristic(2, 0), 1) << "the other technique cannot make this sample";
+    EXPECT_EQ(power_heuristic(0, 0), 0) << "no technique makes it: 0, not NaN";
+    EXPECT_EQ(balance_heuristic(0, 0), 0) << "no technique makes it: 0, not NaN";
+}
+
+// A closed sphere of radius 1 about the origin, white Lambertian (albedo `albedo`) inside,
+// emitting `emitted`; paths of up to 64 bounces.
+PreparedScene furnace(float albedo, float emitted) {
+    PreparedScene scene;
+    Material wall;
+    wall.diffuse = Color(albedo), wall.emissive = Color(emitted);
+    scene.add_material(wall);
+    scene.spheres.push_back(Sphere{Vec3(0), 1, 0});
+    scene.max_depth = 64;
+    scene.sampling.integrator = Integrator::Path;
+    refresh_features(scene);
+    return scene;
+}
+
+// path_radiance along rays from `origin` in directions uniform over the upper hemisphere.
+std::vector<double> radiance(const PreparedScene& scene, const Vec3& origin, std::uint64_t seed,
+                             int count = kSamples) {
+    stats::Uniform random(seed);
+    const auto colors = testing::call_for<&path_radiance>(count, [&](int i) {
+        Vec2 u = random.next2();
+        const Real z = u.x, r = std::sqrt(1 - z * z), phi = 2 * Real(stats::kPi) * u.y;
+        const Ray ray{origin, Vec3(r * std::cos(phi), r * std::sin(phi), z)};
+        return std::tuple(std::cref(scene), ray, SampleStream(seed, 0, std::uint64_t(i)));
+    });
+    std::vector<double> values;
+    for (const Color& c : colors) values.push_back(c.g);
+    return values;
+}
+
+RT_TEST_SUITE(Furnace);
+
+TEST_F(Furnace, EmittingWhiteSphereMatchesTheGeometricSeries) {
+    // Every wall point emits Le and reflects the fraction a of what it receives, the same
+    // radiance L from everywhere: L = Le + a L, L = Le / (1 - a). At a = 0.8 most paths meet
+    // Russian roulette; if survivors are not divided by their chance, the sphere comes out dark.
+    const PreparedScene scene = furnace(0.8f, 1);
+    const stats::Estimate e = stats::estimate(radiance(scene, Vec3(0.1f, -0.2f, 0.3f), 81));
+    const double expected = 1 / (1 - 0.8);
+    EXPECT_LE(std::abs(e.mean - expected), stats::kMaxT * e.standard_error + 1e-3)
+        << "the white furnace's radiance is " << e.mean << " (standard error " << e.standard_error
+        << "), expected Le / (1 - a) = " << expected
+        << (e.mean < expected ? ": too dark. Russian roulette without the division? A path "
+                                "that survives with probability q must carry throughput / q"
+                              : ": too bright. Emission counted more than once per vertex?");
+}
+
+TEST_F(Furnace, SphereLightInsideAWhiteSphereMatchesTheClosedForm) {
+    // A sphere light (radius r = 0.3, radiance Le) at the centre of a white sphere (radius 1,
+    // albedo a): by symmetry every wall point has the same radiance L, and its irradiance is
+    // pi Le s from the light (s = r^2, the light's cap) and pi L (1 - s) from the rest of the
+    // wall: L = a Le s / (1 - a (1 - s)). The light is reached by light sampling and by BSDF
+    // bounces: counted by both without MIS weights, the wall is too bright.
+    PreparedScene scene = furnace(0.5f, 0);
+    AreaLight light;
+    light.kind = AreaLightKind::Sphere, light.center = Vec3(0), light.radius = 0.3f;
+    light.radiance = Color(10);
+    scene.area_lights.push_back(light);
+    refresh_features(scene);
+    const double s = 0.09, expected = 0.5 * 10 * s / (1 - 0.5 * (1 - s));
+    const stats::Estimate e = stats::estimate(radiance(scene, Vec3(0, 0, 0.6f), 82));
+    EXPECT_LE(std::abs(e.mean - expected), stats::kMaxT * e.standard_error + 1e-3)
+        << "the wall's radiance is " << e.mean << " (standard error " << e.standard_error
+        << "), expected a Le s / (1 - a (1 - s)) = " << expected
+        << (e.mean > expected ? ": too bright. Emission double-counted? A light that next-event "
+                                "estimation samples must be weighted (MIS) when a BSDF bounce "
+                                "hits it too, and the two weights must sum to 1"
+                              : ": too dark. A light missed, a MIS weight too small, or roulette "
+                                "without the division?");
+}
+
+RT_TEST_SUITE(DirectLight);
+
+TEST_F(DirectLight, AgreesWithStage10AreaLightEstimate) {
+    // A white Lambertian floor and a rectangle light off to the side, tilted: at the point seen
+    // its light arrives at about 60 degrees from the normal, so the cosine matters. One bounce
+    // (max_depth 1): the path tracer's estimate of the reflected radiance and stage 10's
+    // area_light_estimate (k_d / pi L cos / pdf, light sampling only) have the same mean.
+    PreparedScene scene;
+    Material floor;
+    floor.diffuse = Color(0.6f), floor.specular = Color(0);
+    scene.add_material(floor);
+    scene.planes.push_back(Plane{Vec3(0), Vec3(0, 1, 0), 0});
+    AreaLight light;
+    light.corner = Vec3(1.5f, 1.5f, -0.5f), light.edge_u = Vec3(0.5f, -0.5f, 0);
+    light.edge_v = Vec3(0, 0, 1), light.radiance = Color(5);  // lit side faces -x -y
+    scene.area_lights.push_back(light);
+    scene.max_depth = 1;
+    scene.sampling.integrator = Integrator::Path;
+    refresh_features(scene);
+    SurfacePoint at;
+    at.point = Vec3(0), at.normal = Vec3(0, 1, 0), at.error = Vec3(0);
+    stats::Uniform random(91);
+    const auto stage10 = testing::call_for<&area_light_estimate>(kSamples, [&](int) {
+        return std::tuple(std::cref(scene), floor, at, at.normal, at.normal, light, random.next2());
+    });
+    std::vector<double> reference;
+    for (const Color& c : stage10) reference.push_back(c.r);
+    const auto paths = testing::call_for<&path_radiance>(kSamples, [&](int i) {
+        const Ray ray{Vec3(0, 1, 1), glm::normalize(Vec3(0, -1, -1))};
+        return std::tuple(std::cref(scene), ray, SampleStream(92, 0, std::uint64_t(i)));
+    });
+    std::vector<double> values;
+    for (const Color& c : paths) values.push_back(c.r);
+    const stats::Estimate a = stats::estimate(values), b = stats::estimate(reference);
+    const double se = std::hypot(a.standard_error, b.standard_error);
+    ASSERT_GT(b.mean, 0.05) << "the floor sees the lit side of the light";
+    EXPECT_LE(std::abs(a.mean - b.mean), stats::kMaxT * se + 1e-4)
+        << "path_radiance's direct light is " << a.mean << ", stage 10's estimate " << b.mean
+        << " (standard error of the difference " << se << ")"
+        << (a.mean > b.mean ? ": too bright. A missing cosine (f L |cos theta_i| / pdf) or "
+                              "light counted twice?"
+                            : ": too dark. A MIS weight too small, or a pdf not divided by?");
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,54 @@
+// Stage 11's histograms of directions (Nori's warptest): the sphere cut into bins of theta and
+// phi, the expected count of each bin the integral of a density over it (a midpoint rule on
+// sub-cells), and one more bin for the samples that fail (weight 0: absorbed), expected to hold
+// the mass the density leaves out. statistics.h (stage 10) does the chi-square test.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../../10-sampling/tests/statistics.h"
+
+namespace rt::stats {
+
+struct SphereBins {
+    static constexpr int kTheta = 40, kPhi = 24, kSub = 8;
+    std::vector<double> observed = std::vector<double>(kTheta * kPhi + 1, 0);
+
+    static std::size_t bin(const Vec3& d) {
+        const double theta = std::acos(std::clamp(double(d.z), -1.0, 1.0));
+        double phi = std::atan2(double(d.y), double(d.x));
+        if (phi < 0) phi += 2 * kPi;
+        const int i = std::clamp(int(theta / kPi * kTheta), 0, kTheta - 1);
+        const int j = std::clamp(int(phi / (2 * kPi) * kPhi), 0, kPhi - 1);
+        return std::size_t(i * kPhi + j);
+    }
+    void add(const Vec3& d) { observed[bin(d)] += 1; }
+    void add_failed() { observed.back() += 1; }
+
+    // The integral of `pdf` over each bin, times `samples`; the last bin gets what is left of 1.
+    // `total` receives the integral over the sphere.
+    static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, int samples,
+                                        double& total) {
+        std::vector<double> e(kTheta * kPhi + 1, 0);
+        const double dtheta = kPi / (kTheta * kSub), dphi = 2 * kPi / (kPhi * kSub);
+        total = 0;
+        for (int i = 0; i < kTheta * kSub; ++i) {
+            const double theta = (i + 0.5) * dtheta;
+            for (int j = 0; j < kPhi * kSub; ++j) {
+                const double phi = (j + 0.5) * dphi;
+                const Vec3 d(Real(std::sin(theta) * std::cos(phi)),
+                             Real(std::sin(theta) * std::sin(phi)), Real(std::cos(theta)));
+                const double mass = pdf(d) * std::sin(theta) * dtheta * dphi;
+                e[std::size_t((i / kSub) * kPhi + j / kSub)] += samples * mass;
+                total += mass;
+            }
+        }
+        e.back() = std::max(0.0, samples * (1 - total));
+        return e;
+    }
+};
+
+}  // namespace rt::stats
