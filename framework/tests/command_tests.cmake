@@ -149,7 +149,7 @@ set_tests_properties(Web.ExportMatchesCpu PROPERTIES LABELS "web;render" TIMEOUT
 # own 160x120), so at 80x60 (about 40 s) and a test of its own, started early.
 add_test(NAME Web.SampledExportMatchesCpu
   COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
-          -DOUT=${PROJECT_BINARY_DIR}/test-output/web-sampled -DSTAGES=10 -DSIZE=80x60
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/web-sampled -DSTAGES=1[01] -DSIZE=80x60
           -P ${PROJECT_SOURCE_DIR}/cmake/check_web_export.cmake)
 set_tests_properties(Web.SampledExportMatchesCpu PROPERTIES LABELS "web;render" TIMEOUT 600
   COST 50000 SKIP_REGULAR_EXPRESSION "SKIPPED: ")

@@ -148,6 +148,10 @@ void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
         throw GpuError(where +
                        ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
                        "port; use nearest or bilinear, or render it without --gpu");
+    if (mode == RenderMode::Shaded && scene.features.path_tracing)
+        throw GpuError(where +
+                       ": path tracing (stage 11, \"integrator\": \"path\") is not on the GPU "
+                       "yet; render it without --gpu");
     if (mode == RenderMode::Shaded && scene.features.fog)
         throw GpuError(where +
                        ": fog (stage 10's optional homogeneous medium) has no GPU port; render "
