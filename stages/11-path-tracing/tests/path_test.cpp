@@ -151,3 +151,47 @@ TEST_F(DirectLight, AgreesWithStage10AreaLightEstimate) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+TEST_F(DirectLight, NextEventEstimationLightsTheFloorAndSkipsAMirror) {
+    // sample_light_mis alone: on a white floor under a rectangle light its estimates are finite,
+    // never negative, and some are lit; for a perfect mirror (a delta lobe) it is 0, since light
+    // sampling cannot hit a delta direction.
+    PreparedScene scene;
+    Material floor, mirror;
+    floor.diffuse = Color(0.6f), floor.specular = Color(0);
+    mirror.diffuse = Color(0), mirror.reflective = Color(1), mirror.roughness = 0;
+    scene.add_material(floor);
+    scene.planes.push_back(Plane{Vec3(0), Vec3(0, 1, 0), 0});
+    AreaLight light;
+    light.corner = Vec3(-0.5f, 2, -0.5f), light.edge_u = Vec3(1, 0, 0);
+    light.edge_v = Vec3(0, 0, 1), light.radiance = Color(5);  // lit side faces down
+    scene.area_lights.push_back(light);
+    scene.sampling.integrator = Integrator::Path;
+    refresh_features(scene);
+    SurfacePoint at;
+    at.point = Vec3(0), at.normal = Vec3(0, 1, 0), at.error = Vec3(0);
+    const Onb frame = onb_around(at.normal);
+    const Vec3 wo = frame.to_local(glm::normalize(Vec3(0, 1, 1)));
+    stats::Uniform random(93);
+    for (int k = 0; k < 2; ++k) {
+        const Material& m = k == 0 ? floor : mirror;
+        const auto estimates = testing::call_for<&sample_light_mis>(256, [&](int) {
+            return std::tuple(std::cref(scene), at, frame, m, wo, random.next(), random.next2());
+        });
+        int lit = 0;
+        for (const Color& c : estimates) {
+            ASSERT_TRUE(std::isfinite(c.r) && c.r >= 0) << "an estimate of " << c.r;
+            lit += c.r > 0;
+        }
+        if (k == 0)
+            EXPECT_GT(lit, 200) << "the floor under the light is lit by " << lit << " of 256";
+        else
+            EXPECT_EQ(lit, 0) << "a mirror's delta lobe cannot be reached by light sampling";
+    }
+}
+
+}  // namespace
+}  // namespace rt
