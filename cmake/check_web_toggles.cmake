@@ -1,6 +1,7 @@
 # Web.TogglesMatchCpu (docs/viewer.md#lecture-demos-in-a-browser): the switches of rt export-web's
 # panel change the image as the same switches of rt view do. Each scene's page is opened in
-# headless Chromium (SwiftShader's WebGL2) by tools/web/render_pages.js, which clicks each switch
+# headless Chromium (SwiftShader's WebGL2) by tools/web/render_pages.js from a static web server
+# (--http; Web.ExportMatchesCpu opens its pages from file://), which clicks each switch
 # (checkbox #toggle-NAME), writes the frame it draws and clicks it back (which must draw the first
 # frame again). Each such frame must match `rt render` with the same switch (--off TERM, --shadows,
 # --fresnel: what rt view's panel changes, render/prepare.h's switch_off_terms) under stage 09's
@@ -27,7 +28,8 @@ set(CASES
   "04-shadows/scenes/cornell_box.json|emissive|--off emissive"
   "04-shadows/scenes/cornell_box.json|shadows|--shadows off"
   "04-shadows/scenes/cornell_box.json|moves|camera"
-  "04-shadows/scenes/cornell_box.json|ortho|camera")
+  "04-shadows/scenes/cornell_box.json|ortho|camera"
+  "08-environment/scenes/sky.json|environment|--off environment")
 
 find_program(NODE_EXE NAMES node nodejs)
 if(NOT NODE_EXE)
@@ -79,7 +81,7 @@ foreach(name ${names})
   list(JOIN switches_${name} "," list)
   list(APPEND pages "${OUT}/pages/${name}.html@${list}")
 endforeach()
-execute_process(COMMAND ${NODE_EXE} ${SOURCE}/tools/web/render_pages.js ${OUT}/frames ${pages}
+execute_process(COMMAND ${NODE_EXE} ${SOURCE}/tools/web/render_pages.js --http ${OUT}/frames ${pages}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(out MATCHES "SKIPPED: ")

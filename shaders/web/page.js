@@ -116,11 +116,17 @@
     const index = (settings.shadows ? 2 : 0) + (settings.refraction ? 1 : 0);
     gl.uniform1i(at('scene_features'), panel.feature_bits[settings.mode][index]);
     let off = 0;
-    panel.terms.forEach((term, i) => { if (!settings[term] && i < 6) off |= 1 << i; });
+    panel.terms.forEach((term, i) => { if (!settings[term]) off |= 1 << i; });
     gl.uniform1i(at('rt_terms_off'), off);
   }
 
-  function draw() {
+  // Draws the frame and calls done(ms) when it is complete: at once for one sample a pixel; for
+  // stage 10's, batch by batch, one an animation frame, showing the mean so far (a newer draw
+  // drops an older one's remaining batches), as rt view refines a sampled scene.
+  let generation = 0;
+  function draw(done) {
+    const t0 = performance.now();
+    const mine = ++generation;
     gl.useProgram(program);
     const at = (name) => gl.getUniformLocation(program, name);
     const camera = view.camera();
@@ -132,33 +138,53 @@
     setSettingUniforms(at);
     gl.viewport(0, 0, data.width, data.height);
     const mode = panel.modes.find((m) => m.name === settings.mode);
+    const finish = () => {
+      // Wait for the GPU (one pixel read back), so that the time is the frame's.
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+      done(performance.now() - t0);
+    };
     if (!samples || mode.value !== panel.shaded) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
+      finish();
       return;
     }
-    samples.draw((first, count) => {  // stage 10: the camera samples, a few a draw
-      gl.useProgram(program);
-      gl.uniform1i(at('sample_first'), first);
-      gl.uniform1i(at('sample_count'), count);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-    });
+    samples.begin();
+    const batch = () => {
+      if (mine !== generation) return;
+      try {
+        const complete = samples.step((first, count) => {
+          gl.useProgram(program);
+          gl.uniform1i(at('sample_first'), first);
+          gl.uniform1i(at('sample_count'), count);
+          gl.drawArrays(gl.TRIANGLES, 0, 3);
+        });
+        if (complete) return finish();
+        frameTime.textContent = samples.drawn + ' of ' + samples.total + ' samples a pixel...';
+        requestAnimationFrame(batch);
+      } catch (e) {
+        fail('rt export-web: ' + e.message);
+      }
+    };
+    batch();
   }
 
-  // A frame drawn and waited for (one pixel read back), its time shown as rt view's HUD does.
+  // The frame time, as rt view's HUD shows it; a WebGL error goes to the console.
   let frames = 0;
-  function redraw() {
-    if (!program) return;
-    const t0 = performance.now();
-    draw();
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
-    const ms = performance.now() - t0;
+  function showFrameTime(ms) {
     const error = gl.getError();
     if (error !== gl.NO_ERROR) console.error('rt export-web: WebGL error 0x' + error.toString(16));
     ++frames;
     frameTime.textContent = 'frame ' + frames + ': ' + ms.toFixed(1) + ' ms (' +
-      (1000 / Math.max(ms, 0.1)).toFixed(1) + ' fps), ' + data.width + 'x' + data.height +
-      ' on ' + renderer;
-    if (controls) controls.drawn();
+      (1000 / Math.max(ms, 0.1)).toFixed(1) + ' fps)' +
+      (samples ? ', ' + samples.total + ' samples a pixel' : '') + ', ' + data.width + 'x' +
+      data.height + ' on ' + renderer;
+  }
+  function redraw() {
+    if (!program) return;
+    draw((ms) => {
+      showFrameTime(ms);
+      if (controls) controls.drawn();
+    });
   }
 
   // Each stub a pixel reached (alpha < 255 holds its number), once, as rt render reports them.
@@ -205,18 +231,19 @@
       program = link();
       uploadDataTextures(program);
       if (samples) samples.attach(program);
-      draw();
-      const first = readFrame(true);
-      window.__rtPixels = first.url;
-      const ms = Math.round(performance.now() - t0);
-      status.textContent = 'First frame ' + data.width + 'x' + data.height + ' in ' + ms +
-        ' ms (compile and draw) on ' + renderer +
-        (first.stubs ? '; magenta pixels reached stubs (see the console)' : '') + '.';
-      controls = rtControls({ data: data, settings: settings, view: view, redraw: redraw,
-        readFrame: readFrame, live: live, scale: scale, status: status,
-        changed: () => settingsChanged() || view.changed() });
-      redraw();
-      window.__rtDone = { ok: true, renderer: renderer, ms: ms };
+      draw((drawMs) => {  // the first frame, every sample in, for the test
+        const first = readFrame(true);
+        window.__rtPixels = first.url;
+        const ms = Math.round(performance.now() - t0);
+        status.textContent = 'First frame ' + data.width + 'x' + data.height + ' in ' + ms +
+          ' ms (compile and draw) on ' + renderer +
+          (first.stubs ? '; magenta pixels reached stubs (see the console)' : '') + '.';
+        controls = rtControls({ data: data, settings: settings, view: view, redraw: redraw,
+          readFrame: readFrame, live: live, scale: scale, status: status,
+          changed: () => settingsChanged() || view.changed() });
+        showFrameTime(drawMs);
+        window.__rtDone = { ok: true, renderer: renderer, ms: ms };
+      });
     } catch (e) {
       fail('rt export-web: ' + e.message);
     }

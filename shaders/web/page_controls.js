@@ -53,8 +53,8 @@ function rtControls(ctx) {
     checkbox(row3, 'reflection', 'reflection');
     checkbox(row3, 'refraction', 'refraction');
     checkbox(row3, 'fresnel', 'Fresnel');
-    checkbox(row3, 'environment', 'environment', true, panel.has_environment
-      ? 'the page cannot switch the environment' : 'this scene has no environment');
+    checkbox(row3, 'environment', 'environment', !panel.has_environment,
+      panel.has_environment ? '' : 'this scene has no environment');
   }
 
   // --- The keys and buttons of rt view ---

@@ -54,28 +54,37 @@ function rtSamples(gl, data, vertexShader, compile) {
     attach(program) {
       gl.uniformBlockBinding(program, gl.getUniformBlockIndex(program, 'SampledScene'), 0);
     },
-    // Every camera sample of every pixel, `drawSamples(first, count)` drawing a batch of them into
-    // the bound framebuffer; then the mean on the canvas.
-    draw(drawSamples) {
+    // The progressive display: begin() empties the sums; each step(drawSamples) draws one batch
+    // of camera samples (`drawSamples(first, count)` into the bound framebuffer), shows the mean
+    // of all drawn so far on the canvas and says whether every sample is in.
+    total: sampled.samples_per_pixel,
+    drawn: 0,
+    begin() {
+      this.drawn = 0;
       gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-      gl.viewport(0, 0, data.width, data.height);
       gl.clearColor(0, 0, 0, 1);
       gl.clear(gl.COLOR_BUFFER_BIT);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    },
+    step(drawSamples) {
+      const count = Math.min(sampled.samples_per_frame, this.total - this.drawn);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+      gl.viewport(0, 0, data.width, data.height);
       gl.enable(gl.BLEND);
       gl.blendEquationSeparate(gl.FUNC_ADD, gl.MIN);
       gl.blendFunc(gl.ONE, gl.ONE);
-      const total = sampled.samples_per_pixel;
-      for (let first = 0; first < total; first += sampled.samples_per_frame)
-        drawSamples(first, Math.min(sampled.samples_per_frame, total - first));
+      drawSamples(this.drawn, count);
+      this.drawn += count;
       gl.disable(gl.BLEND);
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       gl.useProgram(mean);
       gl.activeTexture(gl.TEXTURE0 + 15);
       gl.bindTexture(gl.TEXTURE_2D, sums);
       gl.uniform1i(gl.getUniformLocation(mean, 'sums'), 15);
-      gl.uniform1f(gl.getUniformLocation(mean, 'count'), total);
+      gl.uniform1f(gl.getUniformLocation(mean, 'count'), this.drawn);
       gl.viewport(0, 0, data.width, data.height);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
+      return this.drawn >= this.total;
     },
   };
 }

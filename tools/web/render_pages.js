@@ -1,7 +1,9 @@
 // Opens pages written by `rt export-web` in headless Chromium (SwiftShader's WebGL2) and writes
 // each page's first frame, as the page read it back with readPixels (window.__rtPixels), to
 // OUT/NAME.png; the comparison with the CPU render is rt compare's (cmake/check_web_export.cmake).
-//   node render_pages.js OUT PAGE.html[@ACTION,...]...
+//   node render_pages.js [--http] OUT PAGE.html[@ACTION,...]...
+// With --http the pages are opened from a plain static web server on 127.0.0.1 (serveFiles), as
+// a lecturer's course web site would serve them, rather than from file://.
 // With @ACTION,...: after the first frame, each switch of the page's panel named (its checkbox
 // #toggle-ACTION: specular, shadows, ...) is clicked, the frame it draws written to
 // OUT/NAME.ACTION.png (cmake/check_web_toggles.cmake compares it with rt render's), and clicked
@@ -14,6 +16,7 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
+const http = require('http');
 const puppeteer = require('puppeteer-core');
 
 const kChromium = process.env.RT_CHROMIUM || '/usr/bin/chromium';
@@ -93,7 +96,24 @@ async function runActions(page, name, actions, out) {
   return problems;
 }
 
-async function renderPage(browser, argument, out) {
+// A static web server of the given files (GET by name, text/html, nothing else: 404), on a free
+// port of 127.0.0.1; resolves to the server and its base URL.
+function serveFiles(files) {
+  const byName = new Map(files.map((f) => [encodeURIComponent(path.basename(f)), f]));
+  const server = http.createServer((request, response) => {
+    const file = byName.get(request.url.slice(1));
+    if (request.method !== 'GET' || !file) {
+      response.writeHead(404);
+      return response.end();
+    }
+    response.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' });
+    response.end(fs.readFileSync(file));
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1',
+    () => resolve({ server: server, base: 'http://127.0.0.1:' + server.address().port + '/' })));
+}
+
+async function renderPage(browser, argument, out, base) {
   const [file, switchList] = argument.split('@');
   const switches = switchList ? switchList.split(',') : [];
   const problems = [];
@@ -102,7 +122,7 @@ async function renderPage(browser, argument, out) {
   page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
   page.on('pageerror', (e) => problems.push('uncaught: ' + e.message));
   // Self-contained: the page's own file and data: URLs only.
-  const own = 'file://' + path.resolve(file);
+  const own = base ? base + encodeURIComponent(path.basename(file)) : 'file://' + path.resolve(file);
   page.on('request', (r) => {
     if (r.url() !== own && !r.url().startsWith('data:')) problems.push('fetches ' + r.url());
   });
@@ -130,8 +150,12 @@ async function renderPage(browser, argument, out) {
 }
 
 async function main() {
-  const [out, ...files] = process.argv.slice(2);
-  if (!out || files.length === 0) throw new Error('usage: node render_pages.js OUT PAGE.html...');
+  const args = process.argv.slice(2);
+  const overHttp = args[0] === '--http';
+  const [out, ...files] = overHttp ? args.slice(1) : args;
+  if (!out || files.length === 0)
+    throw new Error('usage: node render_pages.js [--http] OUT PAGE.html...');
+  const served = overHttp ? await serveFiles(files.map((f) => f.split('@')[0])) : null;
   fs.mkdirSync(out, { recursive: true });
   const browser = await puppeteer.launch({
     executablePath: kChromium,
@@ -141,7 +165,7 @@ async function main() {
   let failed = 0;
   try {
     for (const file of files) {
-      const r = await renderPage(browser, file, out);
+      const r = await renderPage(browser, file, out, served && served.base);
       if (r.skip) { console.log(r.skip); return 0; }
       const verdict = r.problems.length ? 'FAILED' : 'drawn';
       console.log(`${r.name}: ${verdict} in ${r.seconds} s on ${r.renderer}`);
@@ -150,6 +174,7 @@ async function main() {
     }
   } finally {
     await browser.close();
+    if (served) served.server.close();
   }
   return failed ? 1 : 0;
 }

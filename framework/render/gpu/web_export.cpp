@@ -63,9 +63,10 @@ void to_uniform(std::string& text, const std::string& baked, const std::string& 
     text.replace(at + 1, text.find('\n', at + 1) - at - 1, replacement);
 }
 
-// The page's switches of rt view's terms (kTermNames' first six, bit i the i-th): main zeroes
-// those coefficients in every material before the pixel is traced, as rt view zeroes them in the
-// scene (render/prepare.h's switch_off_terms). The materials lose their `const` for it.
+// The page's switches of rt view's terms (kTermNames, bit i the i-th): main zeroes those
+// coefficients in every material, or makes the environment none, before the pixel is traced, as
+// rt view does to the scene (render/prepare.h's switch_off_terms). The materials and the
+// environment lose their `const` for it.
 const char* const kApplyTerms =
     "\n// rt export-web's switches (bit i: kTermNames[i] off), as rt view's panel zeroes them.\n"
     "uniform int rt_terms_off;\n"
@@ -78,6 +79,7 @@ const char* const kApplyTerms =
     "        if ((rt_terms_off & 16) != 0) materials[i].reflective.rgb = vec3(0.0);\n"
     "        if ((rt_terms_off & 32) != 0) materials[i].transmissive_ior.rgb = vec3(0.0);\n"
     "    }\n"
+    "    if ((rt_terms_off & 64) != 0) environment[0].kind_image.x = kEnvironmentNone;\n"
     "}\n";
 
 // The export with what the page changes as uniforms of the same names: the camera (orbit, pan,
@@ -90,11 +92,13 @@ std::string page_shader_text(const ShadertoyExport& shader) {
     to_uniform(text, "const int render_mode = ", "uniform int render_mode;");
     to_uniform(text, "const int max_depth = ", "uniform int max_depth;");
     to_uniform(text, "const int scene_features = ", "uniform int scene_features;");
-    const std::string materials = "\nconst Material materials[";
-    const std::size_t at = text.find(materials);
-    if (at == std::string::npos)
-        throw GpuError("rt: error: the Shadertoy export bakes no materials");
-    text.erase(at + 1, 6);  // "const "
+    for (const char* array : {"\nconst Material materials[", "\nconst Environment environment["}) {
+        const std::size_t at = text.find(array);
+        if (at == std::string::npos)
+            throw GpuError(std::string("rt: error: the Shadertoy export bakes no \"") +
+                           (array + 7) + "\"");
+        text.erase(at + 1, 6);  // "const "
+    }
     const std::string call = "    mainImage(rt_frag_color";
     const std::size_t main_at = text.rfind("\nout vec4 rt_frag_color;");
     const std::size_t call_at = text.rfind(call);
