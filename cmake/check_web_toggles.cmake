@@ -23,6 +23,7 @@ set(CASES
   "05-recursion/scenes/whitted.json|reflection|--off reflection"
   "05-recursion/scenes/whitted.json|refraction|--off refraction"
   "05-recursion/scenes/whitted.json|fresnel|--fresnel on"
+  "05-recursion/scenes/whitted.json|mode-depth|--mode depth"
   "04-shadows/scenes/cornell_box.json|reference|"
   "04-shadows/scenes/cornell_box.json|ambient|--off ambient"
   "04-shadows/scenes/cornell_box.json|emissive|--off emissive"

@@ -54,6 +54,12 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 #endif
     // Shadertoy's fragCoord has y up; the camera's image points have y down.
     vec4 result = trace_pixel(vec2(fragCoord.x, iResolution.y - fragCoord.y));
+    if (render_mode == kModeDepth || render_mode == kModeBvhVisits) {
+        // rt export-web's page only (Shadertoy's export refuses these modes): the hit distance
+        // or node count into a float image, mapped by the image's range (shaders/web/page_ranges.js).
+        fragColor = vec4(result.a, 0.0, 0.0, 1.0);
+        return;
+    }
     vec3 c = result.rgb;
     if (render_mode == kModeShaded) c = vec3(rt_encode_srgb(c.r), rt_encode_srgb(c.g), rt_encode_srgb(c.b));
     fragColor = vec4(c, 1.0);  // the debug modes' values are display values already

@@ -105,6 +105,7 @@
   // --- Drawing ---
   let program = null;
   let samples = null;  // stage 10's accumulation (page_samples.js), for a sampled scene
+  const ranges = rtRanges(gl, data, kVertexShader, compile);  // depth, bvh_visits (page_ranges.js)
   // What the settings make of the shader's uniforms: web_export.cpp's feature bits per mode,
   // shadows and refraction (as gpu_feature_bits gives them), the switched-off terms as bits.
   function setSettingUniforms(at) {
@@ -143,6 +144,11 @@
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
       done(performance.now() - t0);
     };
+    if (mode.name === 'depth' || mode.name === 'bvh_visits') {
+      ranges.draw(() => gl.drawArrays(gl.TRIANGLES, 0, 3), mode.name === 'bvh_visits');
+      finish();
+      return;
+    }
     if (!samples || mode.value !== panel.shaded) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       finish();

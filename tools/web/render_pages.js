@@ -8,8 +8,9 @@
 // #toggle-ACTION: specular, shadows, ...) is clicked, the frame it draws written to
 // OUT/NAME.ACTION.png (cmake/check_web_toggles.cmake compares it with rt render's), and clicked
 // again, which must draw the first frame exactly; `moves` and `ortho` move the camera with the
-// mouse (and P) and write the frame and the camera W shows; `reference` checks the CPU render
-// button's difference and the frame time (runActions).
+// mouse (and P) and write the frame and the camera W shows; `mode-NAME` chooses that mode in the
+// panel's menu; `reference` checks the CPU render button's difference and the frame time
+// (runActions).
 // A console error, an uncaught exception, a WebGL error or any request beyond the page's own
 // file fails the page (exit 1). A browser
 // without WebGL2 prints one "SKIPPED: ..." line naming its renderer and exits 0.
@@ -74,6 +75,19 @@ async function checkReference(page) {
   return problems;
 }
 
+// `mode-NAME`: the panel's mode menu set to NAME, the frame written, and the first mode chosen
+// again, which must draw the first frame exactly.
+async function switchMode(page, name, action, out, first) {
+  const initial = await page.$eval('#mode', (e) => e.value);
+  const chosen = await page.select('#mode', action.slice('mode-'.length));
+  if (chosen.length === 0) return ['the page has no mode "' + action.slice(5) + '" to choose'];
+  writePng(path.join(out, name + '.' + action + '.png'), await page.evaluate(() => window.__rtFrame()));
+  await page.select('#mode', initial);
+  if (await page.evaluate(() => window.__rtFrame()) !== first)
+    return ['choosing the mode ' + initial + ' again does not draw the first frame again'];
+  return [];
+}
+
 // Each action: a switch is clicked, its frame written, and clicked back, which must draw the
 // first frame exactly; `moves` and `ortho` move the camera; `reference` checks the CPU render.
 async function runActions(page, name, actions, out) {
@@ -82,6 +96,7 @@ async function runActions(page, name, actions, out) {
   for (const s of actions) {
     if (s === 'moves' || s === 'ortho') { problems.push(...await moveCamera(page, name, s, out)); continue; }
     if (s === 'reference') { problems.push(...await checkReference(page)); continue; }
+    if (s.startsWith('mode-')) { problems.push(...await switchMode(page, name, s, out, first)); continue; }
     const box = await page.$('#toggle-' + s);
     if (!box || await page.evaluate((b) => b.disabled, box)) {
       problems.push('the page has no switch "' + s + '" to click');

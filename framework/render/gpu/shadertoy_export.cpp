@@ -291,7 +291,7 @@ std::string scene_structs() {
 
 void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_textures) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (mode == RenderMode::Depth || mode == RenderMode::BvhVisits)
+    if (!data_textures && (mode == RenderMode::Depth || mode == RenderMode::BvhVisits))
         throw GpuError(where + ": mode \"" + to_string(mode) +
                        "\" scales each pixel by the whole image's range, which one Shadertoy "
                        "pixel cannot know; export it with --mode normals or --mode shaded");

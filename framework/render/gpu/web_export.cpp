@@ -109,9 +109,10 @@ std::string page_shader_text(const ShadertoyExport& shader) {
     return text;
 }
 
-// What the page's shader is compiled for: every mode a pixel can draw alone, with shaded's code
-// and shadows in it, so that each setting of the panel has its code; or, when the scene cannot be
-// shaded here (stage 10), the requested mode alone.
+// What the page's shader is compiled for: every mode (depth and bvh_visits mapped by the page's
+// second pass, page_ranges.js), with shaded's code and shadows in it, so that each setting of the
+// panel has its code; or, when the scene cannot be shaded here (stage 10), the requested mode
+// alone.
 struct PageShader {
     ShadertoyExport shader;
     std::vector<RenderMode> modes;
@@ -129,10 +130,13 @@ PageShader page_shader(const PreparedScene& scene, RenderMode mode) {
     PreparedScene every = scene;
     every.shadows = true;
     refresh_features(every);
+    std::vector<RenderMode> modes = {RenderMode::Directions, RenderMode::Normals,
+                                     RenderMode::PrimitiveId, RenderMode::Depth};
+    if (scene.accelerator == Accelerator::Bvh && scene.bvh.built())
+        modes.push_back(RenderMode::BvhVisits);
+    modes.push_back(RenderMode::Shaded);
     try {
-        return {export_shadertoy(every, RenderMode::Shaded, kWeb),
-                {RenderMode::Directions, RenderMode::Normals, RenderMode::PrimitiveId,
-                 RenderMode::Shaded}};
+        return {export_shadertoy(every, RenderMode::Shaded, kWeb), modes};
     } catch (const GpuError&) {
         return {std::move(requested), {mode}};
     }
@@ -270,7 +274,8 @@ std::string export_web_page(const PreparedScene& scene, RenderMode mode, const I
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
     replace_once(page, "@RT_SCRIPT@",
                  read_page_file("page_camera.js") + read_page_file("page_controls.js") +
-                     read_page_file("page_samples.js") + read_page_file("page.js"));
+                     read_page_file("page_samples.js") + read_page_file("page_ranges.js") +
+                     read_page_file("page.js"));
     return page;
 }
 
