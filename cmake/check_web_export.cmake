@@ -21,13 +21,9 @@ set(KNOWN_REFUSALS "10-sampling/fog;11-path-tracing/cornell_box;11-path-tracing/
 # SwiftShader's rounding (not llvmpipe's, for which stage 09 keeps 0.5%) moves a few texels.
 set(WIDER_SCENES "textured_whitted=1.0")
 
-find_program(NODE_EXE NAMES node nodejs)
-if(NOT NODE_EXE)
-  message("SKIPPED: node is missing (scripts/install-deps.sh installs nodejs and npm)")
-  return()
-endif()
-if(NOT EXISTS ${SOURCE}/tools/web/node_modules/puppeteer-core)
-  message("SKIPPED: puppeteer-core is missing (scripts/install-deps.sh runs npm ci in tools/web)")
+include(${CMAKE_CURRENT_LIST_DIR}/find_web_browser.cmake)
+if(WEB_SKIPPED)
+  message("${WEB_SKIPPED}")
   return()
 endif()
 file(REMOVE_RECURSE ${OUT})

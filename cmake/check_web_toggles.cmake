@@ -32,13 +32,9 @@ set(CASES
   "04-shadows/scenes/cornell_box.json|ortho|camera"
   "08-environment/scenes/sky.json|environment|--off environment")
 
-find_program(NODE_EXE NAMES node nodejs)
-if(NOT NODE_EXE)
-  message("SKIPPED: node is missing (scripts/install-deps.sh installs nodejs and npm)")
-  return()
-endif()
-if(NOT EXISTS ${SOURCE}/tools/web/node_modules/puppeteer-core)
-  message("SKIPPED: puppeteer-core is missing (scripts/install-deps.sh runs npm ci in tools/web)")
+include(${CMAKE_CURRENT_LIST_DIR}/find_web_browser.cmake)
+if(WEB_SKIPPED)
+  message("${WEB_SKIPPED}")
   return()
 endif()
 file(REMOVE_RECURSE ${OUT})

@@ -157,12 +157,15 @@ CLI::App* add_gl_info_command(CLI::App& app, GlInfoArgs& args) {
 
 namespace {
 
-// The options both exports share: the scene, the file written (`what`) and the modes they draw.
-void add_export_options(CLI::App* cmd, ExportArgs& args, const std::string& what) {
+// The options both exports share: the scene, the file written (`what`) and the modes they draw
+// (a Shadertoy pixel cannot know the image's range that depth and bvh_visits scale by; a page can).
+void add_export_options(CLI::App* cmd, ExportArgs& args, const std::string& what,
+                        bool ranged_modes) {
     cmd->add_option("scene", args.scene, "scene file (.json)")->required();
     cmd->add_option("-o,--output", args.output, "the " + what + " to write")->required();
-    cmd->add_option("--mode", args.mode, "override the scene's mode")
-        ->check(CLI::IsMember({"directions", "normals", "primitive", "shaded"}));
+    std::vector<std::string> modes = {"directions", "normals", "primitive", "shaded"};
+    if (ranged_modes) modes.insert(modes.end(), {"depth", "bvh_visits"});
+    cmd->add_option("--mode", args.mode, "override the scene's mode")->check(CLI::IsMember(modes));
 }
 
 }  // namespace
@@ -172,7 +175,7 @@ CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
         "export-shadertoy",
         "write the scene and stages/09-gpu's GLSL as one self-contained Shadertoy shader "
         "(stages/09-gpu/README.md#publish-on-shadertoy)");
-    add_export_options(export_cmd, args, "shader (.glsl)");
+    add_export_options(export_cmd, args, "shader (.glsl)", false);
     return export_cmd;
 }
 
@@ -181,7 +184,7 @@ CLI::App* add_export_web_command(CLI::App& app, ExportWebArgs& args) {
         "export-web",
         "write one self-contained HTML page that renders the scene in WebGL2 with stages/09-gpu's "
         "GLSL (docs/viewer.md#lecture-demos-in-a-browser)");
-    add_export_options(web, args, "page (.html)");
+    add_export_options(web, args, "page (.html)", true);
     web->add_option("--width", args.width, "override the image width")->check(CLI::Range(1, 4096));
     web->add_option("--height", args.height, "override the image height")
         ->check(CLI::Range(1, 4096));

@@ -160,6 +160,13 @@ add_test(NAME Web.TogglesMatchCpu
           -P ${PROJECT_SOURCE_DIR}/cmake/check_web_toggles.cmake)
 set_tests_properties(Web.TogglesMatchCpu PROPERTIES LABELS "web;render" TIMEOUT 300
   SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+# A page whose student GLSL does not compile names the student's file and line.
+add_test(NAME Web.CompileErrorNamesStudentLine
+  COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
+          -DOUT=${PROJECT_BINARY_DIR}/test-output/web-compile-error
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_web_compile_error.cmake)
+set_tests_properties(Web.CompileErrorNamesStudentLine PROPERTIES LABELS "web;render" TIMEOUT 120
+  SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 endif()
 # The viewer under Xvfb (skipped, saying why, without xvfb-run): screenshots in
 # build/test-output/view/.

@@ -56,12 +56,26 @@
     '    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));\n' +
     '    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n';
 
+  // A compiler log's line numbers ("ERROR: 0:379:") of the stage 09 shader as the GLSL file and
+  // line they came from (web_export.cpp's source_lines), or as "the export's line N".
+  function withSourceLines(log) {
+    const { head, runs } = data.source_lines;
+    return log.replace(/\b0:(\d+):/g, (match, number) => {
+      const line = Number(number) - head;  // 1-based, in the export
+      const run = runs.find((r) => r[0] <= line && line < r[0] + r[3]);
+      return run ? run[1] + ':' + (run[2] + line - run[0]) + ':' : 'the export\'s line ' + line + ':';
+    });
+  }
+
   function compile(type, source, name) {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
     gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS))
-      throw new Error('the ' + name + ' does not compile: ' + gl.getShaderInfoLog(shader));
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+      const log = gl.getShaderInfoLog(shader);
+      throw new Error('the ' + name + ' does not compile: ' +
+        (name.includes('stage 09') ? withSourceLines(log) : log));
+    }
     return shader;
   }
 

@@ -208,6 +208,33 @@ nlohmann::json sampled_settings(const PreparedScene& scene, RenderMode mode) {
             {"block", base64(std::string(block.begin(), block.end()))}};
 }
 
+// Where each line of the page's shader came from, for page.js to name the student's file and line
+// in a compile error (as shadertoy_run.cpp's with_source_lines does for glslang's): the lines the
+// wrapper puts first, and runs [first line of the export, file, its line, line count] of
+// consecutive lines of one file; the export's own lines (the scene's constants) are in none.
+nlohmann::json source_lines(const ShadertoyExport& shader) {
+    nlohmann::json runs = nlohmann::json::array();
+    std::string file;
+    long next = -1;  // the file line that would continue the last run
+    for (std::size_t i = 0; i < shader.line_origins.size(); ++i) {
+        const std::string& origin = shader.line_origins[i];
+        const std::size_t colon = origin.rfind(':');
+        if (colon == std::string::npos) {
+            next = -1;
+            continue;
+        }
+        const long line = std::stol(origin.substr(colon + 1));
+        if (line == next && origin.compare(0, colon, file) == 0) {
+            runs.back()[3] = runs.back()[3].get<long>() + 1;
+        } else {
+            file = origin.substr(0, colon);
+            runs.push_back({long(i) + 1, file, line, 1});
+        }
+        next = line + 1;
+    }
+    return {{"head", shadertoy_wrapper_head_lines()}, {"runs", runs}};
+}
+
 // What page.js reads: the size, the camera (floats written as doubles, so they read back exact),
 // the panel's settings, the stubs (to name the one a magenta pixel reached) and the reference.
 nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const PageShader& shader,
@@ -231,6 +258,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
                            {"pivot_distance", float(orbit_pivot_distance(scene))},
                            {"settings", page_settings(scene, mode, shader.modes)},
                            {"stubs", nlohmann::json::array()},
+                           {"source_lines", source_lines(shader.shader)},
                            {"data_textures", data_textures(shader.shader.data_arrays)},
                            {"sampled", sampled_settings(scene, mode)},
                            {"reference", png_data_url(reference)}};
