@@ -122,7 +122,8 @@ int gpu_feature_bits(const PreparedScene& scene, RenderMode mode) {
            bit(shaded && f.depth_of_field, gpu::kFeatureDepthOfField) |
            bit(shaded && f.glossy, gpu::kFeatureGlossy) |
            bit(shaded && f.ambient_occlusion, gpu::kFeatureOcclusion) |
-           bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect);
+           bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect) |
+           bit(shaded && f.path_tracing, gpu::kFeaturePathTracing);
 }
 
 int gpu_texture_lookup(const PreparedScene& scene) {
@@ -148,10 +149,6 @@ void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
         throw GpuError(where +
                        ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
                        "port; use nearest or bilinear, or render it without --gpu");
-    if (mode == RenderMode::Shaded && scene.features.path_tracing)
-        throw GpuError(where +
-                       ": path tracing (stage 11, \"integrator\": \"path\") is not on the GPU "
-                       "yet; render it without --gpu");
     if (mode == RenderMode::Shaded && scene.features.fog)
         throw GpuError(where +
                        ": fog (stage 10's optional homogeneous medium) has no GPU port; render "
@@ -250,6 +247,9 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
     define_sampled(f.glossy, "HAS_GLOSSY");
     define_sampled(f.ambient_occlusion, "HAS_OCCLUSION");
     define_sampled(f.indirect_diffuse, "HAS_INDIRECT");
+    // Stage 11 (bsdf.glsl, path.glsl): only for a path-traced scene, even with --uber (its loop
+    // would cost every stage 10 scene's uber program compile time it never uses).
+    if (sampled && f.path_tracing) d += "#define HAS_PATH_TRACING\n";
     if (sampled && f.motion_blur)
         d += "#define HAS_MOTION_BLUR\n#define MAX_SPHERES " +
              std::to_string(std::max<std::size_t>(1, scene.spheres.size())) + "\n";
@@ -269,8 +269,10 @@ AssembledShader assemble_trace(const std::string& defines, const fs::path& stude
                                const fs::path& sampling_dir) {
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
-    // sampling.glsl is looked up after stage 09's folder: only a stage 10 scene includes it.
-    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling}, defines);
+    // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
+    // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
+    return assemble_shader(source_dir() / "shaders/trace.comp",
+                           {students, sampling, gpu_path_dir()}, defines);
 }
 
 // The program's #defines: the scene's, and the --debug-pixel notes when asked for.
