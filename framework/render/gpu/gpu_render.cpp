@@ -266,13 +266,14 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
 namespace {
 
 AssembledShader assemble_trace(const std::string& defines, const fs::path& student_dir,
-                               const fs::path& sampling_dir) {
+                               const fs::path& sampling_dir, const fs::path& path_dir = {}) {
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
+    const fs::path path = path_dir.empty() ? gpu_path_dir() : path_dir;
     // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
     // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
-    return assemble_shader(source_dir() / "shaders/trace.comp",
-                           {students, sampling, gpu_path_dir()}, defines);
+    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path},
+                           defines);
 }
 
 // The program's #defines: the scene's, and the --debug-pixel notes when asked for.
@@ -313,7 +314,8 @@ const GpuRenderer::Program& GpuRenderer::program_for(const std::string& defines,
     if (const auto it = programs_.find(defines); it != programs_.end()) return *it->second;
     const auto start = std::chrono::steady_clock::now();
     auto program = std::make_unique<Program>();
-    program->shader = assemble_trace(defines, options_.student_dir, options_.sampling_dir);
+    program->shader =
+        assemble_trace(defines, options_.student_dir, options_.sampling_dir, options_.path_dir);
     std::string error;
     program->id = build_compute_program(context_->gl(), program->shader, error);
     if (!program->id) throw GpuError(error);
