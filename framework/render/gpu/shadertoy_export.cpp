@@ -308,8 +308,8 @@ void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_tex
             "dispatches) is not in the Shadertoy export; render it with rt render --gpu");
     if (mode == RenderMode::Shaded && scene.features.path_tracing)
         throw GpuError(where +
-                       ": path tracing (stage 11, \"integrator\": \"path\") is not in the "
-                       "exported pages yet; render it with rt render --gpu");
+                       ": path tracing (stage 11, \"integrator\": \"path\") is not in rt "
+                       "export-web's page yet; render it with rt render --gpu");
     check_gpu_supported(scene, mode);
 }
 

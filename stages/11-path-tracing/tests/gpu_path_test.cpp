@@ -17,14 +17,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
-#include "core/not_implemented.h"
+#include "core/text_file.h"
 #include "image/compare.h"
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
 #include "scene/scene_loader.h"
+#include "testing/gpu_sampled_runs.h"
 #include "testing/stage_test.h"
 
 namespace fs = std::filesystem;
@@ -72,32 +72,12 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuPath, ::testing::Values("cornell_box", "veac
 RT_TEST_SUITE(GpuPathRuns);
 
 // The same image in every run, for any number of samples per dispatch (each sample's numbers
-// depend on its pixel and index only) and on either headless context. No stub may be reached,
-// so that a starter tree fails this test too.
+// depend on its pixel and index only) and on either headless context; no stub reached.
 TEST_F(GpuPathRuns, DeterministicForAnyBatchSize) {
     PreparedScene scene = path_scene("cornell_box");
     scene.image.width = 32, scene.image.height = 32;
     scene.sampling.samples_per_pixel = 12;
-    GpuRenderOptions one, seven;
-    one.samples_per_dispatch = 1;
-    seven.samples_per_dispatch = 7;
-    seven.context = GlKind::OsMesa;
-    const std::uint64_t stubs_before = stub_calls_total();
-    const Image a = render_gpu(scene, RenderMode::Shaded);
-    ASSERT_EQ(stub_calls_total(), stubs_before) << "the shader reached a stub";
-    const Image b = render_gpu(scene, RenderMode::Shaded, one);
-    const Image c = render_gpu(scene, RenderMode::Shaded, seven);
-    const Image d = render_gpu(scene, RenderMode::Shaded);
-    EXPECT_EQ(a.pixels, b.pixels);
-    EXPECT_EQ(a.pixels, c.pixels);
-    EXPECT_EQ(a.pixels, d.pixels);
-}
-
-std::string read_text_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    ::rt::testing::expect_gpu_deterministic(scene);
 }
 
 // The test can fail: path.glsl with Russian roulette that does not divide the throughput by q
@@ -113,7 +93,7 @@ TEST_F(GpuPathRuns, BiasedVariantFails) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     fs::copy_file(gpu_path_dir() / "bsdf.glsl", dir / "bsdf.glsl");
-    std::string text = read_text_file(gpu_path_dir() / "path.glsl");
+    std::string text = read_text(gpu_path_dir() / "path.glsl");
     const std::string division = "throughput /= q;";
     const std::size_t at = text.find(division);
     ASSERT_NE(at, std::string::npos) << "path.glsl has no " << division;
