@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -193,59 +194,62 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         }
 }
 
+// A starter tree's GLSL of stage 10 or 11 (`folder`: its optional GPU part, stripped as
+// rt-grade release does) in a temporary folder, with stage 09's solutions, rendering `scene` at
+// 32 x 24 with 2 samples. Returns the stub report (stderr); every pixel must be magenta.
+struct StubbedRender {
+    fs::path dir;  // where the stripped files were (removed)
+    std::string err;
+};
+StubbedRender render_stubbed(const std::string& folder, std::initializer_list<const char*> files,
+                             const std::string& scene_file) {
+    StubbedRender r;
+    r.dir = fs::temp_directory_path() / ("rt-" + folder + "-stubs-" + std::to_string(getpid()));
+    fs::remove_all(r.dir);
+    fs::create_directories(r.dir);
+    for (const char* f : files)
+        write(r.dir / f,
+              strip_solutions(read(::rt::testing::source_dir() / "stages" / folder / f)));
+    GpuRenderOptions options;
+    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
+    (folder.starts_with("10-") ? options.sampling_dir : options.path_dir) = r.dir;
+    PreparedScene scene = small_scene(folder + "/scenes/" + scene_file);
+    scene.sampling.samples_per_pixel = 2;
+    ::testing::internal::CaptureStderr();
+    const Image image = render_gpu(scene, RenderMode::Shaded, options);
+    r.err = ::testing::internal::GetCapturedStderr();
+    fs::remove_all(r.dir);
+    for (const Color& c : image.pixels) {
+        EXPECT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+        if (c != Color(1, 0, 1)) break;
+    }
+    return r;
+}
+
 // A starter tree's sampling.glsl (stage 10's optional GPU part) with stage 09's solutions: the
 // stubs compile, a stage 10 scene's pixels are magenta, and the first stub it reaches is named
 // with its file, line and handout section.
 TEST(GpuShader, SamplingStubsAreReported) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage10-stubs-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    write(dir / "sampling.glsl",
-          strip_solutions(read(::rt::testing::source_dir() / "stages/10-sampling/sampling.glsl")));
-    GpuRenderOptions options;
-    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
-    options.sampling_dir = dir;
-    PreparedScene scene = small_scene("10-sampling/scenes/soft_shadows.json");
-    scene.sampling.samples_per_pixel = 2;
-    ::testing::internal::CaptureStderr();
-    const Image image = render_gpu(scene, RenderMode::Shaded, options);
-    const std::string err = ::testing::internal::GetCapturedStderr();
-    fs::remove_all(dir);
-    for (const Color& c : image.pixels) ASSERT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+    const StubbedRender r = render_stubbed("10-sampling", {"sampling.glsl"}, "soft_shadows.json");
     const std::regex named("not implemented: stratified_sample \\(" +
-                           display_path(dir / "sampling.glsl") +
+                           display_path(r.dir / "sampling.glsl") +
                            ":[0-9]+\\);\\s*read stages/10-sampling/README.md#1-pixel-samples-"
                            "and-filters");
-    EXPECT_TRUE(std::regex_search(err, named)) << err;
+    EXPECT_TRUE(std::regex_search(r.err, named)) << r.err;
 }
 
 // A starter tree's bsdf.glsl and path.glsl (stage 11's optional GPU part) with the solutions of
 // stages 09 and 10: the stubs compile, a path-traced scene's pixels are magenta, and the stub it
 // reaches first, path_radiance, is named with its file, line and handout section.
 TEST(GpuShader, PathStubsAreReported) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage11-stubs-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    for (const char* f : {"bsdf.glsl", "path.glsl"})
-        write(dir / f,
-              strip_solutions(read(::rt::testing::source_dir() / "stages/11-path-tracing" / f)));
-    GpuRenderOptions options;
-    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
-    options.path_dir = dir;
-    PreparedScene scene = small_scene("11-path-tracing/scenes/cornell_box.json");
-    scene.sampling.samples_per_pixel = 2;
-    ::testing::internal::CaptureStderr();
-    const Image image = render_gpu(scene, RenderMode::Shaded, options);
-    const std::string err = ::testing::internal::GetCapturedStderr();
-    fs::remove_all(dir);
-    for (const Color& c : image.pixels) ASSERT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
-    const std::regex named("not implemented: path_radiance \\(" + display_path(dir / "path.glsl") +
+    const StubbedRender r =
+        render_stubbed("11-path-tracing", {"bsdf.glsl", "path.glsl"}, "cornell_box.json");
+    const std::regex named("not implemented: path_radiance \\(" +
+                           display_path(r.dir / "path.glsl") +
                            ":[0-9]+\\);\\s*read stages/11-path-tracing/README.md#6-the-path-"
                            "tracer");
-    EXPECT_TRUE(std::regex_search(err, named)) << err;
-    EXPECT_NE(err.find("sample_bsdf"), std::string::npos) << "the other stubs are named too";
+    EXPECT_TRUE(std::regex_search(r.err, named)) << r.err;
+    EXPECT_NE(r.err.find("sample_bsdf"), std::string::npos) << "the other stubs are named too";
 }
 
 TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {
