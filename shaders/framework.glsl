@@ -36,7 +36,7 @@ int primitive_index(int id) { return id & ((1 << kKindShift) - 1); }
 
 // What the scene uses when the shader has it compiled in (scene_features: compute_io.glsl, or
 // the constants of an export); the --uber shader tests these bits at run time.
-// kFeatureBvh ... kFeatureIndirect: the prelude's (framework/gpu/shader_constants.h).
+// kFeatureBvh ... kFeaturePathTracing: the prelude's (framework/gpu/shader_constants.h).
 bool scene_has(int feature) { return (scene_features & feature) != 0; }
 
 // Stage 06's BvhStats::nodes_visited, without pointers: bvh_intersect_nearest adds each node whose

@@ -11,7 +11,7 @@ struct Material {
     vec4 ambient;
     vec4 diffuse;
     vec4 specular_shininess;
-    vec4 emissive;
+    vec4 emissive;            // xyz k_e, w roughness (stage 11's GGX lobe)
     vec4 reflective;          // xyz k_r, w fuzz (stage 10's glossy reflection; 0 a mirror)
     vec4 transmissive_ior;
     ivec4 maps;               // texture of the diffuse, specular, emissive, normal slot (-1: none)

@@ -8,7 +8,8 @@
 //   HAS_ENVIRONMENT                                                     stage 08
 //   HAS_SAMPLING: stage 10 (several camera samples per pixel, stages/10-sampling/sampling.glsl);
 //   with it HAS_AREA_LIGHTS HAS_DEPTH_OF_FIELD HAS_MOTION_BLUR HAS_GLOSSY HAS_OCCLUSION
-//   HAS_INDIRECT, as the scene's Features say
+//   HAS_INDIRECT, as the scene's Features say; HAS_PATH_TRACING: stage 11 (path_support.glsl,
+//   stages/11-path-tracing/bsdf.glsl and path.glsl), with HAS_SAMPLING
 //   MAX_LIGHTS (>= 1), MAX_DEPTH (0..64)                                fixed array sizes
 //   MAX_AREA_LIGHTS, MAX_MOVING_SPHERES (>= 1), MAX_SPHERES (motion blur) stage 10's array sizes
 // rt render --gpu --uber defines them all (scene_has() then decides at run time).

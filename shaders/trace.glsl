@@ -1,9 +1,9 @@
 // The tracer both entry points share: trace.comp (the compute shader of rt render --gpu) and
 // shadertoy.glsl (rt export-shadertoy). Before it come the scene's structs and what holds the
 // scene: trace.comp's storage buffers and uniforms, or an export's constants. The HAS_ defines
-// (listed in trace.comp) say what the scene needs; the student files (stages/09-gpu/, and
-// stages/10-sampling/sampling.glsl for a stage 10 scene) come from the include folders the host
-// passes.
+// (listed in trace.comp) say what the scene needs; the student files (stages/09-gpu/,
+// stages/10-sampling/sampling.glsl for a stage 10 scene, stages/11-path-tracing/*.glsl for a
+// path-traced one) come from the include folders the host passes.
 #if defined(HAS_TEXTURES) || defined(HAS_NORMAL_MAPS)
 #define HAS_MAPS  // some material has a map: texture coordinates and the texturing step
 #endif
@@ -145,6 +145,10 @@ vec3 incoming_radiance(Ray ray);
 #endif
 #ifdef HAS_SAMPLING
 #include "sampling.glsl"
+#endif
+// Stage 11 (a path-traced scene): path_support.glsl, then bsdf.glsl and path.glsl.
+#ifdef HAS_PATH_TRACING
+#include "path_support.glsl"
 #endif
 #ifdef HAS_SAMPLING
 // Stage 10's sampled terms at a hit, in render/shade.cpp's order: one sample per area light,
@@ -397,7 +401,13 @@ vec3 sample_pixel(ivec2 pixel, int sample_index) {
 #ifdef HAS_MOTION_BLUR
     move_spheres(shutter_time(sampling.lens_shutter.z, sampling.lens_shutter.w, rng_next()));
 #endif
+#ifdef HAS_PATH_TRACING
+    // Stage 11: the sample's radiance is path.glsl's path_radiance (render/shade.cpp's
+    // trace_sample).
+    const vec3 color = scene_has(kFeaturePathTracing) ? path_radiance(ray) : trace(ray);
+#else
     const vec3 color = trace(ray);
+#endif
     rt_debug_note(kDebugPixel, 0, vec4(color, 0));
     return color;
 }

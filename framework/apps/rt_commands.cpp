@@ -89,7 +89,8 @@ void add_render_gpu_options(CLI::App* render_cmd, RenderArgs& render_args) {
     render_cmd->add_flag("--gpu", render_args.gpu,
                          "render with the compute shader of stage 09 (shaders/trace.comp and "
                          "stages/09-gpu/*.glsl; a stage 10 scene also "
-                         "stages/10-sampling/sampling.glsl)");
+                         "stages/10-sampling/sampling.glsl, a stage 11 one also "
+                         "stages/11-path-tracing/bsdf.glsl and path.glsl)");
     render_cmd->add_option("--gl", render_args.gl, "the OpenGL context of --gpu (default: egl)")
         ->check(CLI::IsMember({"egl", "osmesa", "window"}));
     render_cmd->add_flag("--uber", render_args.uber,

@@ -14,4 +14,8 @@ std::filesystem::path gpu_student_dir();
 // read from: $RT_GPU_STUDENT_DIR when it holds sampling.glsl, else stages/10-sampling.
 std::filesystem::path gpu_sampling_dir();
 
+// Where stage 11's GLSL (bsdf.glsl and path.glsl, included only for path-traced scenes) is read
+// from: $RT_GPU_STUDENT_DIR when it holds path.glsl, else stages/11-path-tracing.
+std::filesystem::path gpu_path_dir();
+
 }  // namespace rt

@@ -29,7 +29,7 @@ GpuScene pack_scene(const PreparedScene& scene) {
         GpuMaterial gm{v4(m.ambient),
                        v4(m.diffuse),
                        v4(m.specular, m.shininess),
-                       v4(m.emissive),
+                       v4(m.emissive, m.roughness),
                        v4(m.reflective, m.fuzz),
                        v4(m.transmissive, m.ior),
                        glm::ivec4(-1),

@@ -56,11 +56,11 @@ struct alignas(16) GpuMaterial {
     glm::vec4 ambient;
     glm::vec4 diffuse;
     glm::vec4 specular_shininess;  // xyz k_s, w n_s
-    glm::vec4 emissive;
-    glm::vec4 reflective;        // xyz k_r, w fuzz (stage 10's glossy reflection)
-    glm::vec4 transmissive_ior;  // xyz k_t, w index of refraction
-    glm::ivec4 maps;             // texture of the diffuse, specular, emissive, normal slot (-1)
-    glm::vec4 map_transform[4];  // per slot: xy scale, zw offset
+    glm::vec4 emissive;            // xyz k_e, w roughness (stage 11's GGX lobe)
+    glm::vec4 reflective;          // xyz k_r, w fuzz (stage 10's glossy reflection)
+    glm::vec4 transmissive_ior;    // xyz k_t, w index of refraction
+    glm::ivec4 maps;               // texture of the diffuse, specular, emissive, normal slot (-1)
+    glm::vec4 map_transform[4];    // per slot: xy scale, zw offset
 };
 struct alignas(16) GpuTexture {
     glm::ivec4 kind_image_filter_wrap;  // TextureKind, image index, TextureFilter, TextureWrap

@@ -61,7 +61,8 @@ std::string shader_prelude() {
                       named("kFeatureDepthOfField", kFeatureDepthOfField),
                       named("kFeatureGlossy", kFeatureGlossy),
                       named("kFeatureOcclusion", kFeatureOcclusion),
-                      named("kFeatureIndirect", kFeatureIndirect)}) +
+                      named("kFeatureIndirect", kFeatureIndirect),
+                      named("kFeaturePathTracing", kFeaturePathTracing)}) +
            constants({named("kModeDirections", RenderMode::Directions),
                       named("kModeNormals", RenderMode::Normals),
                       named("kModeDepth", RenderMode::Depth),

@@ -22,6 +22,7 @@ enum FeatureBit : int {
     kFeatureGlossy = 1 << 8,
     kFeatureOcclusion = 1 << 9,
     kFeatureIndirect = 1 << 10,
+    kFeaturePathTracing = 1 << 11,  // stage 11: "integrator": "path" (path_radiance)
 };
 
 // The texture_lookup uniform: each texture's own filter, or all nearest, or all bilinear.

@@ -58,17 +58,20 @@ void put(Writer& w, const GpuRenderOptions& v) {
     put(w, v.uber);
     put(w, v.sampling_dir.string());
     put(w, v.samples_per_dispatch);
+    put(w, v.path_dir.string());
 }
 void get(Reader& r, GpuRenderOptions& v) {
-    std::string student_dir, sampling_dir;
+    std::string student_dir, sampling_dir, path_dir;
     get(r, v.context);
     get(r, student_dir);
     get(r, v.uber);
     get(r, sampling_dir);
     get(r, v.samples_per_dispatch);
+    get(r, path_dir);
     if (int(v.context) < int(GlKind::Egl) || int(v.context) > int(GlKind::Window)) r.fail();
     v.student_dir = student_dir;
     v.sampling_dir = sampling_dir;
+    v.path_dir = path_dir;
 }
 
 void put(Writer& w, const TextureView& v) {

@@ -250,17 +250,23 @@ std::optional<Frame> refine_samples(const PreparedScene& scene, bool gpu, int se
     return std::nullopt;
 }
 
-TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
-    PreparedScene scene =
-        prepare_scene(load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json"));
-    scene.image = ImageSize{48, 32};  // no coarse passes
-    ASSERT_EQ(scene.sampling.samples_per_pixel, 16);
+// A Monte Carlo scene at 48 x 32 (no coarse passes) and `spp` samples, on the CPU or the GPU:
+// passes of more and more samples, the last one rt render's (--gpu's) image.
+void expect_refines(const std::string& scene_file, int spp, bool gpu) {
+    PreparedScene scene = prepare_scene(load_scene(source_dir() / scene_file));
+    scene.image = ImageSize{48, 32};
+    scene.sampling.samples_per_pixel = spp;
     std::vector<int> samples;
-    const std::optional<Frame> last = refine_samples(scene, false, 60, samples);
-    ASSERT_TRUE(last && last->refined()) << "no refined frame within 60 s";
-    EXPECT_EQ(samples.back(), 16);
+    const std::optional<Frame> last = refine_samples(scene, gpu, gpu ? 120 : 60, samples);
+    ASSERT_TRUE(last && last->refined()) << "no refined frame in time";
+    EXPECT_EQ(samples.back(), spp);
     for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
-    EXPECT_EQ(last->image.pixels, render(scene, scene.mode).pixels);
+    EXPECT_EQ(last->image.pixels,
+              gpu ? render_gpu(scene, scene.mode).pixels : render(scene, scene.mode).pixels);
+}
+
+TEST(ViewProgressive, AMonteCarloSceneRefinesItsSamples) {
+    expect_refines("stages/10-sampling/scenes/soft_shadows.json", 16, false);
 }
 
 // The GPU path: the refined frame is `rt render --gpu`'s image, and a second camera reuses the
@@ -294,15 +300,12 @@ TEST(ViewProgressive, TheGpuPathGivesTheGpuRenderersImage) {
 // Stage 10 on the GPU path: the same passes (1, 4, 16 samples), each accumulated over dispatches;
 // the refined frame is `rt render --gpu`'s image.
 TEST(ViewProgressive, TheGpuPathRefinesAMonteCarloScene) {
-    PreparedScene scene =
-        prepare_scene(load_scene(source_dir() / "stages/10-sampling/scenes/soft_shadows.json"));
-    scene.image = ImageSize{48, 32};  // no coarse passes
-    std::vector<int> samples;
-    const std::optional<Frame> last = refine_samples(scene, true, 120, samples);
-    ASSERT_TRUE(last && last->refined()) << "no refined GPU frame within 120 s";
-    EXPECT_EQ(samples.back(), 16);
-    for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_GT(samples[k], samples[k - 1]);
-    EXPECT_EQ(last->image.pixels, render_gpu(scene, scene.mode).pixels);
+    expect_refines("stages/10-sampling/scenes/soft_shadows.json", 16, true);
+}
+
+// Stage 11's path tracer (stages/11-path-tracing/path.glsl) refines the same way.
+TEST(ViewProgressive, TheGpuPathRefinesAPathTracedScene) {
+    expect_refines("stages/11-path-tracing/scenes/cornell_box.json", 16, true);
 }
 
 TEST(ViewProgressive, ARenderErrorIsAFrameNotACrash) {

@@ -122,7 +122,8 @@ int gpu_feature_bits(const PreparedScene& scene, RenderMode mode) {
            bit(shaded && f.depth_of_field, gpu::kFeatureDepthOfField) |
            bit(shaded && f.glossy, gpu::kFeatureGlossy) |
            bit(shaded && f.ambient_occlusion, gpu::kFeatureOcclusion) |
-           bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect);
+           bit(shaded && f.indirect_diffuse, gpu::kFeatureIndirect) |
+           bit(shaded && f.path_tracing, gpu::kFeaturePathTracing);
 }
 
 int gpu_texture_lookup(const PreparedScene& scene) {
@@ -148,10 +149,6 @@ void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
         throw GpuError(where +
                        ": --texture-filter oiio (OpenImageIO's mip-mapped lookups) has no GPU "
                        "port; use nearest or bilinear, or render it without --gpu");
-    if (mode == RenderMode::Shaded && scene.features.path_tracing)
-        throw GpuError(where +
-                       ": path tracing (stage 11, \"integrator\": \"path\") is not on the GPU "
-                       "yet; render it without --gpu");
     if (mode == RenderMode::Shaded && scene.features.fog)
         throw GpuError(where +
                        ": fog (stage 10's optional homogeneous medium) has no GPU port; render "
@@ -250,6 +247,9 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
     define_sampled(f.glossy, "HAS_GLOSSY");
     define_sampled(f.ambient_occlusion, "HAS_OCCLUSION");
     define_sampled(f.indirect_diffuse, "HAS_INDIRECT");
+    // Stage 11 (bsdf.glsl, path.glsl): only for a path-traced scene, even with --uber (its loop
+    // would cost every stage 10 scene's uber program compile time it never uses).
+    if (sampled && f.path_tracing) d += "#define HAS_PATH_TRACING\n";
     if (sampled && f.motion_blur)
         d += "#define HAS_MOTION_BLUR\n#define MAX_SPHERES " +
              std::to_string(std::max<std::size_t>(1, scene.spheres.size())) + "\n";
@@ -266,11 +266,14 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
 namespace {
 
 AssembledShader assemble_trace(const std::string& defines, const fs::path& student_dir,
-                               const fs::path& sampling_dir) {
+                               const fs::path& sampling_dir, const fs::path& path_dir = {}) {
     const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
     const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
-    // sampling.glsl is looked up after stage 09's folder: only a stage 10 scene includes it.
-    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling}, defines);
+    const fs::path path = path_dir.empty() ? gpu_path_dir() : path_dir;
+    // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
+    // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
+    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path},
+                           defines);
 }
 
 // The program's #defines: the scene's, and the --debug-pixel notes when asked for.
@@ -311,7 +314,8 @@ const GpuRenderer::Program& GpuRenderer::program_for(const std::string& defines,
     if (const auto it = programs_.find(defines); it != programs_.end()) return *it->second;
     const auto start = std::chrono::steady_clock::now();
     auto program = std::make_unique<Program>();
-    program->shader = assemble_trace(defines, options_.student_dir, options_.sampling_dir);
+    program->shader =
+        assemble_trace(defines, options_.student_dir, options_.sampling_dir, options_.path_dir);
     std::string error;
     program->id = build_compute_program(context_->gl(), program->shader, error);
     if (!program->id) throw GpuError(error);

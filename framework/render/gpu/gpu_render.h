@@ -42,6 +42,8 @@ struct GpuRenderOptions {
     // Stage 10: camera samples per pixel added by one dispatch (0: the default, 4). The image is
     // the same for any value: each sample's numbers depend on its pixel and index only.
     int samples_per_dispatch = 0;
+    // Stage 11's bsdf.glsl and path.glsl are read from here; empty: gpu_path_dir().
+    std::filesystem::path path_dir;
     // Set by another thread: a stage 10 render stops after the dispatch in flight (the viewer).
     const std::atomic<bool>* cancel = nullptr;
 };

@@ -306,6 +306,10 @@ void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_tex
             where +
             ": stage 10 (several camera samples per pixel, accumulated over "
             "dispatches) is not in the Shadertoy export; render it with rt render --gpu");
+    if (mode == RenderMode::Shaded && scene.features.path_tracing)
+        throw GpuError(where +
+                       ": path tracing (stage 11, \"integrator\": \"path\") is not in rt "
+                       "export-web's page yet; render it with rt render --gpu");
     check_gpu_supported(scene, mode);
 }
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -155,20 +156,31 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         "#define HAS_SPHERES\n#define HAS_TRIANGLES\n#define HAS_SHADOWS\n#define HAS_SAMPLING\n"
         "#define HAS_MOTION_BLUR\n#define MAX_SPHERES 3\n#define HAS_DEPTH_OF_FIELD\n"
         "#define HAS_GLOSSY\n#define HAS_REFLECTION\n#define HAS_OCCLUSION\n#define MAX_LIGHTS 1\n"
-        "#define MAX_DEPTH 3\n"};
+        "#define MAX_DEPTH 3\n",
+        // Stage 11 (bsdf.glsl, path.glsl): cornell_box's and veach_mis's (with a BVH) shaders.
+        "#define HAS_SPHERES\n#define HAS_BOXES\n#define HAS_REFRACTION\n#define HAS_SAMPLING\n"
+        "#define HAS_AREA_LIGHTS\n#define HAS_PATH_TRACING\n#define MAX_LIGHTS 1\n"
+        "#define MAX_DEPTH 8\n#define MAX_AREA_LIGHTS 1\n",
+        "#define HAS_TRIANGLES\n#define HAS_BOXES\n#define HAS_BVH\n#define HAS_SAMPLING\n"
+        "#define HAS_AREA_LIGHTS\n#define HAS_PATH_TRACING\n#define MAX_LIGHTS 1\n"
+        "#define MAX_DEPTH 3\n#define MAX_AREA_LIGHTS 5\n#define HAS_DEBUG_PIXEL\n"};
     StudentCopy stubs("glslang");
     for (const char* f : kStudentFiles)
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
     write(stubs.dir() / "sampling.glsl",
           strip_solutions(read(root / "stages/10-sampling/sampling.glsl")));
+    for (const char* f : {"bsdf.glsl", "path.glsl"})
+        write(stubs.dir() / f, strip_solutions(read(root / "stages/11-path-tracing" / f)));
     int n = 0;
     for (const fs::path& students : {root / "stages/09-gpu", stubs.dir()})
         for (const std::string& defines : variants) {
-            // Stage 10's file: the solution beside stage 09's solutions, the stub beside stubs.
-            const fs::path sampling =
-                students == stubs.dir() ? stubs.dir() : root / "stages/10-sampling";
+            // Stages 10 and 11's files: the solutions beside stage 09's solutions, the stubs
+            // beside stubs.
+            const bool stubbed = students == stubs.dir();
+            const fs::path sampling = stubbed ? stubs.dir() : root / "stages/10-sampling";
+            const fs::path path = stubbed ? stubs.dir() : root / "stages/11-path-tracing";
             const AssembledShader shader =
-                assemble_shader(root / "shaders/trace.comp", {students, sampling}, defines);
+                assemble_shader(root / "shaders/trace.comp", {students, sampling, path}, defines);
             ASSERT_EQ(shader.error, "");
             const fs::path file =
                 fs::temp_directory_path() /
@@ -182,31 +194,62 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         }
 }
 
+// A starter tree's GLSL of stage 10 or 11 (`folder`: its optional GPU part, stripped as
+// rt-grade release does) in a temporary folder, with stage 09's solutions, rendering `scene` at
+// 32 x 24 with 2 samples. Returns the stub report (stderr); every pixel must be magenta.
+struct StubbedRender {
+    fs::path dir;  // where the stripped files were (removed)
+    std::string err;
+};
+StubbedRender render_stubbed(const std::string& folder, std::initializer_list<const char*> files,
+                             const std::string& scene_file) {
+    StubbedRender r;
+    r.dir = fs::temp_directory_path() / ("rt-" + folder + "-stubs-" + std::to_string(getpid()));
+    fs::remove_all(r.dir);
+    fs::create_directories(r.dir);
+    for (const char* f : files)
+        write(r.dir / f,
+              strip_solutions(read(::rt::testing::source_dir() / "stages" / folder / f)));
+    GpuRenderOptions options;
+    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
+    (folder.starts_with("10-") ? options.sampling_dir : options.path_dir) = r.dir;
+    PreparedScene scene = small_scene(folder + "/scenes/" + scene_file);
+    scene.sampling.samples_per_pixel = 2;
+    ::testing::internal::CaptureStderr();
+    const Image image = render_gpu(scene, RenderMode::Shaded, options);
+    r.err = ::testing::internal::GetCapturedStderr();
+    fs::remove_all(r.dir);
+    for (const Color& c : image.pixels) {
+        EXPECT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+        if (c != Color(1, 0, 1)) break;
+    }
+    return r;
+}
+
 // A starter tree's sampling.glsl (stage 10's optional GPU part) with stage 09's solutions: the
 // stubs compile, a stage 10 scene's pixels are magenta, and the first stub it reaches is named
 // with its file, line and handout section.
 TEST(GpuShader, SamplingStubsAreReported) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage10-stubs-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    write(dir / "sampling.glsl",
-          strip_solutions(read(::rt::testing::source_dir() / "stages/10-sampling/sampling.glsl")));
-    GpuRenderOptions options;
-    options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
-    options.sampling_dir = dir;
-    PreparedScene scene = small_scene("10-sampling/scenes/soft_shadows.json");
-    scene.sampling.samples_per_pixel = 2;
-    ::testing::internal::CaptureStderr();
-    const Image image = render_gpu(scene, RenderMode::Shaded, options);
-    const std::string err = ::testing::internal::GetCapturedStderr();
-    fs::remove_all(dir);
-    for (const Color& c : image.pixels) ASSERT_EQ(c, Color(1, 0, 1)) << "a stub pixel is magenta";
+    const StubbedRender r = render_stubbed("10-sampling", {"sampling.glsl"}, "soft_shadows.json");
     const std::regex named("not implemented: stratified_sample \\(" +
-                           display_path(dir / "sampling.glsl") +
+                           display_path(r.dir / "sampling.glsl") +
                            ":[0-9]+\\);\\s*read stages/10-sampling/README.md#1-pixel-samples-"
                            "and-filters");
-    EXPECT_TRUE(std::regex_search(err, named)) << err;
+    EXPECT_TRUE(std::regex_search(r.err, named)) << r.err;
+}
+
+// A starter tree's bsdf.glsl and path.glsl (stage 11's optional GPU part) with the solutions of
+// stages 09 and 10: the stubs compile, a path-traced scene's pixels are magenta, and the stub it
+// reaches first, path_radiance, is named with its file, line and handout section.
+TEST(GpuShader, PathStubsAreReported) {
+    const StubbedRender r =
+        render_stubbed("11-path-tracing", {"bsdf.glsl", "path.glsl"}, "cornell_box.json");
+    const std::regex named("not implemented: path_radiance \\(" +
+                           display_path(r.dir / "path.glsl") +
+                           ":[0-9]+\\);\\s*read stages/11-path-tracing/README.md#6-the-path-"
+                           "tracer");
+    EXPECT_TRUE(std::regex_search(r.err, named)) << r.err;
+    EXPECT_NE(r.err.find("sample_bsdf"), std::string::npos) << "the other stubs are named too";
 }
 
 TEST(GpuShader, WhatTheGpuCannotDrawSaysSo) {

@@ -23,17 +23,17 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "core/not_implemented.h"
+#include "core/text_file.h"
 #include "image/compare.h"
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
+#include "testing/gpu_sampled_runs.h"
 #include "testing/stage_test.h"
 
 namespace fs = std::filesystem;
@@ -98,29 +98,11 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuSampled, ::testing::ValuesIn(gpu_sampling_sc
 RT_TEST_SUITE(GpuSampledRuns);
 
 // The same image in every run, for any number of samples per dispatch (each sample's numbers
-// depend on its pixel and index only) and on either headless context. Stubs would give the same magenta every time:
-// no stub may be reached, so that a starter tree fails this test too.
+// depend on its pixel and index only) and on either headless context; no stub reached.
 TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
     PreparedScene scene = gpu_sampling_scene("soft_shadows");
     scene.image.width = 32, scene.image.height = 24;
-    GpuRenderOptions one, seven;
-    one.samples_per_dispatch = 1;
-    seven.samples_per_dispatch = 7;
-    seven.context = GlKind::OsMesa;
-    const std::uint64_t stubs_before = stub_calls_total();
-    const Image a = render_gpu(scene, RenderMode::Shaded);
-    ASSERT_EQ(stub_calls_total(), stubs_before) << "the shader reached a stub";
-    const Image b = render_gpu(scene, RenderMode::Shaded, one);
-    const Image c = render_gpu(scene, RenderMode::Shaded, seven);
-    EXPECT_EQ(a.pixels, b.pixels);
-    EXPECT_EQ(a.pixels, c.pixels);
-}
-
-std::string read_text_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    ::rt::testing::expect_gpu_deterministic(scene);
 }
 
 // The test can fail: sampling.glsl with sample_cosine_hemisphere's body replaced by uniform
@@ -137,7 +119,7 @@ TEST_F(GpuSampledRuns, BiasedVariantFails) {
         fs::temp_directory_path() / ("rt-stage10-biased-" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::string text = read_text_file(gpu_sampling_dir() / "sampling.glsl");
+    std::string text = read_text(gpu_sampling_dir() / "sampling.glsl");
     const std::string head = "vec3 sample_cosine_hemisphere(vec2 u) {\n";
     const std::size_t begin = text.find(head);
     ASSERT_NE(begin, std::string::npos) << "sampling.glsl has no " << head;
