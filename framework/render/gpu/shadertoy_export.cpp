@@ -306,10 +306,6 @@ void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_tex
             where +
             ": stage 10 (several camera samples per pixel, accumulated over "
             "dispatches) is not in the Shadertoy export; render it with rt render --gpu");
-    if (mode == RenderMode::Shaded && scene.features.path_tracing)
-        throw GpuError(where +
-                       ": path tracing (stage 11, \"integrator\": \"path\") is not in rt "
-                       "export-web's page yet; render it with rt render --gpu");
     check_gpu_supported(scene, mode);
 }
 
@@ -336,9 +332,9 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const ShadertoyOptions& options) {
     check_exportable(scene, mode, options.data_textures);
     const fs::path students = options.student_dir.empty() ? gpu_student_dir() : options.student_dir;
-    const AssembledShader shader =
-        assemble_shader(source_dir() / "shaders/shadertoy.glsl", {students, gpu_sampling_dir()},
-                        gpu_defines(scene, mode));  // they decide the guarded includes
+    const AssembledShader shader = assemble_shader(
+        source_dir() / "shaders/shadertoy.glsl", {students, gpu_sampling_dir(), gpu_path_dir()},
+        gpu_defines(scene, mode));  // they decide the guarded includes
     if (!shader.error.empty()) throw GpuError(shader.error);
     const gpu::GpuScene packed = gpu::pack_scene(scene);
     ShadertoyExport out;

@@ -43,10 +43,10 @@ constexpr std::size_t kMaxShadertoyTexels = 1024;
 constexpr std::size_t kMaxShadertoyBytes = 512 * 1024;
 
 // The export of `scene` (its BVH built when it has one) drawn in `mode`. Throws GpuError
-// (render/gpu/gpu_render.h), one line naming the scene, for what it cannot export: the depth and
-// bvh_visits views (they scale by the whole image's range, which one pixel cannot know), images
-// beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes, and what render --gpu cannot
-// draw either.
+// (render/gpu/gpu_render.h), one line naming the scene, for what it cannot export: for Shadertoy
+// the depth and bvh_visits views (they scale by the whole image's range, which one pixel cannot
+// know), images beyond kMaxShadertoyTexels, exports beyond kMaxShadertoyBytes and stages 10-11's
+// sampled scenes (rt export-web's page takes all of those); and what render --gpu cannot draw.
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const ShadertoyOptions& options = {});
 
