@@ -67,15 +67,13 @@
     });
   }
 
-  function compile(type, source, name) {
+  // `explain` rewrites the compiler's log (withSourceLines, for the stage 09 shader).
+  function compile(type, source, name, explain = (log) => log) {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
     gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-      const log = gl.getShaderInfoLog(shader);
-      throw new Error('the ' + name + ' does not compile: ' +
-        (name.includes('stage 09') ? withSourceLines(log) : log));
-    }
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS))
+      throw new Error('the ' + name + ' does not compile: ' + explain(gl.getShaderInfoLog(shader)));
     return shader;
   }
 
@@ -83,7 +81,8 @@
     const program = gl.createProgram();
     gl.attachShader(program, compile(gl.VERTEX_SHADER, kVertexShader, 'vertex shader'));
     const fragment = document.getElementById('rt-shader').textContent;
-    gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fragment, 'fragment shader (stage 09)'));
+    gl.attachShader(program,
+      compile(gl.FRAGMENT_SHADER, fragment, 'fragment shader (stage 09)', withSourceLines));
     gl.linkProgram(program);
     if (!gl.getProgramParameter(program, gl.LINK_STATUS))
       throw new Error('the shaders do not link: ' + gl.getProgramInfoLog(program));
@@ -160,13 +159,11 @@
     };
     if (mode.name === 'depth' || mode.name === 'bvh_visits') {
       ranges.draw(() => gl.drawArrays(gl.TRIANGLES, 0, 3), mode.name === 'bvh_visits');
-      finish();
-      return;
+      return finish();
     }
     if (!samples || mode.value !== panel.shaded) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
-      finish();
-      return;
+      return finish();
     }
     samples.begin();
     const batch = () => {
