@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/mis_strategies.h"
 #include "bench/sampling_error.h"
 #include "bench/texture_filters.h"
 
@@ -23,6 +24,7 @@ struct AccuracyConfig {
     bool rendering = true;
     bool textures = true;    // the texture-filter rows (needs the OpenImageIO module for all)
     bool sampling = true;    // stage 10's rows (rt-bench fills them: they need the renderer)
+    bool mis = true;         // stage 11's light strategies (the same)
     int render_divisor = 2;  // stage scenes are rendered at 1/divisor of their size
     std::function<void(const std::string&)> progress;  // one line per finished part
 };
@@ -71,6 +73,7 @@ struct AccuracyResults {
     std::vector<TexturePoint> texture;
     std::string texture_note;
     SamplingSeries sampling;  // filled by rt-bench's main, not run_accuracy (see sampling_error.h)
+    MisSeries mis;            // the same (see mis_strategies.h)
     double seconds = 0;
 };
 

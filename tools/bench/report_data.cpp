@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bench/accuracy.h"
+#include "bench/mis_strategies.h"
 #include "bench/sampling_error.h"
 
 namespace rt::bench {
@@ -19,6 +20,21 @@ double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& s
         n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
     }
     return n < 2 ? 0 : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+double rmse_at_time(const std::vector<MisPoint>& points, const std::string& strategy, double ms) {
+    std::vector<const MisPoint*> line;
+    for (const MisPoint& p : points)
+        if (p.strategy == strategy && p.ms > 0 && p.rmse > 0) line.push_back(&p);
+    if (line.empty()) return -1;
+    if (ms <= line.front()->ms) return line.front()->rmse;
+    for (std::size_t i = 1; i < line.size(); ++i) {
+        const MisPoint &a = *line[i - 1], &b = *line[i];
+        if (ms > b.ms) continue;
+        const double t = std::log(ms / a.ms) / std::log(b.ms / a.ms);
+        return std::exp(std::log(a.rmse) + t * std::log(b.rmse / a.rmse));
+    }
+    return line.back()->rmse;
 }
 
 std::string csv_report(const AccuracyResults& r) {

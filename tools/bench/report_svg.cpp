@@ -216,6 +216,19 @@ void write_svgs(const AccuracyResults& r, const std::string& dir) {
                      "RMSE vs 1024 spp (8-bit units)", pts, 1e-3,
                      "one line per scene; black: slope -1/2 (time grows as the samples)"));
     }
+    if (!r.mis.points.empty()) {
+        std::vector<PlotPoint> pts;
+        for (const MisPoint& p : r.mis.points) {
+            const char* color = p.strategy == "MIS"   ? "#2ca02c"
+                                : p.strategy == "NEE" ? "#1f77b4"
+                                                      : "#d62728";
+            pts.push_back({p.spp == 1 ? p.strategy : "", p.ms, p.rmse, p.strategy, color});
+        }
+        put("mis.svg", svg_plot("Stage 11, Veach's scene: error against time", "ms for the image",
+                                "RMSE vs 2048 spp (8-bit units)", pts, 1e-3,
+                                "blue: NEE only; red: BSDF sampling only; green: MIS (power); "
+                                "points at 1, 4, 16, 64, 256 spp"));
+    }
     if (!r.texture.empty()) {
         std::vector<PlotPoint> pts;
         for (const TexturePoint& p : r.texture)

@@ -37,11 +37,11 @@ int run_accuracy(const rt::bench::AccuracyConfig& base, const std::string& markd
         std::fprintf(stderr, "[%6.1f s] %s\n", s, what.c_str());
     };
     rt::bench::AccuracyResults res = rt::bench::run_accuracy(cfg);
-    if (cfg.sampling) {
-        res.sampling = rt::bench::measure_sampling_error(48, 36, 1024, cfg.progress);
+    if (cfg.sampling) res.sampling = rt::bench::measure_sampling_error(48, 36, 1024, cfg.progress);
+    if (cfg.mis) res.mis = rt::bench::measure_mis_strategies(cfg.progress);
+    if (cfg.sampling || cfg.mis)
         res.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
     std::string link_dir = svg_dir;
     if (!markdown.empty() && !svg_dir.empty()) {
         const auto md_dir = std::filesystem::absolute(markdown).parent_path();
@@ -131,6 +131,8 @@ CLI::App* add_accuracy_command(CLI::App& app, AccuracyArgs& a) {
     acc->add_flag("!--no-textures", a.config.textures, "skip the texture-filter section");
     acc->add_flag("!--no-sampling", a.config.sampling,
                   "skip stage 10's error against samples per pixel");
+    acc->add_flag("!--no-mis", a.config.mis,
+                  "skip stage 11's light strategies (NEE, BSDF, MIS) against time");
     acc->add_flag("!--no-timing", a.config.timing, "classification only");
 
     return acc;

@@ -29,7 +29,9 @@ Image8 render_with(PreparedScene& scene, int spp, std::uint64_t seed, double* ms
     return to_image8(image);
 }
 
-double rmse(const Image8& a, const Image8& b) {
+}  // namespace
+
+double rmse8(const Image8& a, const Image8& b) {
     double sum = 0;
     for (std::size_t i = 0; i < a.data.size(); ++i) {
         const double d = double(a.data[i]) - double(b.data[i]);
@@ -37,8 +39,6 @@ double rmse(const Image8& a, const Image8& b) {
     }
     return std::sqrt(sum / double(a.data.size()));
 }
-
-}  // namespace
 
 SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
                                       const std::function<void(const std::string&)>& progress) {
@@ -58,7 +58,7 @@ SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
             SamplingPoint p;
             p.scene = name, p.spp = spp;
             const Image8 image = render_with(scene, spp, seed, &p.ms);
-            p.rmse = rmse(image, reference);
+            p.rmse = rmse8(image, reference);
             p.block_percent = compare_images(image, reference, grader).failing_percent;
             series.points.push_back(p);
         }

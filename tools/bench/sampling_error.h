@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+namespace rt {
+struct Image8;  // image/image.h
+}  // namespace rt
+
 namespace rt::bench {
 
 struct SamplingPoint {
@@ -27,6 +31,9 @@ struct SamplingSeries {
 // The least-squares slope of log(RMSE) against log(spp) of one scene's points (-0.5 expected;
 // in rt_accuracy, report_data.cpp, with the report writers that print it).
 double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& scene);
+
+// The root mean square difference of two images of one size, in 8-bit units (rt_sampling_bench).
+double rmse8(const Image8& a, const Image8& b);
 
 // Renders stages/10-sampling/scenes/*.json at width x height (rt_sampling_bench).
 SamplingSeries measure_sampling_error(int width, int height, int reference_spp,

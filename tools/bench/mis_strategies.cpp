@@ -1,0 +1,201 @@
+// Stage 11's light strategies against time: see mis_strategies.h. The path loop follows
+// path_radiance's contract (framework/stage_api/stage11.h) step for step and draws the same
+// random numbers, so that only the light weights differ between the strategies.
+#include "bench/mis_strategies.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "bench/sampling_error.h"
+#include "core/parallel_for.h"
+#include "core/sample_stream.h"
+#include "core/source_dir.h"
+#include "image/image.h"
+#include "render/camera_ray.h"
+#include "render/prepare.h"
+#include "render/render.h"
+#include "scene/area_light_hit.h"
+#include "scene/scene_loader.h"
+#include "stage_api/stage06.h"
+#include "stage_api/stage10.h"
+#include "stage_api/stage11.h"
+
+namespace rt::bench {
+namespace {
+
+const AreaLight& pick_light(const PreparedScene& scene, Real u_light) {
+    const std::size_t count = scene.area_lights.size();
+    return scene.area_lights[std::min(count - 1, std::size_t(u_light * Real(count)))];
+}
+
+// The solid-angle density with which next-event estimation picks `direction` (one light of N).
+Real light_pdf(const PreparedScene& scene, const AreaLight& light, const Vec3& from,
+               const Vec3& direction) {
+    const Real pdf = light.kind == AreaLightKind::Rectangle ? rectangle_pdf(light, from, direction)
+                                                            : sphere_pdf(light, from, direction);
+    return pdf / Real(scene.area_lights.size());
+}
+
+// Next-event estimation at full weight: sample_light_mis's estimate without the power heuristic.
+Color sample_light_alone(const PreparedScene& scene, const SurfacePoint& at, const Onb& frame,
+                         const Material& material, const Vec3& wo, Real u_light, Vec2 u) {
+    if (scene.area_lights.empty()) return Color(0);
+    const AreaLight& light = pick_light(scene, u_light);
+    const AreaSample a = light.kind == AreaLightKind::Rectangle
+                             ? sample_rectangle(light, at.point, u)
+                             : sample_sphere(light, at.point, u);
+    if (!(a.pdf > 0)) return Color(0);
+    const Vec3 to_light = a.point - at.point;
+    const Real distance = glm::length(to_light);
+    const Vec3 direction = to_light / distance;
+    if (glm::dot(a.normal, direction) >= 0) return Color(0);
+    const Vec3 wi = frame.to_local(direction);
+    const Color f = eval_bsdf(material, wo, wi);
+    if (f == Color(0)) return Color(0);
+    Hit blocker;
+    const Vec3 side = glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal;
+    if (nearest_hit(scene, spawn_ray(at, side, direction), Interval{0, distance * Real(0.9999)},
+                    blocker))
+        return Color(0);
+    const Real p_light = a.pdf / Real(scene.area_lights.size());
+    return f * light.radiance * float(std::abs(wi.z) / p_light);
+}
+
+// The weight of a light that a BSDF bounce meets. A camera ray or a delta bounce (full_weight)
+// had no light sample to compete with, so every strategy counts it in full.
+Real bounce_light_weight(const PreparedScene& scene, LightStrategy strategy, bool full_weight,
+                         Real bounce_pdf, const AreaLight& light, const Ray& ray) {
+    if (full_weight || strategy == LightStrategy::Bsdf) return 1;
+    if (strategy == LightStrategy::Nee) return 0;
+    return power_heuristic(bounce_pdf,
+                           light_pdf(scene, light, ray.origin, glm::normalize(ray.direction)));
+}
+
+// What the light sample adds at a vertex: nothing for BSDF sampling alone (the random numbers
+// are drawn all the same, so that the strategies walk the same paths).
+Color light_sample(const PreparedScene& scene, LightStrategy strategy, const SurfacePoint& at,
+                   const Onb& frame, const Material& material, const Vec3& wo,
+                   SampleStream& stream) {
+    const Real u_light = stream.next();
+    const Vec2 u = stream.next2();
+    switch (strategy) {
+        case LightStrategy::Nee:
+            return sample_light_alone(scene, at, frame, material, wo, u_light, u);
+        case LightStrategy::Mis:
+            return sample_light_mis(scene, at, frame, material, wo, u_light, u);
+        case LightStrategy::Bsdf:
+            break;
+    }
+    return Color(0);
+}
+
+Image8 render_strategy(const PreparedScene& scene, LightStrategy strategy, int spp,
+                       std::uint64_t seed) {
+    const int width = scene.image.width, height = scene.image.height;
+    Image image(width, height);
+    parallel_for(std::size_t(height), resolve_thread_count(0), [&](std::size_t row) {
+        const int y = int(row);
+        for (int x = 0; x < width; ++x) {
+            Color sum(0);
+            for (int s = 0; s < spp; ++s) {  // as render/sampled.cpp's sample_pixel
+                SampleStream stream(seed, std::uint64_t(y) * std::uint64_t(width) + x,
+                                    std::uint64_t(s));
+                const Vec2 offset = box_filter_offset(stratified_sample(s, spp, stream.next2()));
+                const Ray ray = camera_ray(scene.camera,
+                                           Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)) + offset,
+                                           scene.image);
+                sum += strategy_radiance(scene, ray, stream, strategy);
+            }
+            image.at(x, y) = sum / float(spp);
+        }
+    });
+    return to_image8(image);
+}
+
+}  // namespace
+
+const char* strategy_name(LightStrategy strategy) {
+    switch (strategy) {
+        case LightStrategy::Nee:
+            return "NEE";
+        case LightStrategy::Bsdf:
+            return "BSDF";
+        case LightStrategy::Mis:
+            return "MIS";
+    }
+    return "?";
+}
+
+Color strategy_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStream& stream,
+                        LightStrategy strategy) {
+    Color radiance(0), throughput(1);
+    Ray ray = camera_ray;
+    bool full_weight = true;
+    Real bounce_pdf = 0;
+    for (int depth = 0;; ++depth) {
+        Hit hit;
+        const bool found = nearest_hit(scene, ray, Interval{0, kInfinity}, hit);
+        const AreaLightHit light = nearest_area_light(scene, ray, Interval{0, hit.t});
+        if (light.light >= 0) {
+            const AreaLight& l = scene.area_lights[std::size_t(light.light)];
+            const Real w = bounce_light_weight(scene, strategy, full_weight, bounce_pdf, l, ray);
+            radiance += throughput * light.radiance * float(w);
+            break;
+        }
+        if (!found) {
+            radiance += throughput * scene.background;
+            break;
+        }
+        const SurfacePoint at = surface_point(scene, ray, hit);
+        const Material& material = scene.materials[std::size_t(hit.material)];
+        radiance += throughput * material.emissive;
+        if (depth >= scene.max_depth) break;
+        const Onb frame = onb_around(at.front_face ? at.normal : -at.normal);
+        const Vec3 wo = frame.to_local(-glm::normalize(ray.direction));
+        radiance += throughput * light_sample(scene, strategy, at, frame, material, wo, stream);
+        const Real u_lobe = stream.next();
+        const BsdfSample s = sample_bsdf(material, wo, u_lobe, stream.next2());
+        if (s.weight == Color(0)) break;
+        throughput *= s.weight;
+        full_weight = s.delta, bounce_pdf = s.pdf;
+        const Vec3 direction = frame.to_world(s.wi);
+        ray = spawn_ray(at, glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal, direction);
+        if (depth >= 3) {
+            const Real q =
+                std::min(Real(0.95), Real(std::max({throughput.r, throughput.g, throughput.b})));
+            if (stream.next() >= q) break;
+            throughput /= float(q);
+        }
+    }
+    return radiance;
+}
+
+MisSeries measure_mis_strategies(const std::function<void(const std::string&)>& progress) {
+    MisSeries series;
+    series.scene = "stages/11-path-tracing/scenes/veach_mis.json";
+    series.reference = "reference_images/11-path-tracing/veach_mis.png";
+    series.threads = resolve_thread_count(0);
+    const PreparedScene scene = prepare_scene(load_scene(source_dir() / series.scene));
+    series.width = scene.image.width, series.height = scene.image.height;
+    const Image8 reference = read_image8(source_dir() / series.reference);
+    // The reference is the scene's seed at 2048 samples: another seed keeps the noise apart.
+    const std::uint64_t seed = scene.sampling.seed + 1000;
+    for (LightStrategy strategy : {LightStrategy::Nee, LightStrategy::Bsdf, LightStrategy::Mis}) {
+        for (int spp = 1; spp <= 256; spp *= 4) {
+            MisPoint p;
+            p.strategy = strategy_name(strategy), p.spp = spp;
+            const auto start = std::chrono::steady_clock::now();
+            const Image8 image = render_strategy(scene, strategy, spp, seed);
+            p.ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            p.rmse = rmse8(image, reference);
+            series.points.push_back(p);
+        }
+        if (progress) progress(std::string("mis: ") + strategy_name(strategy));
+    }
+    return series;
+}
+
+}  // namespace rt::bench

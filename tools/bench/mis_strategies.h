@@ -1,0 +1,58 @@
+// The accuracy lab's stage 11 rows (docs/accuracy.md, "Multiple importance sampling"): Veach's
+// scene (stages/11-path-tracing/scenes/veach_mis.json) path traced with next-event estimation
+// alone, BSDF sampling alone and both combined by MIS, each at 1 to 256 samples per pixel, timed
+// and compared with the stage's reference image. The three differ only in how a light's
+// contribution is counted; every other step is the reference solution's (stage 11's bsdf.cpp and
+// stage 10's light sampling), so the curve measures the strategy and nothing else.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/ray.h"
+#include "core/real.h"
+
+namespace rt {
+class SampleStream;    // core/sample_stream.h
+struct PreparedScene;  // scene/prepared_scene.h
+}  // namespace rt
+
+namespace rt::bench {
+
+enum class LightStrategy {
+    Nee,   // lights only by next-event estimation; a BSDF bounce that meets a light adds nothing
+    Bsdf,  // lights only when a BSDF bounce meets them; no shadow rays
+    Mis,   // both, weighted by the power heuristic: what stage 11's path_radiance computes
+};
+const char* strategy_name(LightStrategy strategy);
+
+// One camera sample's radiance under `strategy`. With Mis it is path_radiance's, bit for bit
+// (Bench.Mis.MisIsThePathTracer checks it), so the lab's MIS line is the stage's own renderer.
+Color strategy_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStream& stream,
+                        LightStrategy strategy);
+
+struct MisPoint {
+    std::string strategy;
+    int spp = 1;
+    double ms = 0;    // the render, all threads
+    double rmse = 0;  // 8-bit sRGB units against the reference image
+};
+
+struct MisSeries {
+    std::vector<MisPoint> points;
+    int width = 0, height = 0, threads = 0;
+    std::string scene, reference;  // paths relative to the source tree
+};
+
+// The error the strategy's line would have at `ms` (log-log interpolation between its points; a
+// time outside the line's range takes the nearest end's error). -1 without points. In
+// rt_accuracy (report_data.cpp), with the report writers that print it; the rest of this header
+// is rt_sampling_bench's, which links the reference solution.
+double rmse_at_time(const std::vector<MisPoint>& points, const std::string& strategy, double ms);
+
+// Renders veach_mis at its own size with each strategy at 1, 4, 16, 64 and 256 samples per pixel
+// (another seed than the reference's, so their noise is independent).
+MisSeries measure_mis_strategies(const std::function<void(const std::string&)>& progress);
+
+}  // namespace rt::bench
