@@ -1,8 +1,10 @@
 #include "scene/bvh_primitives.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "core/parallel_for.h"
 #include "scene/prepared_scene.h"
 #include "scene/transform.h"
 
@@ -51,16 +53,23 @@ std::vector<BvhPrimitive> bvh_primitives(const Scene& scene) {
         }
         add(box, Scene::Kind::Sphere, i);
     }
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        Vec3 a, b, c;
-        scene.triangle_vertices(i, a, b, c);
-        Aabb box;
-        for (const Vec3& p : {a, b, c}) {
-            box.grow(down(p));
-            box.grow(up(p));
+    // Triangles, the bulk of a mesh scene, in chunks on every core (each writes its own slots).
+    const std::size_t first = out.size(), triangles = scene.triangles.size();
+    constexpr std::size_t kChunk = 16384;
+    out.resize(first + triangles);
+    parallel_for((triangles + kChunk - 1) / kChunk, default_thread_count(), [&](std::size_t c) {
+        for (std::size_t i = c * kChunk; i < std::min(triangles, (c + 1) * kChunk); ++i) {
+            Vec3 a, b, c;
+            scene.triangle_vertices(i, a, b, c);
+            Aabb box;
+            for (const Vec3& p : {a, b, c}) {
+                box.grow(down(p));
+                box.grow(up(p));
+            }
+            out[first + i] = BvhPrimitive{
+                box, box.center(), std::uint32_t(scene.primitive_id(Scene::Kind::Triangle, i))};
         }
-        add(box, Scene::Kind::Triangle, i);
-    }
+    });
     for (std::size_t i = 0; i < scene.boxes.size(); ++i)
         add(Aabb{down(scene.boxes[i].min), up(scene.boxes[i].max)}, Scene::Kind::Box, i);
     // Instances: each object's box (made once), mapped to the world.

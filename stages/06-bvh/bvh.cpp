@@ -4,12 +4,67 @@
 // You edit only this file. Tests: ctest --test-dir build -L stage06 --output-on-failure
 // Check a tree any time with validate_bvh (framework/accel/bvh.h): it names the first problem.
 #include <algorithm>
-#include <thread>
 
 #include "core/not_implemented.h"
+#include "core/parallel_for.h"
 #include "stage_api/stage06.h"
 
 namespace rt {
+
+// BEGIN SOLUTION
+namespace {
+
+// A box as two 4-wide vectors (x, y, z and an unused lane), a GCC and Clang vector extension:
+// min and max of all lanes compile to one SSE instruction each. Min and max round nothing, so
+// the box is exactly the Aabb it stands for.
+using Lanes = float __attribute__((vector_size(16)));
+
+// No default member initialisers: an array of kMaxBins of them would be filled on every call.
+struct Box4 {
+    Lanes min, max;
+
+    static Box4 empty() {
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        return Box4{Lanes{inf, inf, inf, inf}, Lanes{-inf, -inf, -inf, -inf}};
+    }
+    static Box4 of(const Aabb& b) {
+        return Box4{Lanes{b.min.x, b.min.y, b.min.z, 0}, Lanes{b.max.x, b.max.y, b.max.z, 0}};
+    }
+    void grow(const Box4& b) {
+        min = b.min < min ? b.min : min;
+        max = b.max > max ? b.max : max;
+    }
+    Aabb aabb() const { return Aabb{Vec3f(min[0], min[1], min[2]), Vec3f(max[0], max[1], max[2])}; }
+};
+
+// Every axis's bins over some primitives: the box and count of those whose centroid falls in
+// each. All three axes are binned in one pass over the primitives.
+struct Bins {
+    Box4 box[3][kMaxBins];
+    std::uint32_t count[3][kMaxBins];
+
+    // Only the bins in use are cleared: a small node should not pay for kMaxBins.
+    explicit Bins(int bins) {
+        for (int axis = 0; axis < 3; ++axis)
+            for (int k = 0; k < bins; ++k) box[axis][k] = Box4::empty(), count[axis][k] = 0;
+    }
+    void add(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
+             const Aabb& centroids, const float (&scale)[3], int bins) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const Box4 b = Box4::of(prims[i].bounds);
+            for (int axis = 0; axis < 3; ++axis) {
+                if (!(scale[axis] > 0)) continue;  // the centroids do not spread on this axis
+                const int k =
+                    bin_of(prims[i].centroid[axis], centroids.min[axis], scale[axis], bins);
+                box[axis][k].grow(b);
+                ++count[axis][k];
+            }
+        }
+    }
+};
+
+}  // namespace
+// END SOLUTION
 
 // Try every boundary between bins on every axis; keep the cheapest by the SAH cost model.
 SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
@@ -24,64 +79,55 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     const float inv_area = area > 0 ? 1 / area : 0;
     const int bins = std::clamp(options.bins, 2, kMaxBins);
 
-    // All three axes binned in one pass over the primitives. Only the bins in use are cleared
-    // (no default initialisers: a node of a few primitives should not pay for kMaxBins bins).
-    struct Bin {
-        Vec3f min, max;
-        std::uint32_t count;
-    };
-    Bin bin[3][kMaxBins];
     bool spread[3];
     float scale[3];
     for (int axis = 0; axis < 3; ++axis) {
         spread[axis] = centroids.max[axis] > centroids.min[axis];
         scale[axis] = spread[axis] ? float(bins) / (centroids.max[axis] - centroids.min[axis]) : 0;
-        for (int k = 0; k < bins; ++k) bin[axis][k] = Bin{Aabb{}.min, Aabb{}.max, 0};
     }
-    for (std::size_t i = begin; i < end; ++i)
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!spread[axis]) continue;
-            Bin& b =
-                bin[axis][bin_of(prims[i].centroid[axis], centroids.min[axis], scale[axis], bins)];
-            b.min = glm::min(b.min, prims[i].bounds.min);
-            b.max = glm::max(b.max, prims[i].bounds.max);
-            ++b.count;
-        }
+    Bins binned(bins);
+    binned.add(prims, begin, end, centroids, scale, bins);
+    const auto& bin = binned.box;
+    const auto& bin_count = binned.count;
 
     SahSplit best;
     for (int axis = 0; axis < 3; ++axis) {
         if (!spread[axis]) continue;
-        // Right-hand sides of every boundary k (bins k .. bins-1), swept from the right.
+        // Only the bins in use matter: every boundary between two of them (after used[j - 1],
+        // before used[j]) splits the primitives the same way, so only the lowest, used[j - 1] + 1,
+        // is costed (a tie goes to the lower bin). A small node has few bins in use.
+        int used[kMaxBins], m = 0;
+        for (int k = 0; k < bins; ++k)
+            if (bin_count[axis][k] > 0) used[m++] = k;
+        // Right-hand sides (bins used[j] .. used[m - 1]), swept from the right.
         float right_area[kMaxBins];
         std::uint32_t right_count[kMaxBins];
-        Aabb box;
+        Box4 box = Box4::empty();
         std::uint32_t count = 0;
-        for (int k = bins - 1; k >= 1; --k) {
-            box.grow(Aabb{bin[axis][k].min, bin[axis][k].max});
-            count += bin[axis][k].count;
-            right_area[k] = box.surface_area();
-            right_count[k] = count;
+        for (int j = m - 1; j >= 1; --j) {
+            box.grow(bin[axis][used[j]]);
+            count += bin_count[axis][used[j]];
+            right_area[j] = box.aabb().surface_area();
+            right_count[j] = count;
         }
-        box = Aabb{};
+        box = Box4::empty();
         count = 0;
-        for (int k = 1; k < bins; ++k) {
-            box.grow(Aabb{bin[axis][k - 1].min, bin[axis][k - 1].max});
-            count += bin[axis][k - 1].count;
-            if (count == 0 || right_count[k] == 0) continue;
-            const float cost = options.traversal_cost + (box.surface_area() * float(count) +
-                                                         right_area[k] * float(right_count[k])) *
+        for (int j = 1; j < m; ++j) {
+            box.grow(bin[axis][used[j - 1]]);
+            count += bin_count[axis][used[j - 1]];
+            const float cost = options.traversal_cost + (box.aabb().surface_area() * float(count) +
+                                                         right_area[j] * float(right_count[j])) *
                                                             inv_area;
-            if (cost < best.cost) best.axis = axis, best.bin = k, best.cost = cost;
+            if (cost < best.cost) best.axis = axis, best.bin = used[j - 1] + 1, best.cost = cost;
         }
     }
     if (best.axis >= 0) {  // the two sides' boxes and counts, from the chosen axis's bins
         best.centroid_lo = centroids.min[best.axis];
         best.scale = scale[best.axis];
         for (int k = 0; k < bins; ++k) {
-            const Bin& b = bin[best.axis][k];
-            if (b.count == 0) continue;
-            (k < best.bin ? best.left_bounds : best.right_bounds).grow(Aabb{b.min, b.max});
-            (k < best.bin ? best.left_count : best.right_count) += b.count;
+            if (bin_count[best.axis][k] == 0) continue;
+            (k < best.bin ? best.left_bounds : best.right_bounds).grow(bin[best.axis][k].aabb());
+            (k < best.bin ? best.left_count : best.right_count) += bin_count[best.axis][k];
         }
     }
     return best;
@@ -102,37 +148,46 @@ struct BuildTask {
     int depth;
 };
 
+// What splitting a task decided: its primitives [begin, mid) go left and [mid, end) right, with
+// those boxes; mid == begin means the node is a leaf.
+struct Split {
+    std::uint32_t mid;
+    Aabb left_bounds, right_bounds;
+};
+
 // Top-down building over a work list instead of recursion: a degenerate mesh may make a deep tree.
 class TreeBuilder {
   public:
     TreeBuilder(std::vector<BvhPrimitive>& prims, const BvhBuildOptions& options, Bvh& bvh)
         : prims_(prims), options_(options), bvh_(bvh) {}
 
-    // Makes task.node a leaf, or splits it: partitions its primitives, appends its two children
-    // (boxes set, adjacent) to `nodes` and their tasks to `tasks`, left task last.
-    void split_node(const BuildTask& task, std::vector<BvhNode>& nodes,
-                    std::vector<BuildTask>& tasks) const {
-        const std::uint32_t count = task.end - task.begin;
-        const std::uint32_t mid = partition(task);
-        if (mid == task.begin || mid == task.end) {  // a leaf (or, defensively, an empty side)
+    // Decides the task's node and partitions its primitives; a leaf's ids go to bvh.primitives.
+    // Touches only the task's own range, so tasks of disjoint ranges may run side by side.
+    Split split(const BuildTask& task) const {
+        Split s{task.begin, {}, {}};
+        s.mid = partition(task, s.left_bounds, s.right_bounds);
+        if (s.mid == task.end) s.mid = task.begin;  // defensively: an empty side makes a leaf
+        if (s.mid == task.begin)
             for (std::uint32_t i = task.begin; i < task.end; ++i) bvh_.primitives[i] = prims_[i].id;
+        return s;
+    }
+
+    // Writes the split into task.node: a leaf, or two children (boxes set, adjacent) appended to
+    // `nodes`, whose tasks go to `tasks`, left task last.
+    static void attach(const BuildTask& task, const Split& s, std::vector<BvhNode>& nodes,
+                       std::vector<BuildTask>& tasks) {
+        if (s.mid == task.begin) {
             nodes[task.node].first = task.begin;
-            nodes[task.node].count = count;
+            nodes[task.node].count = task.end - task.begin;
             return;
         }
-        // The children's boxes come from the primitives each side really got, not from the
-        // split's bins: if the compiler evaluated bin_of a little differently here than in
-        // find_sah_split (as -ffast-math allows), the tree must still be valid.
-        Aabb left_bounds, right_bounds;
-        for (std::uint32_t i = task.begin; i < mid; ++i) left_bounds.grow(prims_[i].bounds);
-        for (std::uint32_t i = mid; i < task.end; ++i) right_bounds.grow(prims_[i].bounds);
         const std::uint32_t left = std::uint32_t(nodes.size());
-        nodes.push_back(BvhNode{left_bounds.min, 0, left_bounds.max, 0});
-        nodes.push_back(BvhNode{right_bounds.min, 0, right_bounds.max, 0});
+        nodes.push_back(BvhNode{s.left_bounds.min, 0, s.left_bounds.max, 0});
+        nodes.push_back(BvhNode{s.right_bounds.min, 0, s.right_bounds.max, 0});
         nodes[task.node].first = left;
         nodes[task.node].count = 0;
-        tasks.push_back({left + 1, mid, task.end, task.depth + 1});
-        tasks.push_back({left, task.begin, mid, task.depth + 1});
+        tasks.push_back({left + 1, s.mid, task.end, task.depth + 1});
+        tasks.push_back({left, task.begin, s.mid, task.depth + 1});
     }
 
     // Builds the subtree of `task` into `nodes`, its root at task.node.
@@ -141,14 +196,14 @@ class TreeBuilder {
         while (!tasks.empty()) {
             const BuildTask next = tasks.back();
             tasks.pop_back();
-            split_node(next, nodes, tasks);
+            attach(next, split(next), nodes, tasks);
         }
     }
 
   private:
     // Where the task's primitives split: the first index of the right side, or task.begin when
     // the SAH says a leaf costs less (or the node is small or deep enough to be one).
-    std::uint32_t partition(const BuildTask& task) const {
+    std::uint32_t partition(const BuildTask& task, Aabb& left_bounds, Aabb& right_bounds) const {
         const std::uint32_t count = task.end - task.begin;
         SahSplit split;
         if (count > std::uint32_t(options_.max_leaf_size) && task.depth < kBvhMaxDepth)
@@ -160,9 +215,31 @@ class TreeBuilder {
         const auto left_side = [&](const BvhPrimitive& p) {
             return bin_of(p.centroid[axis], split.centroid_lo, split.scale, bins) < split.bin;
         };
-        return std::uint32_t(
-            std::partition(prims_.begin() + task.begin, prims_.begin() + task.end, left_side) -
-            prims_.begin());
+        return partition_growing(task.begin, task.end, left_side, left_bounds, right_bounds);
+    }
+
+    // std::partition's own steps (so the order, and the tree, are the same), growing each side's
+    // box from the primitives it really gets as they are placed: one pass instead of two. The
+    // boxes do not come from the split's bins, so the tree stays valid even if the compiler
+    // evaluated bin_of a little differently here than in find_sah_split (as -ffast-math allows).
+    template <typename LeftSide>
+    std::uint32_t partition_growing(std::uint32_t first, std::uint32_t last, LeftSide left_side,
+                                    Aabb& left_bounds, Aabb& right_bounds) const {
+        for (;;) {
+            while (first != last && left_side(prims_[first]))
+                left_bounds.grow(prims_[first++].bounds);
+            if (first == last) return first;
+            --last;  // prims_[first] goes right: find a left one from the end to swap it with
+            while (first != last && !left_side(prims_[last]))
+                right_bounds.grow(prims_[last--].bounds);
+            if (first == last) {
+                right_bounds.grow(prims_[first].bounds);
+                return first;
+            }
+            std::swap(prims_[first], prims_[last]);
+            left_bounds.grow(prims_[first++].bounds);
+            right_bounds.grow(prims_[last].bounds);
+        }
     }
 
     std::vector<BvhPrimitive>& prims_;
@@ -170,21 +247,15 @@ class TreeBuilder {
     Bvh& bvh_;
 };
 
-// Lays the root's two subtrees (each built with its root at local index 0) out after the root:
-// root, left child, right child, the rest of the left subtree, the rest of the right.
-void place_subtrees(const std::vector<BvhNode> (&sub)[2], Bvh& bvh) {
-    bvh.nodes.resize(1 + sub[0].size() + sub[1].size());
-    std::uint32_t offset = 3;  // where the subtree's nodes after its root go
-    for (std::uint32_t side = 0; side < 2; ++side) {
-        const auto place = [&](std::uint32_t local) {
-            return local == 0 ? 1 + side : offset + local - 1;
-        };
-        for (std::uint32_t local = 0; local < sub[side].size(); ++local) {
-            BvhNode node = sub[side][local];
-            if (!node.is_leaf()) node.first = place(node.first);
-            bvh.nodes[place(local)] = node;
-        }
-        offset += std::uint32_t(sub[side].size()) - 1;
+// Copies a subtree built with its root at local index 0 into `nodes`: its root to `root` (a
+// node already there), the others from `offset` on, child links moved along.
+void place_subtree(const std::vector<BvhNode>& sub, std::uint32_t root, std::uint32_t offset,
+                   std::vector<BvhNode>& nodes) {
+    const auto place = [&](std::uint32_t local) { return local == 0 ? root : offset + local - 1; };
+    for (std::uint32_t local = 0; local < sub.size(); ++local) {
+        BvhNode node = sub[local];
+        if (!node.is_leaf()) node.first = place(node.first);
+        nodes[place(local)] = node;
     }
 }
 
@@ -201,32 +272,60 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
     const std::uint32_t n = std::uint32_t(prims.size());
     bvh.primitives.resize(n);
     const TreeBuilder builder(prims, options, bvh);
+    const int threads = default_thread_count();
 
-    Aabb root_bounds;
-    for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
-    bvh.nodes.push_back(BvhNode{root_bounds.min, 0, root_bounds.max, 0});
-    std::vector<BuildTask> children;
-    builder.split_node({0, 0, n, 1}, bvh.nodes, children);
-    if (children.empty()) return;  // the root is a leaf
+    bvh.nodes.push_back(BvhNode{});  // the root; its box is set once it is split (below)
 
-    // The root's two subtrees are independent: build each into a vector of its own (its root at
-    // local index 0), the right one on a second thread when the mesh is large. The layout does
-    // not depend on the thread, so the tree is the same on every run.
-    std::vector<BvhNode> sub[2] = {{bvh.nodes[1]}, {bvh.nodes[2]}};
-    const BuildTask left_task{0, children[1].begin, children[1].end, 2};
-    const BuildTask right_task{0, children[0].begin, children[0].end, 2};
-    sub[0].reserve(2 * std::size_t(left_task.end - left_task.begin));
-    sub[1].reserve(2 * std::size_t(right_task.end - right_task.begin));
-    constexpr std::uint32_t kParallelFrom = 20000;  // below, a thread costs more than it saves
-    if (n >= kParallelFrom && std::thread::hardware_concurrency() > 1) {
-        std::thread right([&] { builder.build_subtree(right_task, sub[1]); });
-        builder.build_subtree(left_task, sub[0]);
-        right.join();
-    } else {
-        builder.build_subtree(left_task, sub[0]);
-        builder.build_subtree(right_task, sub[1]);
+    // Nodes of many primitives are split a level at a time, the nodes of a level side by side;
+    // below kSubtree primitives a node's whole subtree is one job. Neither depends on the
+    // number of threads, so the tree and its layout are the same on every run.
+    constexpr std::uint32_t kSubtree = 4096;
+    std::vector<BuildTask> level{{0, 0, n, 1}}, jobs;
+    while (!level.empty()) {
+        std::vector<Split> splits(level.size());
+        parallel_for(level.size(), threads,
+                     [&](std::size_t i) { splits[i] = builder.split(level[i]); });
+        std::vector<BuildTask> next;
+        for (std::size_t i = 0; i < level.size(); ++i)
+            TreeBuilder::attach(level[i], splits[i], bvh.nodes, next);
+        level.clear();
+        for (const BuildTask& task : next)
+            (task.end - task.begin > kSubtree ? level : jobs).push_back(task);
     }
-    place_subtrees(sub, bvh);
+
+    // The root's box is its children's (a pass over every primitive only for it would cost
+    // as much as a level), or its primitives' when it is a leaf.
+    BvhNode& root = bvh.nodes[0];
+    Aabb root_bounds;
+    if (root.is_leaf())
+        for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
+    else
+        root_bounds = bvh.nodes[root.first].bounds(),
+        root_bounds.grow(bvh.nodes[root.first + 1].bounds());
+    root.min = root_bounds.min, root.max = root_bounds.max;
+
+    // The jobs, largest first, each into a vector of its own (its root at local index 0).
+    std::vector<std::size_t> order(jobs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return jobs[a].end - jobs[a].begin > jobs[b].end - jobs[b].begin;
+    });
+    std::vector<std::vector<BvhNode>> sub(jobs.size());
+    parallel_for(order.size(), threads, [&](std::size_t k) {
+        const BuildTask& job = jobs[order[k]];
+        std::vector<BvhNode>& nodes = sub[order[k]];
+        nodes.reserve(2 * std::size_t(job.end - job.begin));
+        nodes.push_back(bvh.nodes[job.node]);
+        builder.build_subtree({0, job.begin, job.end, job.depth}, nodes);
+    });
+    // Each subtree after the nodes above them, in the order the jobs were found.
+    std::vector<std::uint32_t> offset(jobs.size());
+    std::size_t total = bvh.nodes.size();
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        offset[i] = std::uint32_t(total), total += sub[i].size() - 1;
+    bvh.nodes.resize(total);
+    parallel_for(jobs.size(), threads,
+                 [&](std::size_t i) { place_subtree(sub[i], jobs[i].node, offset[i], bvh.nodes); });
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#building-the-tree");
     // (void)prims; (void)options; (void)bvh;

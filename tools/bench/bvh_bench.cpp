@@ -291,10 +291,9 @@ class BvhBench {
         else if (const Timing* t = find("brute-force", 1, "primary"); t && !t->note.empty())
             out_ << "  brute-force: timed on at most " << grouped(brute_rays_)
                  << " rays of each kind (evenly spread; --brute-force-rays)\n";
-        out_ << "  bvh build: bvh_primitives + build_bvh (the reference builder splits the root, "
-                "then "
-                "builds its two "
-                "subtrees on two threads whatever --threads says)";
+        out_ << "  bvh build: bvh_primitives + build_bvh (both use every core whatever --threads "
+                "says: the reference splits the top levels side by side, then builds subtrees of "
+                "up to 4096 primitives as parallel jobs)";
         if (have_embree_)
             out_ << "; embree build: buffers + rtcCommitScene, default quality, on `threads` build "
                     "threads";
