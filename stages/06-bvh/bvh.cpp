@@ -63,7 +63,36 @@ struct Bins {
     }
 };
 
+// intersect_node's slab test, compiled into the nearest-hit traversal's loop.
+[[gnu::always_inline]] inline bool slab_test(const BvhNode& node, const Ray& ray,
+                                             const Vec3& inv_direction, Interval t_range,
+                                             Real& t_entry) {
+    // gamma(3) of Higham and pbrt: a bound on the relative rounding error of the distances.
+    constexpr Real eps = std::numeric_limits<Real>::epsilon() / 2;
+    constexpr Real growth = 1 + 2 * (3 * eps) / (1 - 3 * eps);
+    Real t0 = t_range.min, t1 = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        // The near side of the slab is min for a positive direction, max for a negative one.
+        // Choosing by sign (instead of swapping the two distances) leaves a NaN (0 * inf: origin
+        // on the slab's plane, direction parallel to it) where the comparisons below ignore it.
+        const bool negative = inv_direction[axis] < 0;
+        const Real near_side = negative ? node.max[axis] : node.min[axis];
+        const Real far_side = negative ? node.min[axis] : node.max[axis];
+        const Real near = (near_side - ray.origin[axis]) * inv_direction[axis];
+        const Real far = (far_side - ray.origin[axis]) * inv_direction[axis];
+        t0 = near > t0 ? near : t0;  // no early exit: straight-line min/max code is faster
+        t1 = far < t1 ? far : t1;
+    }
+    // Widen the exit once (rounding is monotonic: the same as widening each far distance).
+    t1 *= growth;
+    t1 = t_range.max < t1 ? t_range.max : t1;
+    t_entry = t0;
+    return t0 <= t1;
+}
+
 }  // namespace
+// STUB
+// // Helper functions of your own may go here (an anonymous namespace keeps them in this file).
 // END SOLUTION
 
 // Try every boundary between bins on every axis; keep the cheapest by the SAH cost model.
@@ -336,27 +365,7 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
 bool intersect_node(const BvhNode& node, const Ray& ray, const Vec3& inv_direction,
                     Interval t_range, Real& t_entry) {
     // BEGIN SOLUTION
-    // gamma(3) of Higham and pbrt: a bound on the relative rounding error of the distances.
-    constexpr Real eps = std::numeric_limits<Real>::epsilon() / 2;
-    constexpr Real growth = 1 + 2 * (3 * eps) / (1 - 3 * eps);
-    Real t0 = t_range.min, t1 = kInfinity;
-    for (int axis = 0; axis < 3; ++axis) {
-        // The near side of the slab is min for a positive direction, max for a negative one.
-        // Choosing by sign (instead of swapping the two distances) leaves a NaN (0 * inf: origin
-        // on the slab's plane, direction parallel to it) where the comparisons below ignore it.
-        const bool negative = inv_direction[axis] < 0;
-        const Real near_side = negative ? node.max[axis] : node.min[axis];
-        const Real far_side = negative ? node.min[axis] : node.max[axis];
-        const Real near = (near_side - ray.origin[axis]) * inv_direction[axis];
-        const Real far = (far_side - ray.origin[axis]) * inv_direction[axis];
-        t0 = near > t0 ? near : t0;  // no early exit: straight-line min/max code is faster
-        t1 = far < t1 ? far : t1;
-    }
-    // Widen the exit once (rounding is monotonic: the same as widening each far distance).
-    t1 *= growth;
-    t1 = t_range.max < t1 ? t_range.max : t1;
-    t_entry = t0;
-    return t0 <= t1;
+    return slab_test(node, ray, inv_direction, t_range, t_entry);
     // STUB
     // RT_NOT_IMPLEMENTED("stages/06-bvh/README.md#ray-box-slab-test");
     // (void)node; (void)ray; (void)inv_direction; (void)t_range; (void)t_entry;
@@ -387,7 +396,7 @@ bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval 
     Entry stack[kBvhMaxDepth];
     int top = 0;
     Real t_root;
-    if (intersect_node(nodes[0], ray, inv_direction, t_range, t_root)) stack[top++] = {0, t_root};
+    if (slab_test(nodes[0], ray, inv_direction, t_range, t_root)) stack[top++] = {0, t_root};
     while (top > 0) {
         const Entry entry = stack[--top];
         if (entry.t > t_range.max) continue;  // a nearer hit was found after it was pushed
@@ -396,8 +405,8 @@ bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval 
             const BvhNode* near = &nodes[node->first];
             const BvhNode* far = near + 1;
             Real t_near, t_far;
-            const bool hit_near = intersect_node(*near, ray, inv_direction, t_range, t_near);
-            const bool hit_far = intersect_node(*far, ray, inv_direction, t_range, t_far);
+            const bool hit_near = slab_test(*near, ray, inv_direction, t_range, t_near);
+            const bool hit_far = slab_test(*far, ray, inv_direction, t_range, t_far);
             visited += 2;
             if (hit_near && hit_far) {
                 if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
