@@ -293,7 +293,7 @@ class BvhBench {
                  << " rays of each kind (evenly spread; --brute-force-rays)\n";
         out_ << "  bvh build: bvh_primitives + build_bvh (both use every core whatever --threads "
                 "says: the reference splits the top levels side by side, then builds subtrees of "
-                "up to 4096 primitives as parallel jobs)";
+                "up to 16384 primitives as parallel jobs)";
         if (have_embree_)
             out_ << "; embree build: buffers + rtcCommitScene, default quality, on `threads` build "
                     "threads";
