@@ -24,6 +24,31 @@ function(rt_add_gtest target)
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
 endfunction()
 
+# rt_graded_binary(<target> <out>): <out> is ON when grading.json in the calling folder lists
+# <target> among its unit_tests' binaries (rt-grade builds and runs exactly those judges).
+function(rt_graded_binary target out)
+  set(graded OFF)
+  set(spec ${CMAKE_CURRENT_SOURCE_DIR}/grading.json)
+  if(EXISTS ${spec})
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${spec})
+    file(READ ${spec} json)
+    string(JSON count ERROR_VARIABLE problem LENGTH "${json}" unit_tests)
+    if(problem)
+      message(FATAL_ERROR "${spec}: ${problem}")
+    endif()
+    if(count GREATER 0)
+      math(EXPR last "${count} - 1")
+      foreach(i RANGE ${last})
+        string(JSON binary GET "${json}" unit_tests ${i} binary)
+        if(binary STREQUAL target)
+          set(graded ON)
+        endif()
+      endforeach()
+    endif()
+  endif()
+  set(${out} ${graded} PARENT_SCOPE)
+endfunction()
+
 # rt_stage_tests(<NN> <target> SOURCES <files...> [SCENE_IMAGES] [LABELS <extra labels...>]
 #                [LIBRARIES <libs...>])
 # A GoogleTest executable for stage NN: CTest names StageNN.<Suite>.<Test>, label stageNN plus
@@ -69,7 +94,10 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   target_link_libraries(${target}_judge PRIVATE ${target}_objects rt_test_support rt_judge
     GTest::gtest_main)
   rt_off_hot_path(${target}_judge)
-  if(NOT RT_INSTRUCTOR)
+  # Only a binary that the stage's grading.json names is ever run as a judge; the others (the
+  # optional GPU parts' binaries) leave theirs out of the build and of the Remote tests.
+  rt_graded_binary(${target} graded)
+  if(NOT RT_INSTRUCTOR OR NOT graded)
     set_target_properties(${target}_judge PROPERTIES EXCLUDE_FROM_ALL ON)
     return()
   endif()
