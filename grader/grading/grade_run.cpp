@@ -18,6 +18,7 @@
 #include "grading/stage_specs.h"
 #include "grading/test_output.h"
 #include "grading/verdict_channel.h"
+#include "sandbox/cpu_lease.h"
 #include "util.h"
 
 namespace fs = std::filesystem;
@@ -192,6 +193,8 @@ class Runner {
         worker.pass_fds = {{ends[1], kRemoteFd}};
         worker.limits = judge.limits;
         add_gpu(task, worker);
+        const CpuLease cpu;  // each waits for the other's answers: one CPU for both
+        judge.cpu = worker.cpu = cpu.cpu();
         RunResult worker_result;
         std::thread serving([&] {
             worker_result = run_sandboxed(worker);

@@ -1,5 +1,6 @@
 #include "sandbox/sandbox.h"
 #include "sandbox/confine.h"
+#include "sandbox/cpu_lease.h"
 #include "sandbox/jail.h"
 
 #include <dirent.h>
@@ -132,6 +133,7 @@ void drop_capabilities() {
     set_limit(RLIMIT_AS, rlim_t(l.address_space_mb) << 20, rlim_t(l.address_space_mb) << 20);
     set_limit(RLIMIT_FSIZE, rlim_t(l.file_size_mb) << 20, rlim_t(l.file_size_mb) << 20);
     set_limit(RLIMIT_CORE, 0, 0);
+    pin_to_cpu(spec.cpu);
     set_limit(RLIMIT_NPROC, rlim_t(l.processes), rlim_t(l.processes));
     if (uid != 0) {
         // Root ignores RLIMIT_NPROC, so untrusted code never runs as root.

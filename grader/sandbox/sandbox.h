@@ -76,6 +76,7 @@ struct RunSpec {
     // Descriptors of the grader passed to the program: {grader fd, fd number in the program}.
     // Every other descriptor of the grader is close-on-exec. Targets must be 3 or more.
     std::vector<std::pair<int, int>> pass_fds;
+    int cpu = -1;  // >= 0: the program runs on this CPU only (cpu_lease.h)
 };
 
 enum class Isolation { Namespaces, UidDrop, None };

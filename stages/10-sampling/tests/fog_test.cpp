@@ -42,8 +42,9 @@ TEST_F(Fog, FreeFlightDistancesFollowTheirDensity) {
     stats::Uniform random(21);
     for (const double sigma : {0.7, 25.0}) {
         std::vector<double> observed(kBins, 0);
-        for (int i = 0; i < kSamples; ++i) {
-            const double s = sample_free_flight(Real(sigma), random.next());
+        const auto distances = testing::call_for<&sample_free_flight>(
+            kSamples, [&](int) { return std::tuple(Real(sigma), random.next()); });
+        for (const double s : distances) {
             ASSERT_TRUE(std::isfinite(s) && s >= 0)
                 << "sample_free_flight(" << sigma << ", u) = " << s
                 << ": a distance is finite and >= 0 for u in [0, 1); " << kReadFog;
@@ -88,8 +89,9 @@ TEST_F(Fog, RaysPassASlabWithTheTransmittanceAndScatterInside) {
     const double through = std::sqrt(0.25 + 0.0625 + 2.25) / 1.5 * 2;  // path length in it
     stats::Uniform random(22);
     std::vector<double> passed;
-    for (int i = 0; i < kSamples; ++i) {
-        const FogEvent event = sample_fog(slab, ray, kInfinity, random.next());
+    const auto events = testing::call_for<&sample_fog>(
+        kSamples, [&](int) { return std::tuple(slab, ray, kInfinity, random.next()); });
+    for (const FogEvent& event : events) {
         passed.push_back(event.scattered ? 0 : 1);
         if (event.scattered) {
             const double z = ray.origin.z + event.t * ray.direction.z;

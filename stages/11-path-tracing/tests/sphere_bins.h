@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,26 +27,43 @@ struct SphereBins {
     void add(const Vec3& d) { observed[bin(d)] += 1; }
     void add_failed() { observed.back() += 1; }
 
-    // The integral of `pdf` over each bin, times `samples`; the last bin gets what is left of 1.
-    // `total` receives the integral over the sphere.
-    static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, int samples,
+    // The midpoints of the bins' sub-cells, in the order expected() reads their densities.
+    static std::vector<Vec3> grid() {
+        std::vector<Vec3> g;
+        g.reserve(std::size_t(kTheta * kSub * kPhi * kSub));
+        for (int i = 0; i < kTheta * kSub; ++i)
+            for (int j = 0; j < kPhi * kSub; ++j) g.push_back(direction(i, j));
+        return g;
+    }
+
+    // The integral of a density over each bin, times `samples`, from its values at grid()'s
+    // directions (taken in one call_each: in a grading each call would cross to the worker
+    // alone); the last bin gets what is left of 1. `total` receives the integral over the sphere.
+    template <class Density>
+    static std::vector<double> expected(const std::vector<Density>& density, int samples,
                                         double& total) {
         std::vector<double> e(kTheta * kPhi + 1, 0);
         const double dtheta = kPi / (kTheta * kSub), dphi = 2 * kPi / (kPhi * kSub);
         total = 0;
+        std::size_t k = 0;
         for (int i = 0; i < kTheta * kSub; ++i) {
             const double theta = (i + 0.5) * dtheta;
             for (int j = 0; j < kPhi * kSub; ++j) {
-                const double phi = (j + 0.5) * dphi;
-                const Vec3 d(Real(std::sin(theta) * std::cos(phi)),
-                             Real(std::sin(theta) * std::sin(phi)), Real(std::cos(theta)));
-                const double mass = pdf(d) * std::sin(theta) * dtheta * dphi;
+                const double mass = double(density[k++]) * std::sin(theta) * dtheta * dphi;
                 e[std::size_t((i / kSub) * kPhi + j / kSub)] += samples * mass;
                 total += mass;
             }
         }
         e.back() = std::max(0.0, samples * (1 - total));
         return e;
+    }
+
+  private:
+    static Vec3 direction(int i, int j) {
+        const double theta = (i + 0.5) * kPi / (kTheta * kSub);
+        const double phi = (j + 0.5) * 2 * kPi / (kPhi * kSub);
+        return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                    Real(std::cos(theta)));
     }
 };
 
