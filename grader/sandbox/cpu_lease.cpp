@@ -17,8 +17,12 @@ CpuLease::CpuLease() {
     cpu_set_t allowed;
     CPU_ZERO(&allowed);
     if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
+    // On a tie, the CPU this thread runs on now: the scheduler put it where there was room, so
+    // two graders on one machine (CTest's parallel tests) do not both start on CPU 0.
+    const int here = sched_getcpu();
     std::lock_guard lock(g_mutex);
     g_leases.resize(CPU_SETSIZE, 0);
+    if (here >= 0 && here < CPU_SETSIZE && CPU_ISSET(here, &allowed)) cpu_ = here;
     for (int c = 0; c < CPU_SETSIZE; ++c)
         if (CPU_ISSET(c, &allowed) && (cpu_ < 0 || g_leases[c] < g_leases[cpu_])) cpu_ = c;
     if (cpu_ >= 0) ++g_leases[cpu_];

@@ -13,7 +13,7 @@ namespace rt::grader {
 
 class CpuLease {
   public:
-    CpuLease();  // the allowed CPU with the fewest leases (the lowest number on a tie)
+    CpuLease();  // the allowed CPU with the fewest leases (on a tie, the caller's CPU)
     ~CpuLease();
     CpuLease(const CpuLease&) = delete;
     CpuLease& operator=(const CpuLease&) = delete;
