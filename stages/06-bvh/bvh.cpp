@@ -16,9 +16,8 @@ namespace rt {
 // BEGIN SOLUTION
 namespace {
 
-// A box as two 4-wide vectors (x, y, z and an unused lane), a GCC and Clang vector extension:
-// min and max of all lanes compile to one SSE instruction each. Min and max round nothing, so
-// the box is exactly the Aabb it stands for.
+// A box as two 4-wide vectors (x, y, z, an unused lane; a GCC and Clang vector extension): one
+// SSE min or max each, which round nothing, so the box is exactly the Aabb it stands for.
 using Lanes = float __attribute__((vector_size(16)));
 
 // No default member initialisers: an array of kMaxBins of them would be filled on every call.
@@ -29,25 +28,19 @@ struct Box4 {
         constexpr float inf = std::numeric_limits<float>::infinity();
         return Box4{Lanes{inf, inf, inf, inf}, Lanes{-inf, -inf, -inf, -inf}};
     }
-    // A primitive's box: four floats from its `min` and four from its `max` (the fourth lane, the
-    // float after each, is never used), two loads instead of six.
+    // A primitive's box in two 4-float loads (each fourth lane, inside the primitive, unused).
     static Box4 of(const BvhPrimitive& p) {
-        static_assert(
-            offsetof(BvhPrimitive, bounds) + sizeof(Aabb) + sizeof(float) <= sizeof(BvhPrimitive),
-            "the fourth lane of max must still be inside the primitive");
+        static_assert(offsetof(BvhPrimitive, bounds) + sizeof(Aabb) < sizeof(BvhPrimitive));
         Box4 box;
         std::memcpy(&box.min, &p.bounds.min.x, sizeof box.min);
         std::memcpy(&box.max, &p.bounds.max.x, sizeof box.max);
         return box;
     }
-    void grow(const Box4& b) {
-        min = b.min < min ? b.min : min;
-        max = b.max > max ? b.max : max;
+    void grow(const Lanes& lo, const Lanes& hi) {
+        min = lo < min ? lo : min;
+        max = hi > max ? hi : max;
     }
-    void grow(const Lanes& p) {
-        min = p < min ? p : min;
-        max = p > max ? p : max;
-    }
+    void grow(const Box4& b) { grow(b.min, b.max); }
     Aabb aabb() const { return Aabb{Vec3f(min[0], min[1], min[2]), Vec3f(max[0], max[1], max[2])}; }
 };
 
@@ -62,16 +55,13 @@ struct Bins {
         for (int axis = 0; axis < 3; ++axis)
             for (int k = 0; k < bins; ++k) box[axis][k] = Box4::empty(), count[axis][k] = 0;
     }
-    // bin_of on the three axes at once: lane by lane the same operations and the same answers
-    // (the clamps come before the conversion, so no lane converts a value out of int's range).
+    // bin_of on three axes at once, lane by lane the same answers (clamped before converting).
     void add(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
              const Aabb& centroids, const float (&scale)[3], int bins) {
         using Ints = std::int32_t __attribute__((vector_size(16)));
         const Lanes lo{centroids.min.x, centroids.min.y, centroids.min.z, 0};
         const Lanes scales{scale[0], scale[1], scale[2], 0};
-        const Lanes zero{0, 0, 0, 0};
-        const float top = float(bins), last = float(bins - 1);
-        const Lanes tops{top, top, top, top}, lasts{last, last, last, last};
+        const Lanes zero{}, tops = zero + float(bins), lasts = zero + float(bins - 1);
         for (std::size_t i = begin; i < end; ++i) {
             const BvhPrimitive& p = prims[i];
             const Box4 b = Box4::of(p);
@@ -98,9 +88,8 @@ struct Bins {
     constexpr Real growth = 1 + 2 * (3 * eps) / (1 - 3 * eps);
     Real t0 = t_range.min, t1 = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
-        // The near side of the slab is min for a positive direction, max for a negative one.
-        // Choosing by sign (instead of swapping the two distances) leaves a NaN (0 * inf: origin
-        // on the slab's plane, direction parallel to it) where the comparisons below ignore it.
+        // The near side is min for a positive direction, max for a negative one: choosing by sign
+        // (not swapping the distances) leaves a NaN (0 * inf) where the comparisons ignore it.
         const bool negative = inv_direction[axis] < 0;
         const Real near_side = negative ? node.max[axis] : node.min[axis];
         const Real far_side = negative ? node.min[axis] : node.max[axis];
@@ -128,8 +117,8 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     Box4 bounds4 = Box4::empty(), centroids4 = Box4::empty();
     for (std::size_t i = begin; i < end; ++i) {
         const BvhPrimitive& p = prims[i];
-        bounds4.grow(Box4::of(p));
-        centroids4.grow(Lanes{p.centroid.x, p.centroid.y, p.centroid.z, 0});
+        const Lanes c{p.centroid.x, p.centroid.y, p.centroid.z, 0};
+        bounds4.grow(Box4::of(p)), centroids4.grow(c, c);
     }
     const Aabb bounds = bounds4.aabb(), centroids = centroids4.aabb();
     const float area = bounds.surface_area();
@@ -144,8 +133,6 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
     }
     Bins binned(bins);
     binned.add(prims, begin, end, centroids, scale, bins);
-    const auto& bin = binned.box;
-    const auto& bin_count = binned.count;
 
     SahSplit best;
     for (int axis = 0; axis < 3; ++axis) {
@@ -155,23 +142,23 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
         // is costed (a tie goes to the lower bin). A small node has few bins in use.
         int used[kMaxBins], m = 0;
         for (int k = 0; k < bins; ++k)
-            if (bin_count[axis][k] > 0) used[m++] = k;
+            if (binned.count[axis][k] > 0) used[m++] = k;
         // Right-hand sides (bins used[j] .. used[m - 1]), swept from the right.
         float right_area[kMaxBins];
         std::uint32_t right_count[kMaxBins];
         Box4 box = Box4::empty();
         std::uint32_t count = 0;
         for (int j = m - 1; j >= 1; --j) {
-            box.grow(bin[axis][used[j]]);
-            count += bin_count[axis][used[j]];
+            box.grow(binned.box[axis][used[j]]);
+            count += binned.count[axis][used[j]];
             right_area[j] = box.aabb().surface_area();
             right_count[j] = count;
         }
         box = Box4::empty();
         count = 0;
         for (int j = 1; j < m; ++j) {
-            box.grow(bin[axis][used[j - 1]]);
-            count += bin_count[axis][used[j - 1]];
+            box.grow(binned.box[axis][used[j - 1]]);
+            count += binned.count[axis][used[j - 1]];
             const float cost = options.traversal_cost + (box.aabb().surface_area() * float(count) +
                                                          right_area[j] * float(right_count[j])) *
                                                             inv_area;
@@ -182,9 +169,10 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
         best.centroid_lo = centroids.min[best.axis];
         best.scale = scale[best.axis];
         for (int k = 0; k < bins; ++k) {
-            if (bin_count[best.axis][k] == 0) continue;
-            (k < best.bin ? best.left_bounds : best.right_bounds).grow(bin[best.axis][k].aabb());
-            (k < best.bin ? best.left_count : best.right_count) += bin_count[best.axis][k];
+            if (binned.count[best.axis][k] == 0) continue;
+            (k < best.bin ? best.left_bounds : best.right_bounds)
+                .grow(binned.box[best.axis][k].aabb());
+            (k < best.bin ? best.left_count : best.right_count) += binned.count[best.axis][k];
         }
     }
     return best;
@@ -336,8 +324,7 @@ void build_bvh(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, 
     // Nodes of many primitives are split a level at a time, the nodes of a level side by side;
     // below kSubtree primitives a node's whole subtree is one job. Neither depends on the
     // number of threads, so the tree and its layout are the same on every run.
-    constexpr std::uint32_t kSubtree =
-        16384;  // on rt-bench's bunny, 1024-8192 and 32768 were slower
+    constexpr std::uint32_t kSubtree = 16384;  // on the bunny, 1024-8192 and 32768 were slower
     std::vector<BuildTask> level{{0, 0, n, 1}}, jobs;
     while (!level.empty()) {
         std::vector<Split> splits(level.size());
