@@ -3,13 +3,12 @@
 #include <sched.h>
 
 #include <mutex>
-#include <vector>
 
 namespace rt::grader {
 namespace {
 
 std::mutex g_mutex;
-std::vector<int> g_leases;  // per CPU number: the leases held now
+int g_leases[CPU_SETSIZE] = {};  // per CPU number: the leases held now
 
 }  // namespace
 
@@ -21,7 +20,6 @@ CpuLease::CpuLease() {
     // two graders on one machine (CTest's parallel tests) do not both start on CPU 0.
     const int here = sched_getcpu();
     std::lock_guard lock(g_mutex);
-    g_leases.resize(CPU_SETSIZE, 0);
     if (here >= 0 && here < CPU_SETSIZE && CPU_ISSET(here, &allowed)) cpu_ = here;
     for (int c = 0; c < CPU_SETSIZE; ++c)
         if (CPU_ISSET(c, &allowed) && (cpu_ < 0 || g_leases[c] < g_leases[cpu_])) cpu_ = c;

@@ -43,13 +43,12 @@ struct SphereBins {
     static std::vector<double> expected(const std::vector<Density>& density, int samples,
                                         double& total) {
         std::vector<double> e(kTheta * kPhi + 1, 0);
-        const double dtheta = kPi / (kTheta * kSub), dphi = 2 * kPi / (kPhi * kSub);
         total = 0;
         std::size_t k = 0;
         for (int i = 0; i < kTheta * kSub; ++i) {
-            const double theta = (i + 0.5) * dtheta;
+            const double theta = cell_theta(i);
             for (int j = 0; j < kPhi * kSub; ++j) {
-                const double mass = double(density[k++]) * std::sin(theta) * dtheta * dphi;
+                const double mass = double(density.at(k++)) * std::sin(theta) * kDtheta * kDphi;
                 e[std::size_t((i / kSub) * kPhi + j / kSub)] += samples * mass;
                 total += mass;
             }
@@ -59,9 +58,10 @@ struct SphereBins {
     }
 
   private:
+    static constexpr double kDtheta = kPi / (kTheta * kSub), kDphi = 2 * kPi / (kPhi * kSub);
+    static double cell_theta(int i) { return (i + 0.5) * kDtheta; }
     static Vec3 direction(int i, int j) {
-        const double theta = (i + 0.5) * kPi / (kTheta * kSub);
-        const double phi = (j + 0.5) * 2 * kPi / (kPhi * kSub);
+        const double theta = cell_theta(i), phi = (j + 0.5) * kDphi;
         return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
                     Real(std::cos(theta)));
     }
