@@ -46,11 +46,14 @@ struct Camera {
     float view_height;
 };
 
+// The compute shader reads these through texel_arrays.glsl's buffer textures instead
+// (RT_TEXEL_ARRAYS); the layout test and the layouts of gpu_scene.h are these declarations.
 #ifdef HAS_MOTION_BLUR
 layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres_at_rest[]; };
-#else
+#elif !defined(RT_TEXEL_ARRAYS)
 layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres[]; };
 #endif
+#ifndef RT_TEXEL_ARRAYS
 layout(std430, binding = RT_BINDING_PLANES) readonly buffer Planes { Plane planes[]; };
 layout(std430, binding = RT_BINDING_BOXES) readonly buffer Boxes { Box boxes[]; };
 layout(std430, binding = RT_BINDING_TRIANGLES) readonly buffer Triangles { Triangle triangles[]; };
@@ -65,6 +68,7 @@ layout(std430, binding = RT_BINDING_TEXTURES) readonly buffer Textures { Texture
 layout(std430, binding = RT_BINDING_TEXTURE_IMAGES) readonly buffer TextureImages { TextureImage texture_images[]; };
 layout(std430, binding = RT_BINDING_TEXELS) readonly buffer Texels { vec4 texels[]; };
 layout(std430, binding = RT_BINDING_ENVIRONMENT) readonly buffer Environments { Environment environment[]; };
+#endif
 // Stage 10's data is a uniform block (std140, the same offsets as std430 here: vec4s only): the
 // compute stage has 16 storage blocks and the uber shader uses them all. Sized by the host's
 // defines; the defaults serve the layout test and shaders without sampling.

@@ -21,15 +21,20 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
     bool found = false;
     int material = -1;
     switch (primitive_kind(id)) {
+#ifdef HAS_SPHERES
         case kSphere:
             found = intersect_sphere(ray, spheres[i].center_radius, t_range, hit);
             material = spheres[i].material.x;
             break;
+#endif
+#ifdef HAS_PLANES
         case kPlane:
             found = intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz,
                                     t_range, hit);
             material = floatBitsToInt(planes[i].point_material.w);
             break;
+#endif
+#ifdef HAS_TRIANGLES
         case kTriangle: {
             vec3 a, b, c;
             triangle_vertices(i, a, b, c);
@@ -37,10 +42,13 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
             material = int(triangles[i].vertices_material.w);
             break;
         }
+#endif
+#ifdef HAS_BOXES
         case kBox:
             found = intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit);
             material = floatBitsToInt(boxes[i].min_material.w);
             break;
+#endif
     }
     if (found) hit.primitive = id, hit.material = material;
     return found;

@@ -48,10 +48,9 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
             t_range.max = hit.t;
         }
     const vec3 inv_direction = 1.0 / ray.direction;
-    // One node a turn: the nearer child is pushed last, so it is visited first. No nested
-    // loops: invocations that run in lock-step diverge less. (A line-for-line port of stage 06's
-    // nested loops, with a break out of the inner one, missed hits on runs of neighbouring
-    // pixels under llvmpipe; the cause is not pinned down.)
+    // Invocations run in lock-step, 8 at a time on llvmpipe, and both sides of an `if` cost
+    // all 8: so each descends to a leaf in an inner loop (one node a turn, the nearer child
+    // pushed last so it is popped next), then the 8 test their leaves' primitives together.
     uint stack_node[kBvhMaxDepth + 1];
     float stack_t[kBvhMaxDepth + 1];
     int top = 0;
@@ -63,28 +62,35 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
         top = 1;
     }
     while (top > 0) {
-        --top;
-        if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
-        const BvhNode node = bvh_nodes[stack_node[top]];
-        if (node.count > 0u) {
-            for (uint k = node.first; k < node.first + node.count; ++k)
-                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
-                    found = true;
-                    t_range.max = hit.t;
-                }
-            continue;
+        // Descend until this invocation holds a leaf (or has nothing left to visit).
+        uint first = 0u, count = 0u;
+        while (top > 0) {
+            --top;
+            if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
+            const BvhNode node = bvh_nodes[stack_node[top]];
+            if (node.count > 0u) {
+                first = node.first, count = node.count;
+                break;
+            }
+            float t_left, t_right;
+            bvh_nodes_visited += 2u;
+            const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction,
+                                                 t_range, t_left);
+            const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray,
+                                                  inv_direction, t_range, t_right);
+            const bool left_first = !hit_right || (hit_left && t_left <= t_right);
+            // Push the farther child first.
+            if (left_first && hit_right)
+                stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
+            if (hit_left) stack_node[top] = node.first, stack_t[top++] = t_left;
+            if (!left_first) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
         }
-        float t_left, t_right;
-        bvh_nodes_visited += 2u;
-        const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction, t_range,
-                                             t_left);
-        const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray, inv_direction,
-                                              t_range, t_right);
-        const bool left_first = !hit_right || (hit_left && t_left <= t_right);
-        // Push the farther child first.
-        if (left_first && hit_right) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
-        if (hit_left) stack_node[top] = node.first, stack_t[top++] = t_left;
-        if (!left_first) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
+        // Then its primitives, together with the other invocations that hold one.
+        for (uint k = first; k < first + count; ++k)
+            if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
+                found = true;
+                t_range.max = hit.t;
+            }
     }
     return found;
     // STUB
@@ -104,18 +110,22 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     int top = 0;
     float t;
     if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t)) stack[top++] = 0u;
-    while (top > 0) {
-        const uint node = stack[--top];
-        const uint first = bvh_nodes[node].first;
-        if (bvh_nodes[node].count > 0u) {
-            for (uint k = first; k < first + bvh_nodes[node].count; ++k)
-                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
-                    return true;
-            continue;
+    while (top > 0) {  // as bvh_intersect_nearest: descend to a leaf, then test it
+
+        uint first = 0u, count = 0u;
+        while (top > 0) {
+            const BvhNode node = bvh_nodes[stack[--top]];
+            if (node.count > 0u) {
+                first = node.first, count = node.count;
+                break;
+            }
+            for (uint child = node.first; child < node.first + 2u; ++child)
+                if (intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t))
+                    stack[top++] = child;
         }
-        for (uint child = first; child < first + 2u; ++child)
-            if (intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t))
-                stack[top++] = child;
+        for (uint k = first; k < first + count; ++k)
+            if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
+                return true;
     }
     return false;
     // STUB

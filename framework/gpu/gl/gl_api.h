@@ -27,55 +27,61 @@ struct GlLimits {
 using GlViewportFn = void (*)(GLint, GLint, GLsizei, GLsizei);
 using GlDrawArraysFn = void (*)(GLenum, GLint, GLsizei);
 using GlReadPixelsFn = void (*)(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void*);
+using GlDeleteTexturesFn = void (*)(GLsizei, const GLuint*);
 
 struct GlApi {
-#define RT_GL_FUNCTIONS(X)                                       \
-    X(PFNGLGETSTRINGPROC, GetString)                             \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                         \
-    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                     \
-    X(PFNGLGETERRORPROC, GetError)                               \
-    X(PFNGLCREATESHADERPROC, CreateShader)                       \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                       \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                     \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                         \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)               \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                       \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                     \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                       \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                         \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                       \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)             \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                     \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                           \
-    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)           \
-    X(PFNGLUNIFORM1IPROC, Uniform1i)                             \
-    X(PFNGLUNIFORM1FPROC, Uniform1f)                             \
-    X(PFNGLUNIFORM2IPROC, Uniform2i)                             \
-    X(PFNGLUNIFORM3FPROC, Uniform3f)                             \
-    X(PFNGLUNIFORM4IPROC, Uniform4i)                             \
-    X(PFNGLGENBUFFERSPROC, GenBuffers)                           \
-    X(PFNGLBINDBUFFERPROC, BindBuffer)                           \
-    X(PFNGLBUFFERDATAPROC, BufferData)                           \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                   \
-    X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)               \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
-    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                 \
-    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                     \
-    X(PFNGLFINISHPROC, Finish)                                   \
-    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                 \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                 \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)           \
-    X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)               \
-    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)               \
-    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)         \
-    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)         \
-    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer) \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)   \
-    X(GlViewportFn, Viewport)                                    \
-    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                 \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                 \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)           \
-    X(GlDrawArraysFn, DrawArrays)                                \
+#define RT_GL_FUNCTIONS(X)                                           \
+    X(PFNGLGETSTRINGPROC, GetString)                                 \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                             \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                         \
+    X(PFNGLGETERRORPROC, GetError)                                   \
+    X(PFNGLCREATESHADERPROC, CreateShader)                           \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                         \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                             \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                   \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                           \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                         \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                           \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                             \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                           \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                 \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                         \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                               \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)               \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                                 \
+    X(PFNGLUNIFORM1FPROC, Uniform1f)                                 \
+    X(PFNGLUNIFORM2IPROC, Uniform2i)                                 \
+    X(PFNGLUNIFORM3FPROC, Uniform3f)                                 \
+    X(PFNGLUNIFORM4IPROC, Uniform4i)                                 \
+    X(PFNGLGENBUFFERSPROC, GenBuffers)                               \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                               \
+    X(PFNGLBUFFERDATAPROC, BufferData)                               \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                       \
+    X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                   \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                         \
+    X(PFNGLGETNAMEDBUFFERPARAMETERIVPROC, GetNamedBufferParameteriv) \
+    X(PFNGLCREATETEXTURESPROC, CreateTextures)                       \
+    X(PFNGLTEXTUREBUFFERPROC, TextureBuffer)                         \
+    X(PFNGLBINDTEXTUREUNITPROC, BindTextureUnit)                     \
+    X(GlDeleteTexturesFn, DeleteTextures)                            \
+    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                     \
+    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                         \
+    X(PFNGLFINISHPROC, Finish)                                       \
+    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                     \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                     \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)               \
+    X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                   \
+    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                   \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)             \
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)             \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)     \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)       \
+    X(GlViewportFn, Viewport)                                        \
+    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                     \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                     \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)               \
+    X(GlDrawArraysFn, DrawArrays)                                    \
     X(GlReadPixelsFn, ReadPixels)
 #define RT_GL_MEMBER(type, name) type name = nullptr;
     RT_GL_FUNCTIONS(RT_GL_MEMBER)

@@ -19,6 +19,8 @@
 #include "gpu/shader_constants.h"
 #include "image/image.h"
 #include "render/gpu/gpu_debug_pixel.h"
+#include "render/gpu/texel_arrays.h"
+#include "render/gpu/web_arrays.h"
 #include "render/render.h"
 
 namespace fs = std::filesystem;
@@ -265,23 +267,25 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
 
 namespace {
 
-AssembledShader assemble_trace(const std::string& defines, const fs::path& student_dir,
-                               const fs::path& sampling_dir, const fs::path& path_dir = {}) {
-    const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
-    const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
-    const fs::path path = path_dir.empty() ? gpu_path_dir() : path_dir;
-    // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
-    // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
-    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path},
-                           defines);
-}
-
 // The program's #defines: the scene's, and the --debug-pixel notes when asked for.
 std::string program_defines(const PreparedScene& scene, RenderMode mode, bool uber, bool probe) {
     return gpu_defines(scene, mode, uber) + (probe ? "#define HAS_DEBUG_PIXEL\n" : "");
 }
 
 }  // namespace
+
+AssembledShader assemble_trace(const std::string& defines, const fs::path& student_dir,
+                               const fs::path& sampling_dir, const fs::path& path_dir) {
+    const fs::path students = student_dir.empty() ? gpu_student_dir() : student_dir;
+    const fs::path sampling = sampling_dir.empty() ? gpu_sampling_dir() : sampling_dir;
+    const fs::path path = path_dir.empty() ? gpu_path_dir() : path_dir;
+    // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
+    // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
+    AssembledShader shader =
+        assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path}, defines);
+    shader.text = read_through_accessors(std::move(shader.text), texel_array_names(defines));
+    return shader;
+}
 
 AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber,
@@ -434,6 +438,7 @@ Image GpuRenderer::render(const PreparedScene& scene, RenderMode mode, GpuTiming
         std::size_t(scene.image.width) * std::size_t(scene.image.height);
     std::vector<glm::vec4> output(pixel_count + 1 + (probe ? gpu_probe_vec4s() : 0), glm::vec4(0));
     buffers.push_back(upload(gl, gpu::kOutputBinding, output));
+    const std::vector<GLuint> textures = create_texel_views(gl, buffers);
     gl.UseProgram(program.id);
     set_uniforms(gl, program.id, scene, mode);
     if (probe)
@@ -457,6 +462,7 @@ Image GpuRenderer::render(const PreparedScene& scene, RenderMode mode, GpuTiming
     if (timings_out) *timings_out = timings;
     const GLenum status = gl.GetError();
     gl.DeleteBuffers(GLsizei(buffers.size()), buffers.data());
+    gl.DeleteTextures(GLsizei(textures.size()), textures.data());
     if (status != GL_NO_ERROR)
         throw GpuError("gpu: OpenGL error " + std::to_string(status) +
                        " while rendering; rerun with --gl osmesa, or without --gpu");

@@ -105,6 +105,12 @@ Image render_gpu(const PreparedScene& scene, RenderMode mode, const GpuRenderOpt
 // process, as core/not_implemented.h does for C++ stubs.
 void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]);
 
+// shaders/trace.comp with `defines`, the student folders (empty: the course's) and the arrays
+// read through texel_arrays.glsl: the text the renderer compiles.
+AssembledShader assemble_trace(const std::string& defines, const std::filesystem::path& student_dir,
+                               const std::filesystem::path& sampling_dir,
+                               const std::filesystem::path& path_dir = {});
+
 // The shader as it would be compiled for `scene` (the offline glslangValidator check).
 AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,
                                       const std::filesystem::path& student_dir = {},

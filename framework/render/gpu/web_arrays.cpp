@@ -101,6 +101,10 @@ std::string web_data_accessors() {
 }
 
 std::string read_through_accessors(std::string code) {
+    return read_through_accessors(std::move(code), {kNames.begin(), kNames.end()});
+}
+
+std::string read_through_accessors(std::string code, const std::vector<std::string_view>& names) {
     for (std::size_t i = 0; i < code.size(); ++i) {
         if (!identifier_char(code[i]) || (i > 0 && identifier_char(code[i - 1]))) continue;
         std::size_t end = i;
@@ -108,7 +112,8 @@ std::string read_through_accessors(std::string code) {
         const std::string_view word(code.data() + i, end - i);
         std::size_t open = end;
         while (open < code.size() && code[open] == ' ') ++open;
-        if (open < code.size() && code[open] == '[' && is_web_data_array(word)) {
+        if (open < code.size() && code[open] == '[' &&
+            std::find(names.begin(), names.end(), word) != names.end()) {
             const std::size_t close = closing_bracket(code, open);
             if (close == std::string::npos)
                 throw GpuError("rt: error: the shader's " + std::string(word) +

@@ -37,5 +37,7 @@ std::string web_data_accessors();
 
 // `code` with every `name[expr]` of those arrays, nested ones too, read as `name_at(expr)`.
 std::string read_through_accessors(std::string code);
+// The same for the arrays `names` (the compute shader's texel views, gpu_render.cpp).
+std::string read_through_accessors(std::string code, const std::vector<std::string_view>& names);
 
 }  // namespace rt

@@ -179,8 +179,7 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
             const bool stubbed = students == stubs.dir();
             const fs::path sampling = stubbed ? stubs.dir() : root / "stages/10-sampling";
             const fs::path path = stubbed ? stubs.dir() : root / "stages/11-path-tracing";
-            const AssembledShader shader =
-                assemble_shader(root / "shaders/trace.comp", {students, sampling, path}, defines);
+            const AssembledShader shader = assemble_trace(defines, students, sampling, path);
             ASSERT_EQ(shader.error, "");
             const fs::path file =
                 fs::temp_directory_path() /
