@@ -9,11 +9,21 @@ uniform int material_count;
 uniform vec3 background_color;
 uniform vec3 ambient_light;
 uniform bool fresnel;
+// A specialised shader has the mode and the features as constants (RENDER_MODE, SCENE_FEATURES),
+// so the compiler drops the other modes' code: llvmpipe would run every branch of an if, masked.
+#ifdef RENDER_MODE
+const int render_mode = RENDER_MODE;
+#else
 uniform int render_mode;  // RenderMode: 0 directions 1 normals 2 depth 3 primitive 4 shaded 5 bvh_visits
+#endif
 uniform int max_depth;    // the scene's, at most MAX_DEPTH
 // What the scene uses, at run time: a specialised shader has exactly these compiled in (the
 // HAS_ defines); the --uber one compiles everything and tests these bits instead.
+#ifdef SCENE_FEATURES
+const int scene_features = SCENE_FEATURES;
+#else
 uniform int scene_features;
+#endif
 uniform int texture_lookup;  // 0 each texture's own filter, 1 all nearest, 2 all bilinear
 // Stage 10's progressive accumulation: this dispatch adds camera samples sample_first ..
 // sample_first + sample_count - 1 of every pixel to the sums in `pixels` (the first dispatch

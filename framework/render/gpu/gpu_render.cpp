@@ -267,9 +267,14 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
 
 namespace {
 
-// The program's #defines: the scene's, and the --debug-pixel notes when asked for.
+// The program's #defines: the scene's, and the --debug-pixel notes when asked for. A specialised
+// program also has the mode and the features as constants (compute_io.glsl).
 std::string program_defines(const PreparedScene& scene, RenderMode mode, bool uber, bool probe) {
-    return gpu_defines(scene, mode, uber) + (probe ? "#define HAS_DEBUG_PIXEL\n" : "");
+    std::string d = gpu_defines(scene, mode, uber) + (probe ? "#define HAS_DEBUG_PIXEL\n" : "");
+    if (!uber)
+        d += "#define RENDER_MODE " + std::to_string(int(mode)) + "\n#define SCENE_FEATURES " +
+             std::to_string(gpu_feature_bits(scene, mode)) + "\n";
+    return d;
 }
 
 }  // namespace
@@ -290,7 +295,7 @@ AssembledShader assemble_trace(const std::string& defines, const fs::path& stude
 AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,
                                       const fs::path& student_dir, bool uber,
                                       const fs::path& sampling_dir) {
-    return assemble_trace(gpu_defines(scene, mode, uber), student_dir, sampling_dir);
+    return assemble_trace(program_defines(scene, mode, uber, false), student_dir, sampling_dir);
 }
 
 struct GpuRenderer::Program {
