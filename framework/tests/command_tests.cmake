@@ -43,7 +43,7 @@ rt_cli_error_test(OutputFolderMissing "no/such/dir/x.png" render ${rt_cli_scene}
 # Stage 09 from the command line: a small GPU render says which context it used; what the port
 # cannot draw is one line.
 add_test(NAME Cli.GpuRenderNamesItsContext
-  COMMAND $<TARGET_FILE:rt> render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/test-output/gpu.png
+  COMMAND $<TARGET_FILE:rt> render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/cli-gpu-context.png
           --gpu --width 32 --height 24)
 set_tests_properties(Cli.GpuRenderNamesItsContext PROPERTIES LABELS "cli;gpu"
   PASS_REGULAR_EXPRESSION "gpu: egl \\([a-z]+\\): .*GPU \\(egl\\)")
