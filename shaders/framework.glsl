@@ -68,7 +68,8 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
     SurfacePoint sp = SurfacePoint(hit.point, vec3(0), hit.normal, hit.front_face, hit.primitive,
                                    hit.material);
     const int i = primitive_index(hit.primitive);
-    switch (primitive_kind(hit.primitive)) {
+    switch (primitive_kind(hit.primitive)) {  // only the scene's kinds: each case costs every lane
+#ifdef HAS_SPHERES
         case kSphere: {
             const vec3 c = spheres[i].center_radius.xyz;
             const vec3 from_center = hit.point - c;
@@ -77,6 +78,8 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
             sp.error = gamma_bound(8) * (abs(c) + abs(sp.point - c));
             break;
         }
+#endif
+#ifdef HAS_PLANES
         case kPlane: {
             const vec3 p0 = planes[i].point_material.xyz, n = planes[i].normal.xyz;
             sp.point = hit.point - n * dot(n, hit.point - p0);
@@ -84,6 +87,8 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
             sp.error = abs(n) * distance_error + gamma_bound(2) * abs(sp.point);
             break;
         }
+#endif
+#ifdef HAS_TRIANGLES
         case kTriangle: {
             vec3 a, b, c;
             triangle_vertices(i, a, b, c);
@@ -92,18 +97,23 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
             sp.error = gamma_bound(7) * (abs(b0 * a) + abs(b1 * b) + abs(b2 * c));
             break;
         }
+#endif
+#ifdef HAS_BOXES
         case kBox: {
             const vec3 lo = boxes[i].min_material.xyz, hi = boxes[i].max.xyz;
             const vec3 outward = hit.front_face ? hit.normal : -hit.normal;
-            int axis = 0;
-            for (int k = 1; k < 3; ++k)
-                if (abs(outward[k]) > abs(outward[axis])) axis = k;
-            sp.point = clamp(hit.point, lo, hi);
-            sp.point[axis] = outward[axis] > 0.0 ? hi[axis] : lo[axis];
-            sp.error = gamma_bound(3) * abs(sp.point);
-            sp.error[axis] = 0.0;
+            // The face's axis (the first of the largest |outward|), by selects: a vector indexed
+            // by a run-time axis costs llvmpipe a trip through memory for each of its 8 lanes.
+            const vec3 m = abs(outward);
+            const int first = m.y > m.x ? 1 : 0;
+            const int axis = m.z > (first == 1 ? m.y : m.x) ? 2 : first;
+            const bvec3 on_axis = equal(ivec3(axis), ivec3(0, 1, 2));
+            sp.point = mix(clamp(hit.point, lo, hi), mix(lo, hi, greaterThan(outward, vec3(0))),
+                           on_axis);
+            sp.error = mix(gamma_bound(3) * abs(sp.point), vec3(0), on_axis);
             break;
         }
+#endif
     }
     return sp;
 }

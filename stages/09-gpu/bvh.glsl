@@ -51,8 +51,8 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     // Invocations run in lock-step, 8 at a time on llvmpipe, and both sides of an `if` cost
     // all 8: so each descends to a leaf in an inner loop (one node a turn, the nearer child
     // pushed last so it is popped next), then the 8 test their leaves' primitives together.
-    uint stack_node[kBvhMaxDepth + 1];
-    float stack_t[kBvhMaxDepth + 1];
+    uint stack_node[kBvhMaxDepth + 2];  // one more: a slot above the top may be written
+    float stack_t[kBvhMaxDepth + 2];
     int top = 0;
     float t_root;
     bvh_nodes_visited += 1u;
@@ -79,11 +79,16 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
             const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray,
                                                   inv_direction, t_range, t_right);
             const bool left_first = !hit_right || (hit_left && t_left <= t_right);
-            // Push the farther child first.
-            if (left_first && hit_right)
-                stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
-            if (hit_left) stack_node[top] = node.first, stack_t[top++] = t_left;
-            if (!left_first) stack_node[top] = node.first + 1u, stack_t[top++] = t_right;
+            // Push the farther child first, then the nearer. Both slots are written whether
+            // or not the child is hit (top moves only for a hit one): each store to a stack
+            // costs llvmpipe a loop over its 8 lanes, so two stores, not three behind ifs.
+            const uint near_node = node.first + (left_first ? 0u : 1u);
+            stack_node[top] = node.first + 1u - (near_node - node.first);
+            stack_t[top] = left_first ? t_right : t_left;
+            top += hit_left && hit_right ? 1 : 0;
+            stack_node[top] = near_node;
+            stack_t[top] = left_first ? t_left : t_right;
+            top += hit_left || hit_right ? 1 : 0;
         }
         // Then its primitives, together with the other invocations that hold one.
         for (uint k = first; k < first + count; ++k)
@@ -106,7 +111,7 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     for (int i = 0; i < primitive_counts.y; ++i)
         if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch)) return true;
     const vec3 inv_direction = 1.0 / ray.direction;
-    uint stack[kBvhMaxDepth + 1];
+    uint stack[kBvhMaxDepth + 2];
     int top = 0;
     float t;
     if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t)) stack[top++] = 0u;
@@ -119,9 +124,10 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
                 first = node.first, count = node.count;
                 break;
             }
-            for (uint child = node.first; child < node.first + 2u; ++child)
-                if (intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t))
-                    stack[top++] = child;
+            for (uint child = node.first; child < node.first + 2u; ++child) {
+                stack[top] = child;  // written either way, kept if hit (as in the nearest query)
+                top += intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t) ? 1 : 0;
+            }
         }
         for (uint k = first; k < first + count; ++k)
             if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))

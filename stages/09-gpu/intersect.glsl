@@ -95,34 +95,28 @@ bool intersect_box(Ray ray, vec3 lo, vec3 hi, Interval t_range, inout Hit hit) {
     // BEGIN SOLUTION
     const vec3 o = ray.origin, d = ray.direction;
     if (any(isinf(d)) || any(isnan(d)) || d == vec3(0)) return false;
-    float t_near = -kInfinity, t_far = kInfinity;
-    int near_axis = -1, far_axis = -1;
-    for (int i = 0; i < 3; ++i) {
-        if (d[i] == 0.0) {
-            if (o[i] < lo[i] || o[i] > hi[i]) return false;
-            continue;
-        }
-        float t0 = (lo[i] - o[i]) / d[i];
-        float t1 = (hi[i] - o[i]) / d[i];
-        if (t0 > t1) {
-            const float swap = t0;
-            t0 = t1, t1 = swap;
-        }
-        if (t0 > t_near) t_near = t0, near_axis = i;
-        if (t1 < t_far) t_far = t1, far_axis = i;
-    }
+    // The three slabs at once, with selects rather than branches (on llvmpipe every branch costs
+    // all 8 lanes). A slab parallel to the ray (d[i] == 0) holds it for every t, or never.
+    const bvec3 parallel = equal(d, vec3(0));
+    const bvec3 outside = bvec3(uvec3(lessThan(o, lo)) | uvec3(greaterThan(o, hi)));
+    if (any(bvec3(uvec3(parallel) & uvec3(outside)))) return false;
+    const vec3 t0 = (lo - o) / d, t1 = (hi - o) / d;
+    const bvec3 swapped = greaterThan(t0, t1);
+    const vec3 t_in = mix(mix(t0, t1, swapped), vec3(-kInfinity), parallel);
+    const vec3 t_out = mix(mix(t1, t0, swapped), vec3(kInfinity), parallel);
+    const float t_near = max(max(t_in.x, t_in.y), t_in.z);
+    const float t_far = min(min(t_out.x, t_out.y), t_out.z);
     if (t_near > t_far) return false;
-    float t, sign;
-    int axis;
-    if (contains(t_range, t_near)) {
-        t = t_near, axis = near_axis, sign = d[axis] > 0.0 ? -1.0 : 1.0;
-    } else if (contains(t_range, t_far)) {
-        t = t_far, axis = far_axis, sign = d[axis] > 0.0 ? 1.0 : -1.0;
-    } else {
-        return false;
-    }
-    vec3 outward = vec3(0);
-    outward[axis] = sign;
+    // The face: the first axis that reaches t_near (t_far), as a loop over the axes would find.
+    const int near_axis = t_in.x == t_near ? 0 : t_in.y == t_near ? 1 : 2;
+    const int far_axis = t_out.x == t_far ? 0 : t_out.y == t_far ? 1 : 2;
+    const bool entering = contains(t_range, t_near);
+    if (!entering && !contains(t_range, t_far)) return false;
+    const float t = entering ? t_near : t_far;
+    const int axis = entering ? near_axis : far_axis;
+    const bool along = (axis == 0 ? d.x : axis == 1 ? d.y : d.z) > 0.0;
+    const float sign = along == entering ? -1.0 : 1.0;  // entered against d, or left along it
+    const vec3 outward = mix(vec3(0), vec3(sign), equal(ivec3(axis), ivec3(0, 1, 2)));
     hit.t = t;
     hit.point = ray.origin + t * ray.direction;
     set_face_normal(hit, ray, outward);
