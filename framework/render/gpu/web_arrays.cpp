@@ -33,10 +33,11 @@ bool identifier_char(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-// The index of the ']' that closes the '[' at `open`, or npos.
+// The index of the ']' that closes the '[' at `open` within its statement, or npos.
 std::size_t closing_bracket(const std::string& code, std::size_t open) {
     int depth = 0;
     for (std::size_t i = open; i < code.size(); ++i) {
+        if (code[i] == ';' || code[i] == '{' || code[i] == '}') return std::string::npos;
         if (code[i] == '[') ++depth;
         if (code[i] == ']' && --depth == 0) return i;
     }
@@ -114,12 +115,12 @@ std::string read_through_accessors(std::string code, const std::vector<std::stri
         while (open < code.size() && code[open] == ' ') ++open;
         if (open < code.size() && code[open] == '[' &&
             std::find(names.begin(), names.end(), word) != names.end()) {
+            // Unclosed (a typo): left as it is, for the compiler to report at its file and line.
             const std::size_t close = closing_bracket(code, open);
-            if (close == std::string::npos)
-                throw GpuError("rt: error: the shader's " + std::string(word) +
-                               "[ has no closing bracket");
-            code[close] = ')';
-            code.replace(end, open + 1 - end, "_at(");
+            if (close != std::string::npos) {
+                code[close] = ')';
+                code.replace(end, open + 1 - end, "_at(");
+            }
         }
         i = end - 1;  // the index expression is scanned next, for nested arrays
     }
