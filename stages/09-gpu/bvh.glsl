@@ -113,10 +113,11 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     const vec3 inv_direction = 1.0 / ray.direction;
     uint stack[kBvhMaxDepth + 2];
     int top = 0;
-    float t;
-    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t)) stack[top++] = 0u;
-    while (top > 0) {  // as bvh_intersect_nearest: descend to a leaf, then test it
-
+    float t_root;
+    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) stack[top++] = 0u;
+    // As bvh_intersect_nearest: descend to a leaf, nearer child first, then test it. Nearer
+    // first pays here too (1.1x on large_icosphere): the 8 lanes' rays part less.
+    while (top > 0) {
         uint first = 0u, count = 0u;
         while (top > 0) {
             const BvhNode node = bvh_nodes[stack[--top]];
@@ -124,10 +125,16 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
                 first = node.first, count = node.count;
                 break;
             }
-            for (uint child = node.first; child < node.first + 2u; ++child) {
-                stack[top] = child;  // written either way, kept if hit (as in the nearest query)
-                top += intersect_node(bvh_nodes[child], ray, inv_direction, t_range, t) ? 1 : 0;
-            }
+            float t_left, t_right;
+            const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction,
+                                                 t_range, t_left);
+            const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray,
+                                                  inv_direction, t_range, t_right);
+            const bool left_first = !hit_right || (hit_left && t_left <= t_right);
+            stack[top] = node.first + (left_first ? 1u : 0u);  // the farther, kept if both hit
+            top += hit_left && hit_right ? 1 : 0;
+            stack[top] = node.first + (left_first ? 0u : 1u);
+            top += hit_left || hit_right ? 1 : 0;
         }
         for (uint k = first; k < first + count; ++k)
             if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
