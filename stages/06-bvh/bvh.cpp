@@ -80,30 +80,19 @@ struct Bins {
     }
 };
 
-// What the slab test needs of one ray, worked out once for the whole traversal: which of a
-// node's two bounds each axis meets first. The near side is min for a positive direction, max
-// for a negative one: choosing by sign (not swapping the distances) leaves a NaN (0 * inf)
-// where the comparisons below ignore it. Choosing by an offset, not by a branch or a select in
-// every box test, is what the fastest scalar traversals do.
+// What the slab test needs of a ray, worked out once per traversal: for each axis, the node's
+// bound it meets first (min for a positive direction), by index into the node read as eight
+// floats (min: 0-2, max: 4-6). Choosing by sign, not by swapping distances, leaves a NaN (0 * inf)
+// where the comparisons ignore it; choosing once per ray takes the sign out of every box test.
 struct SlabRay {
     Vec3 origin, inv_direction;
-    int near_side[3], far_side[3];  // index of the bound in the node read as floats
+    int near_side[3];  // the far side is near_side ^ 4
 
     SlabRay(const Ray& ray, const Vec3& inv) : origin(ray.origin), inv_direction(inv) {
-        static_assert(offsetof(BvhNode, max) == 4 * sizeof(float));
-        for (int axis = 0; axis < 3; ++axis) {
-            const bool negative = inv[axis] < 0;
-            near_side[axis] = negative ? 4 + axis : axis;
-            far_side[axis] = negative ? axis : 4 + axis;
-        }
+        static_assert(std::is_standard_layout_v<BvhNode> && offsetof(BvhNode, max) == 16);
+        for (int axis = 0; axis < 3; ++axis) near_side[axis] = inv[axis] < 0 ? 4 + axis : axis;
     }
 };
-
-// The node's eight 4-byte words read as floats: only the six bounds (words 0-2 and 4-6) ever are.
-inline float bound(const BvhNode& node, int index) {
-    static_assert(std::is_standard_layout_v<BvhNode> && offsetof(BvhNode, min) == 0);
-    return reinterpret_cast<const float*>(&node)[index];
-}
 
 // intersect_node's slab test, compiled into both traversals' loops.
 [[gnu::always_inline]] inline bool slab_test(const BvhNode& node, const SlabRay& ray,
@@ -112,11 +101,11 @@ inline float bound(const BvhNode& node, int index) {
     constexpr Real eps = std::numeric_limits<Real>::epsilon() / 2;
     constexpr Real growth = 1 + 2 * (3 * eps) / (1 - 3 * eps);
     Real t0 = t_range.min, t1 = kInfinity;
+    const float* bounds = reinterpret_cast<const float*>(&node);
     for (int axis = 0; axis < 3; ++axis) {
-        const Real near =
-            (bound(node, ray.near_side[axis]) - ray.origin[axis]) * ray.inv_direction[axis];
-        const Real far =
-            (bound(node, ray.far_side[axis]) - ray.origin[axis]) * ray.inv_direction[axis];
+        const int side = ray.near_side[axis];
+        const Real near = (bounds[side] - ray.origin[axis]) * ray.inv_direction[axis];
+        const Real far = (bounds[side ^ 4] - ray.origin[axis]) * ray.inv_direction[axis];
         t0 = near > t0 ? near : t0;  // no early exit: straight-line min/max code is faster
         t1 = far < t1 ? far : t1;
     }
@@ -416,12 +405,11 @@ bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval 
                            BvhStats* stats) {
     // BEGIN SOLUTION
     bool found = false;
+    const auto test = [&](auto id) {  // a hit shrinks the range: what follows must be nearer
+        if (intersect_primitive(scene, id, ray, t_range, hit)) found = true, t_range.max = hit.t;
+    };
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
-        if (intersect_primitive(scene, Scene::primitive_id(Scene::Kind::Plane, i), ray, t_range,
-                                hit)) {
-            found = true;
-            t_range.max = hit.t;
-        }
+        test(Scene::primitive_id(Scene::Kind::Plane, i));
     if (!scene.bvh.built()) return found;
 
     const std::vector<BvhNode>& nodes = scene.bvh.nodes;
@@ -439,34 +427,22 @@ bool bvh_intersect_nearest(const PreparedScene& scene, const Ray& ray, Interval 
         const Entry entry = stack[--top];
         if (entry.t > t_range.max) continue;  // a nearer hit was found after it was pushed
         const BvhNode* node = &nodes[entry.node];
-        while (!node->is_leaf()) {
+        while (node && !node->is_leaf()) {
             const BvhNode* near = &nodes[node->first];
             const BvhNode* far = near + 1;
             Real t_near, t_far;
             const bool hit_near = slab_test(*near, slab_ray, t_range, t_near);
             const bool hit_far = slab_test(*far, slab_ray, t_range, t_far);
             visited += 2;
-            if (hit_near && hit_far) {
+            if (hit_near && hit_far) {  // the nearer first (the left on a tie), the other waits
                 if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
                 stack[top++] = {std::uint32_t(far - nodes.data()), t_far};
-                node = near;
-            } else if (hit_near) {
-                node = near;
-            } else if (hit_far) {
-                node = far;
-            } else {
-                node = nullptr;
-                break;
             }
+            node = hit_near ? near : hit_far ? far : nullptr;
         }
         if (!node) continue;
-        for (std::uint32_t k = node->first; k < node->first + node->count; ++k) {
-            ++tested;
-            if (intersect_primitive(scene, scene.bvh.primitives[k], ray, t_range, hit)) {
-                found = true;
-                t_range.max = hit.t;
-            }
-        }
+        for (std::uint32_t k = node->first; k < node->first + node->count; ++k)
+            ++tested, test(scene.bvh.primitives[k]);
     }
     if (stats) stats->nodes_visited += visited, stats->primitives_tested += tested;
     return found;
