@@ -37,6 +37,9 @@ struct Box4 {
         std::memcpy(&box.max, &p.bounds.max.x, sizeof box.max);
         return box;
     }
+    static Lanes centroid(const BvhPrimitive& p) {
+        return Lanes{p.centroid.x, p.centroid.y, p.centroid.z, 0};
+    }
     void grow(const Lanes& lo, const Lanes& hi) {
         min = lo < min ? lo : min;
         max = hi > max ? hi : max;
@@ -64,10 +67,8 @@ struct Bins {
         const Lanes scales{scale[0], scale[1], scale[2], 0};
         const Lanes zero{}, tops = zero + float(bins), lasts = zero + float(bins - 1);
         for (std::size_t i = begin; i < end; ++i) {
-            const BvhPrimitive& p = prims[i];
-            const Box4 b = Box4::of(p);
-            const Lanes c{p.centroid.x, p.centroid.y, p.centroid.z, 0};
-            Lanes x = (c - lo) * scales;
+            const Box4 b = Box4::of(prims[i]);
+            Lanes x = (Box4::centroid(prims[i]) - lo) * scales;
             x = x >= zero ? x : zero;  // and NaN
             x = x < tops ? x : lasts;
             const Ints k = __builtin_convertvector(x, Ints);
@@ -125,25 +126,25 @@ struct SlabRay {
 SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
                         const BvhBuildOptions& options) {
     // BEGIN SOLUTION
-    Box4 bounds4 = Box4::empty(), centroids4 = Box4::empty();
-    for (std::size_t i = begin; i < end; ++i) {
-        const BvhPrimitive& p = prims[i];
-        const Lanes c{p.centroid.x, p.centroid.y, p.centroid.z, 0};
-        bounds4.grow(Box4::of(p)), centroids4.grow(c, c);
-    }
-    const Aabb bounds = bounds4.aabb(), centroids = centroids4.aabb();
-    const float area = bounds.surface_area();
-    const float inv_area = area > 0 ? 1 / area : 0;
+    Box4 centroids4 = Box4::empty();
+    for (std::size_t i = begin; i < end; ++i)
+        centroids4.grow(Box4::centroid(prims[i]), Box4::centroid(prims[i]));
+    const Aabb centroids = centroids4.aabb();
     const int bins = std::clamp(options.bins, 2, kMaxBins);
-
     bool spread[3];
     float scale[3];
     for (int axis = 0; axis < 3; ++axis) {
         spread[axis] = centroids.max[axis] > centroids.min[axis];
         scale[axis] = spread[axis] ? float(bins) / (centroids.max[axis] - centroids.min[axis]) : 0;
     }
+    const int first_spread = spread[0] ? 0 : spread[1] ? 1 : spread[2] ? 2 : -1;
+    if (first_spread < 0) return {};  // no split: the centroids coincide
     Bins binned(bins);
     binned.add(prims, begin, end, centroids, scale, bins);
+    Box4 bounds = Box4::empty();  // the node's box: every primitive is in one bin of each axis
+    for (int k = 0; k < bins; ++k) bounds.grow(binned.box[first_spread][k]);
+    const float area = bounds.aabb().surface_area();
+    const float inv_area = area > 0 ? 1 / area : 0;
 
     SahSplit best;
     for (int axis = 0; axis < 3; ++axis) {
@@ -152,8 +153,7 @@ SahSplit find_sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begi
         // before used[j]) splits the primitives the same way, so only the lowest, used[j - 1] + 1,
         // is costed (a tie goes to the lower bin). A small node has few bins in use.
         int used[kMaxBins], m = 0;
-        for (int k = 0; k < bins; ++k)
-            if (binned.count[axis][k] > 0) used[m++] = k;
+        for (int k = 0; k < bins; ++k) used[m] = k, m += binned.count[axis][k] > 0;  // no branch
         // Right-hand sides (bins used[j] .. used[m - 1]), swept from the right.
         float right_area[kMaxBins];
         std::uint32_t right_count[kMaxBins];
