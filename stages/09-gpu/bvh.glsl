@@ -49,46 +49,46 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
         }
     const vec3 inv_direction = 1.0 / ray.direction;
     // Invocations run in lock-step, 8 at a time on llvmpipe, and both sides of an `if` cost
-    // all 8: so each descends to a leaf in an inner loop (one node a turn, the nearer child
-    // pushed last so it is popped next), then the 8 test their leaves' primitives together.
-    uint stack_node[kBvhMaxDepth + 2];  // one more: a slot above the top may be written
-    float stack_t[kBvhMaxDepth + 2];
+    // all 8: so each descends to a leaf in an inner loop (one node a turn), then the 8 test
+    // their leaves' primitives together. The node to visit next, the nearer child hit, stays in
+    // `node` (already read for its box test); only the farther waits on the stack, since every
+    // store to or load from a stack is a loop over the 8 lanes there.
+    uint stack_node[kBvhMaxDepth + 1];
+    float stack_t[kBvhMaxDepth + 1];
     int top = 0;
     float t_root;
     bvh_nodes_visited += 1u;
-    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) {
-        stack_node[0] = 0u;
-        stack_t[0] = t_root;
-        top = 1;
-    }
-    while (top > 0) {
+    BvhNode node = bvh_nodes[0];
+    bool holding = intersect_node(node, ray, inv_direction, t_range, t_root);
+    while (holding || top > 0) {
         // Descend until this invocation holds a leaf (or has nothing left to visit).
         uint first = 0u, count = 0u;
-        while (top > 0) {
-            --top;
-            if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
-            const BvhNode node = bvh_nodes[stack_node[top]];
+        while (holding || top > 0) {
+            if (!holding) {
+                --top;
+                if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
+                node = bvh_nodes[stack_node[top]];
+            }
+            holding = false;
             if (node.count > 0u) {
                 first = node.first, count = node.count;
                 break;
             }
             float t_left, t_right;
             bvh_nodes_visited += 2u;
-            const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction,
-                                                 t_range, t_left);
-            const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray,
-                                                  inv_direction, t_range, t_right);
+            const BvhNode left = bvh_nodes[node.first], right = bvh_nodes[node.first + 1u];
+            const bool hit_left = intersect_node(left, ray, inv_direction, t_range, t_left);
+            const bool hit_right = intersect_node(right, ray, inv_direction, t_range, t_right);
             const bool left_first = !hit_right || (hit_left && t_left <= t_right);
-            // Push the farther child first, then the nearer. Both slots are written whether
-            // or not the child is hit (top moves only for a hit one): each store to a stack
-            // costs llvmpipe a loop over its 8 lanes, so two stores, not three behind ifs.
-            const uint near_node = node.first + (left_first ? 0u : 1u);
-            stack_node[top] = node.first + 1u - (near_node - node.first);
+            // The farther waits if both are hit (its slot is written either way: one store
+            // without an `if` costs llvmpipe less than one behind it).
+            stack_node[top] = node.first + (left_first ? 1u : 0u);
             stack_t[top] = left_first ? t_right : t_left;
             top += hit_left && hit_right ? 1 : 0;
-            stack_node[top] = near_node;
-            stack_t[top] = left_first ? t_left : t_right;
-            top += hit_left || hit_right ? 1 : 0;
+            holding = hit_left || hit_right;
+            // The nearer child hit, field by field (WebGL's GLSL has no ?: on a struct).
+            node = BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
+                           left_first ? left.max : right.max, left_first ? left.count : right.count);
         }
         // Then its primitives, together with the other invocations that hold one.
         for (uint k = first; k < first + count; ++k)
@@ -111,30 +111,33 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     for (int i = 0; i < primitive_counts.y; ++i)
         if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch)) return true;
     const vec3 inv_direction = 1.0 / ray.direction;
-    uint stack[kBvhMaxDepth + 2];
+    uint stack[kBvhMaxDepth + 1];
     int top = 0;
     float t_root;
-    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) stack[top++] = 0u;
+    BvhNode node = bvh_nodes[0];
+    bool holding = intersect_node(node, ray, inv_direction, t_range, t_root);
     // As bvh_intersect_nearest: descend to a leaf, nearer child first, then test it. Nearer
     // first pays here too (1.1x on large_icosphere): the 8 lanes' rays part less.
-    while (top > 0) {
+    while (holding || top > 0) {
         uint first = 0u, count = 0u;
-        while (top > 0) {
-            const BvhNode node = bvh_nodes[stack[--top]];
+        while (holding || top > 0) {
+            if (!holding) node = bvh_nodes[stack[--top]];
+            holding = false;
             if (node.count > 0u) {
                 first = node.first, count = node.count;
                 break;
             }
             float t_left, t_right;
-            const bool hit_left = intersect_node(bvh_nodes[node.first], ray, inv_direction,
-                                                 t_range, t_left);
-            const bool hit_right = intersect_node(bvh_nodes[node.first + 1u], ray,
-                                                  inv_direction, t_range, t_right);
+            const BvhNode left = bvh_nodes[node.first], right = bvh_nodes[node.first + 1u];
+            const bool hit_left = intersect_node(left, ray, inv_direction, t_range, t_left);
+            const bool hit_right = intersect_node(right, ray, inv_direction, t_range, t_right);
             const bool left_first = !hit_right || (hit_left && t_left <= t_right);
             stack[top] = node.first + (left_first ? 1u : 0u);  // the farther, kept if both hit
             top += hit_left && hit_right ? 1 : 0;
-            stack[top] = node.first + (left_first ? 0u : 1u);
-            top += hit_left || hit_right ? 1 : 0;
+            holding = hit_left || hit_right;
+            // The nearer child hit, field by field (WebGL's GLSL has no ?: on a struct).
+            node = BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
+                           left_first ? left.max : right.max, left_first ? left.count : right.count);
         }
         for (uint k = first; k < first + count; ++k)
             if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
