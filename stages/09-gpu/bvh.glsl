@@ -107,9 +107,11 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
 // Whether anything is hit in t_range (shadow rays): stops at the first hit found.
 bool bvh_intersect_any(Ray ray, Interval t_range) {
     // BEGIN SOLUTION
+    // No `return` inside a loop: llvmpipe pays for one there, so `found` ends the loops.
     Hit scratch = no_hit();
-    for (int i = 0; i < primitive_counts.y; ++i)
-        if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch)) return true;
+    bool found = false;
+    for (int i = 0; i < primitive_counts.y && !found; ++i)
+        found = intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch);
     const vec3 inv_direction = 1.0 / ray.direction;
     uint stack[kBvhMaxDepth + 1];
     int top = 0;
@@ -118,7 +120,7 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     bool holding = intersect_node(node, ray, inv_direction, t_range, t_root);
     // As bvh_intersect_nearest: descend to a leaf, nearer child first, then test it. Nearer
     // first pays here too (1.1x on large_icosphere): the 8 lanes' rays part less.
-    while (holding || top > 0) {
+    while ((holding || top > 0) && !found) {
         uint first = 0u, count = 0u;
         while (holding || top > 0) {
             if (!holding) node = bvh_nodes[stack[--top]];
@@ -139,11 +141,10 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
             node = BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
                            left_first ? left.max : right.max, left_first ? left.count : right.count);
         }
-        for (uint k = first; k < first + count; ++k)
-            if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch))
-                return true;
+        for (uint k = first; k < first + count && !found; ++k)
+            found = intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch);
     }
-    return false;
+    return found;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
     // return false;
