@@ -35,6 +35,16 @@ bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
     // END SOLUTION
 }
 
+// BEGIN SOLUTION
+// `left` when left_first, else `right`, field by field: WebGL's GLSL has no ?: on a struct.
+BvhNode pick_child(bool left_first, BvhNode left, BvhNode right) {
+    return BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
+                   left_first ? left.max : right.max, left_first ? left.count : right.count);
+}
+// STUB
+// // Helper functions of your own may go here.
+// END SOLUTION
+
 // The nearest hit in t_range (planes one by one, then the tree): nearer child first, skipping
 // a node that starts beyond the nearest hit so far. intersect_primitive (given) tests one
 // primitive by its global id and fills hit.primitive and hit.material. Add each node whose box
@@ -86,9 +96,7 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
             stack_t[top] = left_first ? t_right : t_left;
             top += hit_left && hit_right ? 1 : 0;
             holding = hit_left || hit_right;
-            // The nearer child hit, field by field (WebGL's GLSL has no ?: on a struct).
-            node = BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
-                           left_first ? left.max : right.max, left_first ? left.count : right.count);
+            node = pick_child(left_first, left, right);  // the nearer child hit
         }
         // Then its primitives, together with the other invocations that hold one.
         for (uint k = first; k < first + count; ++k)
@@ -137,9 +145,7 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
             stack[top] = node.first + (left_first ? 1u : 0u);  // the farther, kept if both hit
             top += hit_left && hit_right ? 1 : 0;
             holding = hit_left || hit_right;
-            // The nearer child hit, field by field (WebGL's GLSL has no ?: on a struct).
-            node = BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
-                           left_first ? left.max : right.max, left_first ? left.count : right.count);
+            node = pick_child(left_first, left, right);  // the nearer child hit
         }
         for (uint k = first; k < first + count && !found; ++k)
             found = intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch);
