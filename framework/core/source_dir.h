@@ -6,7 +6,9 @@
 
 namespace rt {
 
-// Absolute; set once, in framework/CMakeLists.txt (source_dir.cpp's RT_SOURCE_DIR).
+// Absolute; set once, in framework/CMakeLists.txt (source_dir.cpp's RT_SOURCE_DIR). The
+// environment variable RT_SOURCE_DIR names another copy of the tree: the grader sets it for a
+// workspace packaged on one machine and unpacked on another (docs/grading.md).
 const std::filesystem::path& source_dir();
 
 }  // namespace rt

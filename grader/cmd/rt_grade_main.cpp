@@ -8,6 +8,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cmd/batch.h"
@@ -18,6 +20,7 @@
 #include "core/text_file.h"
 #include "grading/grade.h"
 #include "grading/rate_limit.h"
+#include "package/platforms.h"
 #include "release/release.h"
 #include "workspace/workspace_prepare.h"
 
@@ -49,6 +52,7 @@ struct GradeArgs {
     std::string submission, stages, cache;
     rt::grader::RateLimit limit;
     std::string metadata;  // Gradescope's submission_metadata.json
+    std::string prairielearn_data, problem_names;
 };
 
 // The options of grading one submission (they also work after a subcommand's name).
@@ -78,6 +82,49 @@ void add_grade_options(CLI::App& app, GradeArgs& a) {
         ->check(CLI::Range(0, 1000));
     app.add_option("--metadata", a.metadata,
                    "Gradescope's submission_metadata.json (this and the earlier submissions)");
+    app.add_option("--prairielearn-results", grade.prairielearn_results,
+                   "write PrairieLearn's results.json here");
+    app.add_option("--prairielearn-data", a.prairielearn_data,
+                   "PrairieLearn's data.json: params.rt_stages (\"1,2\") replaces --stages")
+        ->check(CLI::ExistingFile);
+    app.add_flag("--autolab-scores", grade.autolab_scores,
+                 "print Autolab's score line on stdout before the first test and after each");
+    app.add_option("--problem-names", a.problem_names,
+                   "Autolab's problem name of each stage, e.g. 1=camera,2=shapes (default: the "
+                   "stage's folder name)");
+}
+
+// "1=camera,2=shapes" -> {1: "camera", 2: "shapes"}; false for anything else.
+bool parse_problem_names(const std::string& list, std::map<int, std::string>& names) {
+    std::stringstream s(list);
+    std::string item;
+    while (std::getline(s, item, ',')) {
+        const auto eq = item.find('=');
+        int n = 0;
+        if (eq == std::string::npos || eq + 1 == item.size()) return false;
+        const auto [end, ec] = std::from_chars(item.data(), item.data() + eq, n);
+        if (ec != std::errc() || end != item.data() + eq || n < 1 || n > 99) return false;
+        const std::string name = item.substr(eq + 1);
+        if (name.find_first_of("\"\\") != std::string::npos || name.size() > 64) return false;
+        names[n] = name;
+    }
+    return true;
+}
+
+// PrairieLearn's data.json: a question's params.rt_stages picks the stages it grades, so one
+// image serves a question per stage. Unreadable data grades the package's stages (a warning).
+void apply_prairielearn_data(const std::string& file, std::string& stages) {
+    try {
+        const auto data = nlohmann::json::parse(rt::read_text(file));
+        const auto params = data.value("params", nlohmann::json::object());
+        if (params.contains("rt_stages")) {
+            const auto& v = params.at("rt_stages");
+            stages = v.is_string() ? v.get<std::string>() : v.dump();
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "rt-grade: warning: " << file << ": " << e.what()
+                  << " (grading the package's stages)\n";
+    }
 }
 
 struct ReleaseArgs {
@@ -205,9 +252,16 @@ int run_similarity_command(SimilarityArgs& a, const rt::grader::GradeOptions& gr
 
 // The grading options that need more than CLI11's checks; false (and a one-line error) when
 // they do not make sense.
-bool finish_grade_args(GradeArgs& args) {
+bool finish_grade_args(GradeArgs& args, bool packaging) {
     args.grade.cache = args.cache;
-    if (args.limit.max_graded > 0 && args.metadata.empty()) {
+    if (!args.prairielearn_data.empty()) apply_prairielearn_data(args.prairielearn_data, args.stages);
+    if (!parse_problem_names(args.problem_names, args.grade.problem_names)) {
+        std::cerr << "rt-grade: error: --problem-names \"" << args.problem_names
+                  << "\": expected STAGE=NAME pairs separated by commas, e.g. "
+                     "--problem-names 1=camera,2=shapes (no quotes or backslashes)\n";
+        return false;
+    }
+    if (args.limit.max_graded > 0 && args.metadata.empty() && !packaging) {
         std::cerr << "rt-grade: error: --max-per-day needs --metadata FILE (Gradescope's "
                      "/autograder/submission_metadata.json)\n";
         return false;
@@ -258,6 +312,29 @@ int grade_one(rt::grader::GradeOptions& grade, const std::string& submission) {
     return 0;
 }
 
+// `rt-grade package`: each option only where it means something (docs/grading.md).
+int run_package_command(const GradeArgs& args, const std::string& platform,
+                        const std::string& out) {
+    rt::grader::PackageRequest r;
+    r.grade = args.grade;
+    r.platform = *rt::grader::parse_platform(platform);
+    r.out = out;
+    r.max_per_day = args.limit.max_graded;
+    r.problem_names = args.grade.problem_names;
+    if (r.max_per_day > 0 && r.platform != rt::grader::Platform::Gradescope) {
+        std::cerr << "rt-grade: error: --max-per-day is Gradescope's (it reads the earlier "
+                     "submissions from submission_metadata.json); on "
+                  << platform << " limit submissions in the platform's own settings\n";
+        return 2;
+    }
+    if (!r.problem_names.empty() && r.platform != rt::grader::Platform::Autolab) {
+        std::cerr << "rt-grade: error: --problem-names names Autolab's problems; " << platform
+                  << " takes its names from the tests (leave the option out)\n";
+        return 2;
+    }
+    return rt::grader::run_package(r, std::cout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -279,12 +356,18 @@ int main(int argc, char** argv) {
     prepare_cmd->add_option("--slots", slots, "ignored (one workspace serves every batch job)");
     BatchArgs batch;
     CLI::App* batch_cmd = add_batch_command(app, batch);
-    std::string package_out = "autograder.zip";
+    std::string package_out, platform = "gradescope";
     CLI::App* package_cmd = app.add_subcommand(
-        "package", "Build the Gradescope autograder zip (--stages: the stages it grades)");
-    package_cmd->add_option("--out", package_out, "the zip to write");
-    // --max-per-day N (a grading option) after `package`: run_autograder passes it on, with
-    // Gradescope's metadata file.
+        "package",
+        "Build the grader for a course platform (--stages: the stages it grades; "
+        "--max-per-day: Gradescope's rate limit; --problem-names: Autolab's problems)");
+    package_cmd->add_option("--out", package_out,
+                            "the zip (gradescope, default autograder.zip) or folder "
+                            "(prairielearn, autolab; default the platform's name) to write");
+    package_cmd
+        ->add_option("--platform", platform, "gradescope, prairielearn or autolab")
+        ->check(CLI::IsMember({"gradescope", "prairielearn", "autolab"}))
+        ->capture_default_str();
     rt::grader::CompareRequest compare;
     CLI::App* compare_cmd = add_compare_command(app, compare);
     SimilarityArgs similarity;
@@ -298,7 +381,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
-    if (!finish_grade_args(args)) return 2;
+    if (!finish_grade_args(args, package_cmd->parsed())) return 2;
 
     try {
         if (*release_cmd) {
@@ -317,9 +400,7 @@ int main(int argc, char** argv) {
             return rt::grader::run_compare(compare, std::cout);
         }
         if (*similarity_cmd) return run_similarity_command(similarity, grade);
-        if (*package_cmd)
-            return rt::grader::run_package(grade.source, package_out, grade.stages,
-                                           args.limit.max_graded, std::cout);
+        if (*package_cmd) return run_package_command(args, platform, package_out);
         if (args.submission.empty()) {
             std::cerr << app.help();
             return 2;

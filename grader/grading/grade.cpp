@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "grading/grading.h"
+#include "grading/platform_results.h"
 #include "util.h"
 
 namespace fs = std::filesystem;
@@ -31,6 +32,28 @@ Report Grading::to_report() const {
                                t.diff_png, t.metrics});
     r.leaderboard = leaderboard;
     return r;
+}
+
+void print_autolab_scores(Grading& g, std::optional<std::size_t> task) {
+    std::lock_guard lock(g.progress_mutex);
+    if (task && *task < g.finished.size()) g.finished[*task] = true;
+    std::map<int, double> scores;
+    std::map<int, std::string> names;
+    for (const auto& s : g.graded) {
+        scores[s.number] = 0;
+        const auto named = g.o.problem_names.find(s.number);
+        names[s.number] = named != g.o.problem_names.end()
+                              ? named->second
+                              : fs::path(s.folder).filename().string();
+    }
+    // Only outcomes no task is still writing: those finished, or all once grading is over.
+    const bool over = !task && !g.finished.empty();
+    for (std::size_t i = 0; i < g.outcomes.size(); ++i)
+        if (over || (i < g.finished.size() && g.finished[i]))
+            scores[g.outcomes[i].stage] += g.outcomes[i].score;
+    // One write(2) a line: a kill between two lines never leaves half a line last.
+    const std::string line = autolab_scores_line(scores, names) + "\n";
+    [[maybe_unused]] const ssize_t written = write(STDOUT_FILENO, line.data(), line.size());
 }
 
 namespace {
@@ -199,6 +222,14 @@ void summarise(Grading& g, std::ostream& log) {
     summary.seconds = seconds_since(g.start);
     const Report report = g.to_report();
     if (!g.o.results.empty()) write_results_json(report, g.o.results);
+    if (!g.o.prairielearn_results.empty()) {
+        const bool gradable = g.in.error.empty() && !g.in.files.empty();
+        write_prairielearn_results(report, g.o.prairielearn_results, gradable,
+                                   g.in.error.empty()
+                                       ? "None of the graded stages' files was in the submission "
+                                         "(nothing to grade): check the file names."
+                                       : "The submission could not be read: " + g.in.error);
+    }
     if (!g.o.html.empty()) write_html_report(report, g.o.html);
     if (!g.o.renders.empty()) {
         std::error_code ec;
@@ -218,6 +249,12 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     plan_outcomes(g);
     g.isolation = probe_isolation();
     if (!o.results.empty()) write_results_json(g.to_report(), o.results);  // the placeholder
+    if (!o.prairielearn_results.empty())  // a grader that dies never scores the student 0
+        write_prairielearn_results(g.to_report(), o.prairielearn_results, false,
+                                   "Grading did not finish (a problem of the grader, not of "
+                                   "your submission); this submission does not count: submit "
+                                   "again, or ask the course staff.");
+    if (o.autolab_scores) print_autolab_scores(g);  // every stage 0 until its tests finish
 
     // Gradings share the workspace read-only; `prepare` takes this lock exclusively.
     WorkspaceLock lock(g.w.cache);
@@ -230,6 +267,7 @@ GradeSummary grade_submission(const GradeOptions& o, std::ostream& log) {
     run_tests_and_scenes(g);
     time_leaderboard(g);
     summarise(g, log);
+    if (o.autolab_scores) print_autolab_scores(g);  // the final scores, notes included
 
     std::error_code ec;
     fs::remove_all(g.scratch, ec);

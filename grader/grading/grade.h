@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace rt::grader {
@@ -22,6 +24,10 @@ struct GradeOptions {
     bool started_only = false;         // no --stages: grade the stages started (self-grading)
     bool reveal_hidden = false;        // terminal summary shows hidden tests (instructor)
     double time_limit = 0;             // > 0: overrides every test's and render's wall/CPU limit
+    // The platforms besides Gradescope (grading/platform_results.h):
+    std::filesystem::path prairielearn_results;  // PrairieLearn's results.json (optional)
+    bool autolab_scores = false;  // Autolab: a score line on stdout at the start, after each test
+    std::map<int, std::string> problem_names;  // Autolab's problem of a stage (default: folder)
 };
 
 struct GradeSummary {

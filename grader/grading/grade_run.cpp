@@ -116,7 +116,8 @@ class Runner {
         r.limits.memory_mb = 512;  // Gradescope's default container has 768 MB
         r.working_dir = out;
         r.capture_dir = trusted / "capture";
-        r.binds = {{g_.w.src, {}, false}, {binary, {}, false}, {out, {}, true}};
+        r.binds = {{binary, {}, false}, {out, {}, true}};
+        show_workspace(g_.w, r);
         r.empty_dirs = hidden_;
         r.cancel = &g_interrupted;
         return r;
@@ -151,8 +152,8 @@ class Runner {
         r.argv = {(bin / task.binary).string(), "--gtest_filter=" + task.test, "--gtest_color=no"};
         set_time_limits(r.limits, task.stage->test_seconds);
         VerdictChannel channel;
-        r.env = {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
-                 "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)};
+        r.env.insert(r.env.end(), {"RT_GRADE_NONCE_FD=" + std::to_string(kNonceFd),
+                                   "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)});
         r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.child_end, kResultFd}};
         std::string worker_output;
         const RunResult res =
@@ -189,7 +190,7 @@ class Runner {
         RunSpec worker = base_spec(bin / kWorker, child_dir(dir / "worker-out"),
                                    trusted_dir(dir / "worker-trusted"));
         worker.argv = {(bin / kWorker).string()};
-        worker.env = {"RT_REMOTE_FD=" + std::to_string(kRemoteFd)};
+        worker.env.push_back("RT_REMOTE_FD=" + std::to_string(kRemoteFd));
         worker.pass_fds = {{ends[1], kRemoteFd}};
         worker.limits = judge.limits;
         add_gpu(task, worker);
@@ -383,8 +384,11 @@ void time_leaderboard(Grading& g) {
 void run_tests_and_scenes(Grading& g) {
     Runner runner(g);
     const int jobs = g.o.jobs > 0 ? g.o.jobs : default_thread_count();
+    g.finished.assign(g.outcomes.size(), false);
     parallel_for(g.tasks.size(), jobs, [&](std::size_t i) {
-        if (!g_interrupted) runner.run(i);  // once interrupted, the rest are skipped
+        if (g_interrupted) return;  // once interrupted, the rest are skipped
+        runner.run(i);
+        if (g.o.autolab_scores) print_autolab_scores(g, g.tasks[i].outcome);
     });
 }
 

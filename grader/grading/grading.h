@@ -7,6 +7,8 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,9 +65,16 @@ struct Grading {
     std::atomic<int> survivors{0};  // processes the sandbox could not kill
     GradeSummary summary;
     std::vector<LeaderboardEntry> leaderboard;  // time_leaderboard's, when a stage asks for one
+    std::mutex progress_mutex;                  // guards finished (run phase, Autolab's lines)
+    std::vector<bool> finished;                 // outcomes whose task has run
 
     Report to_report() const;
 };
+
+// Autolab's running total (--autolab-scores): one line on stdout with the points of the tests
+// that have finished, so that a timeout still leaves a score as the last line. `task`: the
+// outcome just finished (none: the line before the first test, or after the last).
+void print_autolab_scores(Grading& g, std::optional<std::size_t> task = std::nullopt);
 
 // The phases that live in files of their own.
 void build_stages(Grading& g);          // grade_build.cpp: compile, check, link per stage

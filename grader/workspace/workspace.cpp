@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstring>
 #include <sstream>
+#include <string_view>
 
 #include "util.h"
 
@@ -39,7 +40,22 @@ Workspace workspace_paths(const GradeOptions& o) {
     // (hidden_dirs).
     w.build = w.src / "build";
     w.priv = w.cache / "private";
+    std::error_code ec;
+    if (fs::is_directory(w.cache / "runtime" / "lib", ec)) w.runtime = w.cache / "runtime";
     return w;
+}
+
+bool is_packaged(const Workspace& w) {
+    std::error_code ec;
+    return fs::is_regular_file(w.cache / "package.json", ec);
+}
+
+void show_workspace(const Workspace& w, RunSpec& r, bool libraries) {
+    r.binds.push_back({w.src, {}, false});
+    r.env.push_back("RT_SOURCE_DIR=" + w.src.string());
+    if (w.runtime.empty()) return;
+    r.binds.push_back({w.runtime, {}, false});
+    if (libraries) r.env.push_back("LD_LIBRARY_PATH=" + (w.runtime / "lib").string());
 }
 
 std::vector<fs::path> hidden_dirs(const Workspace& w) {
@@ -64,11 +80,26 @@ std::string pixel_hash(const Image8& image) {
     return hex(h);
 }
 
+namespace {
+
+// A packaged plan's commands name the cache as kCachePlaceholder (package/bundle.h): the
+// package is unpacked wherever the platform puts it.
+std::map<std::string, std::vector<std::string>> relocated(
+    std::map<std::string, std::vector<std::string>> commands, const fs::path& cache) {
+    for (auto& [name, argv] : commands)
+        for (auto& arg : argv)
+            for (std::size_t p; (p = arg.find(kCachePlaceholder)) != std::string::npos;)
+                arg.replace(p, std::string_view(kCachePlaceholder).size(), cache.string());
+    return commands;
+}
+
+}  // namespace
+
 BuildPlan load_build_plan(const Workspace& w) {
     BuildPlan plan;
     const json j = json::parse(read_text(w.priv / "plan.json"));
-    plan.compile = j.at("compile").get<decltype(plan.compile)>();
-    plan.link = j.at("link").get<decltype(plan.link)>();
+    plan.compile = relocated(j.at("compile").get<decltype(plan.compile)>(), w.cache);
+    plan.link = relocated(j.at("link").get<decltype(plan.link)>(), w.cache);
     plan.api = j.at("api").get<decltype(plan.api)>();
     plan.instructor_symbols = j.at("instructor_symbols").get<std::set<std::string>>();
     plan.shipped_hashes = j.at("shipped_hashes").get<std::set<std::string>>();

@@ -26,12 +26,23 @@
 #include "course/manifest.h"
 #include "grading/grade.h"
 #include "image/image.h"
+#include "sandbox/sandbox.h"
 
 namespace rt::grader {
 
 struct Workspace {
     std::filesystem::path cache, root, src, build, priv;
+    // A packaged workspace's runtime (package/bundle.h): lib/, the shared libraries the grading
+    // machine lacks, and include/, the headers student files reach; empty when not packaged.
+    std::filesystem::path runtime;
 };
+
+// How a packaged plan names the cache folder, which is wherever the package was unpacked.
+inline constexpr const char* kCachePlaceholder = "@CACHE@";
+
+// True for a workspace written by `rt-grade package`: complete, and never rebuilt (the grading
+// machine has no build tools for the framework).
+bool is_packaged(const Workspace& w);
 Workspace workspace_paths(const GradeOptions& options);
 
 // The workspace's lock (CACHE/workspace.lock): gradings hold it shared while they read the
@@ -64,6 +75,12 @@ struct BuildPlan {
     bool has_reference = false;
 };
 BuildPlan load_build_plan(const Workspace& w);
+
+// What every child of a grading sees of the workspace: the public tree, read-only, named to the
+// framework by RT_SOURCE_DIR (a packaged tree was built elsewhere, core/source_dir.h), and a
+// packaged workspace's runtime: its headers, and with `libraries` its shared libraries found
+// through LD_LIBRARY_PATH (not for the compiler, which runs on the machine's own). Appends to r.
+void show_workspace(const Workspace& w, RunSpec& r, bool libraries = true);
 
 // Folders of the workspace tree a child never sees (covered by an empty tmpfs in the jail).
 std::vector<std::filesystem::path> hidden_dirs(const Workspace& w);

@@ -56,8 +56,9 @@ bool compile_in_jail(const Workspace& w, const BuildPlan& plan, const std::strin
     }
     r.working_dir = work / "out";
     r.capture_dir = work / "capture";
-    r.binds = {
-        {w.src, {}, false}, {work / "source.cpp", w.src / key, false}, {work / "out", {}, true}};
+    show_workspace(w, r, false);
+    r.binds.insert(r.binds.end(),
+                   {{work / "source.cpp", w.src / key, false}, {work / "out", {}, true}});
     r.empty_dirs = hidden_dirs(w);
     r.limits = {120, 120, 16384, 4096, 64, 64, 256 * 1024};
     const RunResult res = run_sandboxed(r);

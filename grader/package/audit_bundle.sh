@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The grading bundle's audit: would it load and link on Ubuntu 22.04 (Gradescope's image) as well
+# as on Debian 12? Checked without Ubuntu, from the files themselves:
+#   1. every ELF program and shared library needs at most GLIBC_2.35 (Ubuntu 22.04's glibc),
+#      GLIBCXX_3.4.30 and CXXABI_1.3.13 (GCC 12's libstdc++, which g++-12 brings to both);
+#   2. every library they need is in the bundle or is a soname target_packages.txt lets the
+#      target provide;
+#   3. every object and archive linked on the target calls no C library function newer than
+#      2.35 (its versions are bound there, by the target's linker);
+#   4. the packages the bundle asks for (BUNDLE/packages.txt) are all on target_packages.txt.
+# Prints one line per finding, naming the file and the fix; exits 1 when there is one.
+#
+#   audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT
+set -euo pipefail
+
+bundle=${1:?usage: audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT}
+list=${2:?usage: audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT}
+[ -d "$bundle/cache/runtime/lib" ] || { echo "audit: $bundle is not a grading bundle (no cache/runtime/lib)"; exit 2; }
+
+# Ubuntu 22.04's ceilings.
+max_glibc=2.35 max_glibcxx=3.4.30 max_cxxabi=1.3.13
+findings=0
+finding() { echo "audit: $*"; findings=$((findings + 1)); }
+
+# "a.b.c" newer than "x.y.z"?
+newer() { [ "$1" != "$2" ] && [ "$(printf '%s\n%s\n' "$1" "$2" | sort -V | tail -n1)" = "$1" ]; }
+
+allowed_sonames=$(grep -v '^#' "$list" | awk -F'|' 'NF == 4 {print $3}' | tr ' ' '\n' | grep -v '^-\?$' | sort -u)
+allowed_packages=$(grep -v '^#' "$list" | awk -F'|' 'NF == 4 {gsub(/ /, "", $1); print $1}' | sort -u)
+
+elfs=() objects=()
+while IFS= read -r -d '' f; do
+  case $(head -c 4 "$f" | od -An -c | tr -d ' ') in
+    177ELF)
+      if readelf -h "$f" 2>/dev/null | grep -q 'Type:.*REL '; then objects+=("$f"); else elfs+=("$f"); fi ;;
+    '!<ar'*) objects+=("$f") ;;
+  esac
+done < <(find "$bundle" -type f -print0)
+
+# 1 and 2: programs and shared libraries.
+for f in "${elfs[@]}"; do
+  rel=${f#"$bundle"/}
+  while read -r version; do
+    base=${version%%_*} number=${version#*_}
+    case $base in
+      GLIBC) max=$max_glibc ;; GLIBCXX) max=$max_glibcxx ;; CXXABI) max=$max_cxxabi ;; *) continue ;;
+    esac
+    newer "$number" "$max" &&
+      finding "$rel needs $version, newer than Ubuntu 22.04's ${base}_$max: ship a build without it, or leave it out of the bundle"
+  done < <(readelf -V -W "$f" 2>/dev/null | sed -n '/Version needs section/,$p' |
+    grep -oE 'Name: (GLIBC|GLIBCXX|CXXABI)_[0-9.]+' | cut -c7- | sort -u)
+  while read -r needed; do
+    [ -e "$bundle/cache/runtime/lib/$needed" ] && continue
+    grep -qxF "$needed" <<< "$allowed_sonames" && continue
+    finding "$rel needs $needed, which is neither in cache/runtime/lib nor provided by a package of target_packages.txt: ship it (rt-grade package does, for what ldd finds) or add its package there with the reason"
+  done < <(readelf -d -W "$f" 2>/dev/null | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+done
+
+# 3: objects and archives, whose C library calls are bound by the target's linker.
+libc=$(ldconfig -p | awk '/libc\.so\.6 .*x86-64/ {print $NF; exit}')
+libm=$(ldconfig -p | awk '/libm\.so\.6 .*x86-64/ {print $NF; exit}')
+# Functions the C library first offers after 2.35 (they have no older version).
+too_new=$(objdump -T "$libc" "$libm" | awk 'NF >= 2 && $(NF-1) ~ /GLIBC_[0-9]/ {v = $(NF-1); gsub(/[()]/, "", v); print $NF, substr(v, 7)}' |
+  sort -k1,1 -k2,2V | awk '!seen[$1]++' |
+  while read -r sym version; do if newer "$version" "$max_glibc"; then echo "$sym"; fi; done | sort -u)
+if [ -n "$too_new" ] && [ ${#objects[@]} -gt 0 ]; then
+  for f in "${objects[@]}"; do
+    while read -r sym; do
+      grep -qxF "$sym" <<< "$too_new" &&
+        finding "${f#"$bundle"/} calls $sym, which Ubuntu 22.04's C library (2.35) does not have: avoid it in code linked on the target"
+    done < <(nm -u "$f" 2>/dev/null | awk '{print $NF}' | sed 's/@.*//' | sort -u)
+  done
+fi
+
+# 4: the packages asked for.
+if [ -f "$bundle/packages.txt" ]; then
+  while read -r package; do
+    [ -z "$package" ] && continue
+    grep -qxF "$package" <<< "$allowed_packages" ||
+      finding "packages.txt asks for $package, which is not on target_packages.txt (only names checked to exist on both Debian 12 and Ubuntu 22.04 may be installed)"
+  done < "$bundle/packages.txt"
+else
+  finding "no packages.txt in $bundle: rt-grade package writes it"
+fi
+
+echo "audit: ${#elfs[@]} programs and libraries, ${#objects[@]} objects and archives, $findings findings"
+[ $findings -eq 0 ]
