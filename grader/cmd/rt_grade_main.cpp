@@ -332,7 +332,7 @@ int run_package_command(const GradeArgs& args, const std::string& platform,
                   << " takes its names from the tests (leave the option out)\n";
         return 2;
     }
-    return rt::grader::run_package(r, std::cout);
+    return rt::grader::run_package(r, std::cout, std::cerr);
 }
 
 }  // namespace

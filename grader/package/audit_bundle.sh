@@ -12,6 +12,7 @@
 #
 #   audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT
 set -euo pipefail
+trap 'echo "audit: stopped at line $LINENO ($BASH_COMMAND failed): the audit itself broke, not the bundle"' ERR
 
 bundle=${1:?usage: audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT}
 list=${2:?usage: audit_bundle.sh BUNDLE TARGET_PACKAGES_TXT}
@@ -22,33 +23,33 @@ max_glibc=2.35 max_glibcxx=3.4.30 max_cxxabi=1.3.13
 findings=0
 finding() { echo "audit: $*"; findings=$((findings + 1)); }
 
-# "a.b.c" newer than "x.y.z"?
-newer() { [ "$1" != "$2" ] && [ "$(printf '%s\n%s\n' "$1" "$2" | sort -V | tail -n1)" = "$1" ]; }
+# awk: is version a (a.b.c) after version b?
+after='function after(a, b,   x, y, i) {
+  split(a, x, "."); split(b, y, ".")
+  for (i = 1; i <= 4; i++) if (x[i] + 0 != y[i] + 0) return x[i] + 0 > y[i] + 0
+  return 0 }'
 
 allowed_sonames=$(grep -v '^#' "$list" | awk -F'|' 'NF == 4 {print $3}' | tr ' ' '\n' | grep -v '^-\?$' | sort -u)
 allowed_packages=$(grep -v '^#' "$list" | awk -F'|' 'NF == 4 {gsub(/ /, "", $1); print $1}' | sort -u)
 
+# Every ELF file by its type, from one readelf run (archive members read as "File: a.a(m.o)").
 elfs=() objects=()
-while IFS= read -r -d '' f; do
-  case $(head -c 4 "$f" | od -An -c | tr -d ' ') in
-    177ELF)
-      if readelf -h "$f" 2>/dev/null | grep -q 'Type:.*REL '; then objects+=("$f"); else elfs+=("$f"); fi ;;
-    '!<ar'*) objects+=("$f") ;;
-  esac
-done < <(find "$bundle" -type f -print0)
-
+while IFS=$'\t' read -r kind f; do
+  if [ "$kind" = REL ]; then objects+=("$f"); else elfs+=("$f"); fi
+done < <(find "$bundle" -type f -print0 | xargs -0 readelf -h 2> /dev/null |
+  awk '/^File: / {file = substr($0, 7); sub(/\(.*\)$/, "", file)}
+       /^  Type:/ {print ($2 == "REL" ? "REL" : "ELF") "\t" file}' | sort -u)
 # 1 and 2: programs and shared libraries.
 for f in "${elfs[@]}"; do
   rel=${f#"$bundle"/}
-  while read -r version; do
-    base=${version%%_*} number=${version#*_}
-    case $base in
-      GLIBC) max=$max_glibc ;; GLIBCXX) max=$max_glibcxx ;; CXXABI) max=$max_cxxabi ;; *) continue ;;
-    esac
-    newer "$number" "$max" &&
-      finding "$rel needs $version, newer than Ubuntu 22.04's ${base}_$max: ship a build without it, or leave it out of the bundle"
+  while read -r version max; do
+    finding "$rel needs $version, newer than Ubuntu 22.04's $max: ship a build without it, or leave it out of the bundle"
   done < <(readelf -V -W "$f" 2>/dev/null | sed -n '/Version needs section/,$p' |
-    grep -oE 'Name: (GLIBC|GLIBCXX|CXXABI)_[0-9.]+' | cut -c7- | sort -u)
+    grep -oE 'Name: (GLIBC|GLIBCXX|CXXABI)_[0-9.]+' | cut -c7- | sort -u |
+    awk -v glibc="$max_glibc" -v glibcxx="$max_glibcxx" -v cxxabi="$max_cxxabi" "$after"'
+      { base = $0; sub(/_.*/, "", base); v = substr($0, length(base) + 2)
+        max = base == "GLIBC" ? glibc : base == "GLIBCXX" ? glibcxx : cxxabi
+        if (after(v, max)) print $0, base "_" max }')
   while read -r needed; do
     [ -e "$bundle/cache/runtime/lib/$needed" ] && continue
     grep -qxF "$needed" <<< "$allowed_sonames" && continue
@@ -57,18 +58,20 @@ for f in "${elfs[@]}"; do
 done
 
 # 3: objects and archives, whose C library calls are bound by the target's linker.
-libc=$(ldconfig -p | awk '/libc\.so\.6 .*x86-64/ {print $NF; exit}')
-libm=$(ldconfig -p | awk '/libm\.so\.6 .*x86-64/ {print $NF; exit}')
+libc=$(ldconfig -p | awk '/libc\.so\.6 .*x86-64/ && !n++ {print $NF}')  # no early exit: SIGPIPE + pipefail
+libm=$(ldconfig -p | awk '/libm\.so\.6 .*x86-64/ && !n++ {print $NF}')
 # Functions the C library first offers after 2.35 (they have no older version).
-too_new=$(objdump -T "$libc" "$libm" | awk 'NF >= 2 && $(NF-1) ~ /GLIBC_[0-9]/ {v = $(NF-1); gsub(/[()]/, "", v); print $NF, substr(v, 7)}' |
-  sort -k1,1 -k2,2V | awk '!seen[$1]++' |
-  while read -r sym version; do if newer "$version" "$max_glibc"; then echo "$sym"; fi; done | sort -u)
+too_new=$(objdump -T "$libc" "$libm" |
+  awk -v max="$max_glibc" "$after"'
+    NF >= 2 && $(NF-1) ~ /GLIBC_[0-9]/ {
+      v = $(NF-1); gsub(/[()]/, "", v); v = substr(v, 7)
+      if (!($NF in oldest) || after(oldest[$NF], v)) oldest[$NF] = v }
+    END { for (s in oldest) if (after(oldest[s], max)) print s }' | sort -u)
 if [ -n "$too_new" ] && [ ${#objects[@]} -gt 0 ]; then
   for f in "${objects[@]}"; do
     while read -r sym; do
-      grep -qxF "$sym" <<< "$too_new" &&
-        finding "${f#"$bundle"/} calls $sym, which Ubuntu 22.04's C library (2.35) does not have: avoid it in code linked on the target"
-    done < <(nm -u "$f" 2>/dev/null | awk '{print $NF}' | sed 's/@.*//' | sort -u)
+      finding "${f#"$bundle"/} calls $sym, which Ubuntu 22.04's C library (2.35) does not have: avoid it in code linked on the target"
+    done < <(nm -u "$f" 2>/dev/null | awk '{print $NF}' | sed 's/@.*//' | sort -u | comm -12 - <(echo "$too_new"))
   done
 fi
 

@@ -350,7 +350,7 @@ std::vector<TargetPackage> read_target_packages(const fs::path& source) {
     return packages;
 }
 
-bool write_bundle(const BundleRequest& r, std::ostream& log) {
+bool write_bundle(const BundleRequest& r, std::ostream& log, std::ostream& err) {
     const fs::path cache = r.out / "cache";
     Bundling b{r,
                cache,
@@ -372,7 +372,7 @@ bool write_bundle(const BundleRequest& r, std::ostream& log) {
         ship_libraries(b, prebuilt_programs(b, r.out));
         write_package_json(b);
     } catch (const std::exception& e) {
-        log << "rt-grade: error: the grading bundle: " << e.what() << "\n";
+        err << "rt-grade: error: the grading bundle: " << e.what() << "\n";
         return false;
     }
     return true;

@@ -40,8 +40,8 @@ struct BundleRequest {
     std::vector<TargetPackage> packages;  // target_packages.txt
 };
 
-// Writes the bundle; false (and why, in `log`) when a step fails.
-bool write_bundle(const BundleRequest& request, std::ostream& log);
+// Writes the bundle, saying what it ships in `log`; false (and why, in `err`) when a step fails.
+bool write_bundle(const BundleRequest& request, std::ostream& log, std::ostream& err);
 
 // Runs grader/package/audit_bundle.sh on a bundle: true when it passes. Its findings go to `log`.
 bool audit_bundle(const std::filesystem::path& source, const std::filesystem::path& bundle,

@@ -169,10 +169,10 @@ std::string platform_name(Platform platform) {
     return "?";
 }
 
-int run_package(const PackageRequest& r, std::ostream& log) {
+int run_package(const PackageRequest& r, std::ostream& log, std::ostream& err) {
     char tmpl[] = "/tmp/rt-grade-package-XXXXXX";
     if (!mkdtemp(tmpl)) {
-        log << "rt-grade: error: cannot create a folder in /tmp for the package\n";
+        err << "rt-grade: error: cannot create a folder in /tmp for the package\n";
         return 1;
     }
     const fs::path stage = tmpl;
@@ -180,10 +180,10 @@ int run_package(const PackageRequest& r, std::ostream& log) {
     int code = 1;
     try {
         const std::vector<StageSpec> graded = graded_stages(r);
-        if (!prepare_workspace(r.grade, log)) throw std::runtime_error("no grading workspace");
+        if (!prepare_workspace(r.grade, err)) throw std::runtime_error("no grading workspace");
         BundleRequest b{r.grade.source, workspace_paths(r.grade), fs::read_symlink("/proc/self/exe"),
                         bundle, read_target_packages(r.grade.source)};
-        if (!write_bundle(b, log)) throw std::runtime_error("the bundle was not written");
+        if (!write_bundle(b, log, err)) throw std::runtime_error("the bundle was not written");
         write_packages(bundle, b.packages, needs_gpu(graded));
         write_settings(r, bundle);
         if (!audit_bundle(r.grade.source, bundle, log))
@@ -194,7 +194,7 @@ int run_package(const PackageRequest& r, std::ostream& log) {
         if (r.platform == Platform::Autolab) write_autolab(r, stage, log);
         code = 0;
     } catch (const std::exception& e) {
-        log << "rt-grade: error: package: " << e.what() << "\n";
+        err << "rt-grade: error: package: " << e.what() << "\n";
     }
     std::error_code ec;
     fs::remove_all(stage, ec);

@@ -28,7 +28,7 @@ struct PackageRequest {
 };
 
 // Prepares the workspace if needed, writes the bundle, audits it and writes the platform's
-// files. Returns the exit code; progress and errors (one line each) go to `log`.
-int run_package(const PackageRequest& request, std::ostream& log);
+// files. Returns the exit code; progress goes to `log`, an error (one line) to `err`.
+int run_package(const PackageRequest& request, std::ostream& log, std::ostream& err);
 
 }  // namespace rt::grader

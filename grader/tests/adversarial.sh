@@ -7,7 +7,7 @@ set -uo pipefail
 bin=$1 src=$2 case=$3
 source "$(dirname "$0")/case_lib.sh"
 
-# Whole-command cases: batch mode, the Gradescope package, an interrupted grading.
+# Whole-command cases: batch mode, the Gradescope package run, an interrupted grading.
 case $case in
   batch)  # two submissions, one a broken zip: both get a row, the batch finishes
     mkdir -p "$work/all/good/$s1"
@@ -20,15 +20,6 @@ case $case in
     "$bin/results_check" "$work/grades/broken/results.json" --contains "not a readable zip" || exit 1
     [ -s "$work/grades/good/report.html" ] || { echo "FAIL: no report"; exit 1; }
     exit 0 ;;
-  package)
-    "$bin/rt-grade" package --out "$work/autograder.zip" --source "$src" || exit 1
-    unzip -l "$work/autograder.zip" > "$work/list" || exit 1
-    for f in setup.sh run_autograder source/CMakeLists.txt source/scripts/install-deps.sh \
-             source/stages/02-intersections/hidden/hidden_test.cpp; do
-      grep -q " $f\$" "$work/list" || { echo "FAIL: $f missing from the zip"; exit 1; }
-    done
-    if grep -q " source/build" "$work/list"; then echo "FAIL: build tree in the zip"; exit 1; fi
-    exit 0 ;;
   package_run)  # the package's run_autograder in a simulated Gradescope layout
     # A package for an assignment of two stages, the first and the last: a complete submission
     # scores full marks in both, and the stages between are not graded (the reference case
@@ -36,13 +27,11 @@ case $case in
     root=$work/autograder
     first=${all_stages%%,*} last=${all_stages##*,}
     "$bin/rt-grade" package --out "$work/autograder.zip" --source "$src" --stages "$first,$last" > /dev/null || exit 1
-    mkdir -p "$root/submission" "$root/results"
-    (cd "$root" && unzip -q "$work/autograder.zip") || { echo "FAIL: unzip"; exit 1; }
-    bash -n "$root/setup.sh" || { echo "FAIL: setup.sh does not parse"; exit 1; }
-    grep -q 'scripts/install-deps.sh' "$root/setup.sh" || { echo "FAIL: setup.sh installs nothing"; exit 1; }
+    mkdir -p "$root/source" "$root/submission" "$root/results"
+    (cd "$root/source" && unzip -q "$work/autograder.zip") || { echo "FAIL: unzip"; exit 1; }
+    cp "$root/source/run_autograder" "$root/"  # where Gradescope puts it
+    bash -n "$root/source/setup.sh" || { echo "FAIL: setup.sh does not parse"; exit 1; }
     [ -x "$root/run_autograder" ] || { echo "FAIL: run_autograder not executable"; exit 1; }
-    # setup.sh's build, replaced by this tree's rt-grade (building twice would take minutes).
-    mkdir -p "$root/source/build/bin" && ln -s "$bin/rt-grade" "$root/source/build/bin/rt-grade"
     # Gradescope unpacks the student's upload into submission/: here the loose files of every
     # graded stage (a complete submission; stages added later are graded too).
     for dir in "$src"/stages/*/; do
