@@ -254,7 +254,8 @@ int run_similarity_command(SimilarityArgs& a, const rt::grader::GradeOptions& gr
 // they do not make sense.
 bool finish_grade_args(GradeArgs& args, bool packaging) {
     args.grade.cache = args.cache;
-    if (!args.prairielearn_data.empty()) apply_prairielearn_data(args.prairielearn_data, args.stages);
+    if (!args.prairielearn_data.empty())
+        apply_prairielearn_data(args.prairielearn_data, args.stages);
     if (!parse_problem_names(args.problem_names, args.grade.problem_names)) {
         std::cerr << "rt-grade: error: --problem-names \"" << args.problem_names
                   << "\": expected STAGE=NAME pairs separated by commas, e.g. "
@@ -364,8 +365,7 @@ int main(int argc, char** argv) {
     package_cmd->add_option("--out", package_out,
                             "the zip (gradescope, default autograder.zip) or folder "
                             "(prairielearn, autolab; default the platform's name) to write");
-    package_cmd
-        ->add_option("--platform", platform, "gradescope, prairielearn or autolab")
+    package_cmd->add_option("--platform", platform, "gradescope, prairielearn or autolab")
         ->check(CLI::IsMember({"gradescope", "prairielearn", "autolab"}))
         ->capture_default_str();
     rt::grader::CompareRequest compare;

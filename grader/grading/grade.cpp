@@ -42,9 +42,8 @@ void print_autolab_scores(Grading& g, std::optional<std::size_t> task) {
     for (const auto& s : g.graded) {
         scores[s.number] = 0;
         const auto named = g.o.problem_names.find(s.number);
-        names[s.number] = named != g.o.problem_names.end()
-                              ? named->second
-                              : fs::path(s.folder).filename().string();
+        names[s.number] = named != g.o.problem_names.end() ? named->second
+                                                           : fs::path(s.folder).filename().string();
     }
     // Only outcomes no task is still writing: those finished, or all once grading is over.
     const bool over = !task && !g.finished.empty();

@@ -25,9 +25,8 @@ constexpr const char* kTargetCompiler = "/usr/bin/g++-12";
 // Headers the target's compiler brings with it (g++-12's own dependencies): never shipped, so
 // the C library's and libstdc++'s headers always match the target's libraries.
 const std::set<std::string> kCompilerHeaderPackages = {
-    "libc6-dev",       "linux-libc-dev", "libstdc++-12-dev", "libgcc-12-dev",
-    "libcrypt-dev",    "libtirpc-dev",   "libnsl-dev",       "gcc-12",
-    "g++-12",          "cpp-12",
+    "libc6-dev",    "linux-libc-dev", "libstdc++-12-dev", "libgcc-12-dev", "libcrypt-dev",
+    "libtirpc-dev", "libnsl-dev",     "gcc-12",           "g++-12",        "cpp-12",
 };
 
 // What one bundle needs to know while it is written.
@@ -207,8 +206,8 @@ void ship_headers(const Bundling& b) {
             const fs::path text = w.priv / "pristine" / (key + kind);
             std::error_code ec;
             if (!fs::is_regular_file(text, ec)) continue;
-            for (const auto& f : included_files(argv.get<std::vector<std::string>>(),
-                                                w.src / key, read_text(text), scratch))
+            for (const auto& f : included_files(argv.get<std::vector<std::string>>(), w.src / key,
+                                                read_text(text), scratch))
                 if (f.starts_with("/usr/include/")) system_headers.insert(f);
         }
     }
@@ -258,7 +257,9 @@ bool is_elf(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     char magic[4] = {};
     in.read(magic, 4);
-    return in.gcount() == 4 && std::string(magic, 4) == "\x7f" "ELF";
+    return in.gcount() == 4 && std::string(magic, 4) ==
+                                   "\x7f"
+                                   "ELF";
 }
 
 // Every library a shipped program or library needs that the target does not provide, copied
@@ -290,10 +291,9 @@ void ship_libraries(const Bundling& b, const std::vector<fs::path>& programs) {
 // Where rt-grade goes, finding the bundled libraries from its own folder.
 void ship_rt_grade(const Bundling& b, const fs::path& bundle) {
     copy_file_into(b.r.rt_grade, bundle / "bin" / "rt-grade");
-    fs::permissions(bundle / "bin" / "rt-grade", fs::perms::owner_all | fs::perms::group_read |
-                                                     fs::perms::group_exec |
-                                                     fs::perms::others_read |
-                                                     fs::perms::others_exec);
+    fs::permissions(bundle / "bin" / "rt-grade",
+                    fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                        fs::perms::others_read | fs::perms::others_exec);
     const std::string set = "patchelf --set-rpath '$ORIGIN/../cache/runtime/lib' " +
                             shell_quote((bundle / "bin" / "rt-grade").string());
     if (run_trusted(set) != 0) throw std::runtime_error("patchelf failed on rt-grade");
@@ -317,8 +317,8 @@ std::vector<fs::path> prebuilt_programs(const Bundling& b, const fs::path& bundl
 void write_package_json(const Bundling& b) {
     const json info = {
         {"made_by", "rt-grade package"},
-        {"built_on", trim(command_output(". /etc/os-release && echo \"$PRETTY_NAME\"")
-                              .value_or("unknown"))},
+        {"built_on",
+         trim(command_output(". /etc/os-release && echo \"$PRETTY_NAME\"").value_or("unknown"))},
         {"compiler", kTargetCompiler},
         {"workspace_key", read_text(b.r.workspace.priv / "key")},
     };

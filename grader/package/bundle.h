@@ -26,8 +26,8 @@ namespace rt::grader {
 // One line of target_packages.txt: a package the grading machine installs by this name.
 struct TargetPackage {
     std::string name;
-    bool gpu_only = false;               // needed only when a GPU stage is graded
-    std::vector<std::string> sonames;    // libraries a shipped binary may take from it
+    bool gpu_only = false;             // needed only when a GPU stage is graded
+    std::vector<std::string> sonames;  // libraries a shipped binary may take from it
 };
 // Reads SOURCE/grader/package/target_packages.txt; throws with the file and line on bad input.
 std::vector<TargetPackage> read_target_packages(const std::filesystem::path& source);

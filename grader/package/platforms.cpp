@@ -18,9 +18,8 @@ namespace fs = std::filesystem;
 namespace rt::grader {
 namespace {
 
-const fs::perms kExecutable = fs::perms::owner_all | fs::perms::group_read |
-                              fs::perms::group_exec | fs::perms::others_read |
-                              fs::perms::others_exec;
+const fs::perms kExecutable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec;
 
 fs::path templates(const PackageRequest& r) {
     return r.grade.source / "grader" / "package";
@@ -39,10 +38,12 @@ void copy_template(const PackageRequest& r, const std::string& from, const fs::p
 std::vector<StageSpec> graded_stages(const PackageRequest& r) {
     std::vector<StageSpec> graded;
     for (const auto& s : load_stage_specs(r.grade.source))
-        if (r.grade.stages.empty() || std::count(r.grade.stages.begin(), r.grade.stages.end(), s.number))
+        if (r.grade.stages.empty() ||
+            std::count(r.grade.stages.begin(), r.grade.stages.end(), s.number))
             graded.push_back(s);
     for (const int n : r.grade.stages)
-        if (std::none_of(graded.begin(), graded.end(), [n](const StageSpec& s) { return s.number == n; }))
+        if (std::none_of(graded.begin(), graded.end(),
+                         [n](const StageSpec& s) { return s.number == n; }))
             throw std::runtime_error("--stages: stage " + two_digits(n) +
                                      " has no grading.json in " + r.grade.source.string());
     return graded;
@@ -79,16 +80,16 @@ void write_settings(const PackageRequest& r, const fs::path& bundle) {
     write_text(bundle / "settings.sh",
                std::string("# Written by rt-grade package (") + date +
                    "), sourced by the platform's scripts: what this package grades.\n"
-                   "platform=" + platform_name(r.platform) + "\n" +
-                   "stages=" + shell_quote(stages) + "  # --stages; empty: every stage\n" +
-                   "max_per_day=" + std::to_string(r.max_per_day) +
-                   "  # --max-per-day (Gradescope); 0: no limit\n" +
+                   "platform=" +
+                   platform_name(r.platform) + "\n" + "stages=" + shell_quote(stages) +
+                   "  # --stages; empty: every stage\n" + "max_per_day=" +
+                   std::to_string(r.max_per_day) + "  # --max-per-day (Gradescope); 0: no limit\n" +
                    "problem_names=" + shell_quote(names) + "  # --problem-names (Autolab)\n");
 }
 
 std::string human_size(const fs::path& path) {
-    return std::string(trim(command_output("du -sh " + shell_quote(path.string()) + " | cut -f1")
-                                .value_or("?")));
+    return std::string(
+        trim(command_output("du -sh " + shell_quote(path.string()) + " | cut -f1").value_or("?")));
 }
 
 // `zip` of `entries` (relative to `dir`) into `zip`, replacing it.
@@ -130,7 +131,8 @@ void write_prairielearn(const PackageRequest& r, const fs::path& stage, std::ost
     copy_template(r, "prairielearn/entrypoint.sh", out / "entrypoint.sh");
     fs::rename(stage / "rt-grade", out / "rt-grade");
     log << "prairielearn: " << out.string() << " (" << human_size(out)
-        << "): an image context; build and push it (docker build -t COURSE/rt-grade " << out.string()
+        << "): an image context; build and push it (docker build -t COURSE/rt-grade "
+        << out.string()
         << "), then set the question's externalGradingOptions: image COURSE/rt-grade, "
            "entrypoint /grader/entrypoint.sh (docs/grading.md#prairielearn)\n";
 }
@@ -181,14 +183,16 @@ int run_package(const PackageRequest& r, std::ostream& log, std::ostream& err) {
     try {
         const std::vector<StageSpec> graded = graded_stages(r);
         if (!prepare_workspace(r.grade, err)) throw std::runtime_error("no grading workspace");
-        BundleRequest b{r.grade.source, workspace_paths(r.grade), fs::read_symlink("/proc/self/exe"),
-                        bundle, read_target_packages(r.grade.source)};
+        BundleRequest b{r.grade.source, workspace_paths(r.grade),
+                        fs::read_symlink("/proc/self/exe"), bundle,
+                        read_target_packages(r.grade.source)};
         if (!write_bundle(b, log, err)) throw std::runtime_error("the bundle was not written");
         write_packages(bundle, b.packages, needs_gpu(graded));
         write_settings(r, bundle);
         if (!audit_bundle(r.grade.source, bundle, log))
-            throw std::runtime_error("the bundle fails its audit (above): it would not load on "
-                                     "Ubuntu 22.04, so no package was written");
+            throw std::runtime_error(
+                "the bundle fails its audit (above): it would not load on "
+                "Ubuntu 22.04, so no package was written");
         if (r.platform == Platform::Gradescope) write_gradescope(r, stage, log);
         if (r.platform == Platform::PrairieLearn) write_prairielearn(r, stage, log);
         if (r.platform == Platform::Autolab) write_autolab(r, stage, log);

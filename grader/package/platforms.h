@@ -22,8 +22,8 @@ std::string platform_name(Platform platform);
 struct PackageRequest {
     GradeOptions grade;  // source, cache and the graded stages (empty: every stage)
     Platform platform = Platform::Gradescope;
-    std::filesystem::path out;  // empty: autograder.zip, prairielearn/ or autolab/
-    int max_per_day = 0;        // Gradescope's rate limit (0: none)
+    std::filesystem::path out;                 // empty: autograder.zip, prairielearn/ or autolab/
+    int max_per_day = 0;                       // Gradescope's rate limit (0: none)
     std::map<int, std::string> problem_names;  // Autolab's problem names
 };
 
