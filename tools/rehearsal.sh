@@ -189,7 +189,7 @@ stage_max=$(for n in ${stages//,/ }; do stage_points "$n"; done | awk '{t += $1}
 
 # --- The platform's machine: set up under its limits. ---
 machine=$work/$platform-root
-setup_row="" image_note=""
+setup_row=""
 if [ "$platform" = gradescope ]; then
   rm -rf --one-file-system "$machine" && cp -a "$bare" "$machine"
   enter "$machine"
@@ -211,10 +211,12 @@ else
     "$rt_grade" package --source "$src" --platform prairielearn --stages "$stages" --out "$image_context" > /dev/null 2>&1 ||
       die "rt-grade package (the image) failed"
   fi
-  start=$(date +%s)
-  podman build --isolation=chroot --from "$base" -t "localhost/rt-grade-$platform" "$image_context" > "$work/image.log" 2>&1 ||
-    die "podman build failed: see $work/image.log"
-  image_note="image built in $(($(date +%s) - start)) s, $(podman image inspect --format '{{.Size}}' "localhost/rt-grade-$platform" | awk '{printf "%.0f MB", $1 / 1e6}')"
+  # Measured under the platform's limits (the course builds it where it likes: an upper bound).
+  set_limits
+  run_measured 3600 podman build --isolation=chroot --from "$base" -t "localhost/rt-grade-$platform" "$image_context" > "$work/image.log" 2>&1
+  [ $code -eq 0 ] || die "podman build failed (exit $code): see $work/image.log"
+  image_mb=$(podman image inspect --format '{{.Size}}' "localhost/rt-grade-$platform" | awk '{printf "%.0f", $1 / 1e6}')
+  setup_row="image build ($memory_mb MB, CPU $cpus; image $image_mb MB)\t$wall\t$peak_mb\t$rss_mb\t$oom\t-"
   rm -rf --one-file-system "$machine" && mkdir -p "$machine"
   container=$(podman create "localhost/rt-grade-$platform")
   podman export "$container" | tar -C "$machine" -x
@@ -274,7 +276,7 @@ esac
 grep -q "NETWORK REACHED" "$work/$platform-network.log" "$machine"/*/results/results.json 2> /dev/null && failed=1
 
 echo
-echo "$platform, stages $stages: package $package_size${image_note:+; $image_note}; limits ${memory_mb} MB$([ $swap -eq 0 ] && echo ' without swap'), CPU $cpus$([ "$pids" -gt 0 ] && echo ", $pids processes")$([ $network -eq 0 ] && echo ', no network'), ${timeout_s} s"
+echo "$platform, stages $stages: package $package_size; limits ${memory_mb} MB$([ $swap -eq 0 ] && echo ' without swap'), CPU $cpus$([ "$pids" -gt 0 ] && echo ", $pids processes")$([ $network -eq 0 ] && echo ', no network'), ${timeout_s} s"
 {
   printf 'run\twall s\tpeak MB (cgroup)\trss+shmem MB\tOOM kills\tscore\tfits\n'
   [ -n "$setup_row" ] && printf "$setup_row\n"
