@@ -46,7 +46,7 @@ void copy_file_into(const fs::path& from, const fs::path& to) {
     fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-// "lib" + "/x" strings: does `path` lie in `dir`?
+// Does the path `path` (a command's argument) lie inside the folder `dir`?
 bool is_under(const std::string& path, const fs::path& dir) {
     const std::string d = dir.string() + "/";
     return path.starts_with(d);
@@ -137,11 +137,12 @@ std::vector<std::string> portable_compile(const Bundling& b, const std::vector<s
     std::vector<std::string> out = {kTargetCompiler, "-isystem", shipped};
     for (std::size_t i = 1; i < argv.size(); ++i) {
         std::string a = argv[i];
+        const std::string system = "/usr/include";
         for (const std::string flag : {"-isystem", "-I"}) {
-            const bool joined = a.starts_with(flag + "/usr/include/");
-            const bool separate = a.starts_with("/usr/include/") && i > 0 && argv[i - 1] == flag;
-            if (joined) a = flag + shipped + a.substr(flag.size() + 12);
-            if (separate) a = shipped + a.substr(12);
+            if (a.starts_with(flag + system + "/"))  // -I/usr/include/X
+                a = flag + shipped + a.substr(flag.size() + system.size());
+            else if (a.starts_with(system + "/") && argv[i - 1] == flag)  // -isystem /usr/include/X
+                a = shipped + a.substr(system.size());
         }
         out.push_back(placeheld(a, b.r.workspace.cache));
     }
