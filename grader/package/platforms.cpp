@@ -84,7 +84,9 @@ void write_settings(const PackageRequest& r, const fs::path& bundle) {
                    platform_name(r.platform) + "\n" + "stages=" + shell_quote(stages) +
                    "  # --stages; empty: every stage\n" + "max_per_day=" +
                    std::to_string(r.max_per_day) + "  # --max-per-day (Gradescope); 0: no limit\n" +
-                   "problem_names=" + shell_quote(names) + "  # --problem-names (Autolab)\n");
+                   "problem_names=" + shell_quote(names) + "  # --problem-names (Autolab)\n" +
+                   "deadline_seconds=540  # Gradescope: rt-grade stops and writes its results "
+                   "(the default timeout is 600)\n");
 }
 
 std::string human_size(const fs::path& path) {

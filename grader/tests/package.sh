@@ -52,6 +52,12 @@ case $case in
     "$bin/results_check" "$root/results/results.json" --contains "This submission was not graded" > /dev/null ||
       { jq . "$root/results/results.json" | head -20; fail "the fourth submission in a day was graded"; }
     printf '{"created_at": "%s", "previous_submissions": []}\n' "$now" > "$root/submission_metadata.json"
+    # Gradescope's timeout near: rt-grade stopped at the deadline still leaves valid results.
+    sed -i 's/^deadline_seconds=[0-9]*/deadline_seconds=1/' "$root/source/rt-grade/settings.sh"
+    RT_AUTOGRADER_ROOT=$root "$root/run_autograder" > "$work/run.log" 2>&1
+    "$bin/results_check" "$root/results/results.json" --contains "Grading was interrupted" > /dev/null ||
+      fail "a grading stopped at the deadline did not write its results"
+    sed -i 's/^deadline_seconds=1/deadline_seconds=540/' "$root/source/rt-grade/settings.sh"
     starter1 "$root/submission"
     RT_AUTOGRADER_ROOT=$root "$root/run_autograder" > "$work/run.log" 2>&1 || fail "run_autograder (starter)"
     [ "$(jq '.score' "$root/results/results.json")" = 0 ] || fail "the starter stub scores points"
