@@ -20,9 +20,10 @@ case $case in
              rt-grade/cache/private/plan.json; do
       grep -q " $f\$" "$work/list" || fail "$f missing from the zip"
     done
-    # Nothing an instructor's tree has beyond grading: no node modules, tools, docs, build tree.
+    # Nothing an instructor's tree has beyond grading: no node modules, tools, docs, build tree,
+    # viewer (ImGui, GLFW and the X libraries it pulls in).
     for pattern in node_modules '/tools/' '/docs/' 'CMakeCache.txt' '\.ninja' '/\.git/' \
-                   '/hidden/' 'install-deps.sh' '\.devcontainer'; do
+                   '/hidden/' 'install-deps.sh' '\.devcontainer' 'glfw' 'imgui' 'libX11'; do
       if grep -qE "$pattern" "$work/list"; then fail "the zip holds $pattern: $(grep -E "$pattern" "$work/list" | head -n 2)"; fi
     done
     root=$work/autograder

@@ -248,6 +248,8 @@ bool configure_and_build(const Preparation& p, std::ostream& log) {
     std::string cmd = "cmake -S " + shell_quote(p.w.src.string()) + " -B " +
                       shell_quote(p.w.build.string()) +
                       " -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON" +
+                      // Gradings open no window: no viewer, no GLFW, nothing of X11 to package.
+                      " -DRT_VIEWER=OFF -DRT_GL_WINDOW=OFF" +
                       (settings.werror ? " -DRT_WERROR=ON" : " -DRT_WERROR=OFF");
     cmd += settings.ccache_dir.empty()
                ? " -DRT_CCACHE=OFF"

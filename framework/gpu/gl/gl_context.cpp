@@ -1,7 +1,5 @@
 #include "gpu/gl/gl_context.h"
 
-#include <GLFW/glfw3.h>
-
 #include <cstdlib>
 
 #include "gpu/gl/egl_context.h"
@@ -14,20 +12,6 @@ class EglGlContext : public GlContext {
     EglGlContext() : GlContext(GlKind::Egl) {}
     EglContext egl;
 };
-
-class WindowGlContext : public GlContext {
-  public:
-    WindowGlContext() : GlContext(GlKind::Window) {}
-    ~WindowGlContext() override {
-        if (window) glfwDestroyWindow(window);
-        glfwTerminate();
-    }
-    GLFWwindow* window = nullptr;
-};
-
-void* glfw_loader(const char* name) {
-    return reinterpret_cast<void*>(glfwGetProcAddress(name));
-}
 
 }  // namespace
 
@@ -83,29 +67,7 @@ std::unique_ptr<GlContext> GlContext::create(GlKind kind, std::string& error) {
         error = context->finish(&EglContext::proc_address, context->egl.platform());
         return error.empty() ? std::move(context) : nullptr;
     }
-    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
-        error = "window: no display; run under a desktop or `xvfb-run`, or use --gl egl";
-        return nullptr;
-    }
-    if (!glfwInit()) {
-        error = "window: glfwInit failed (is the display reachable?)";
-        return nullptr;
-    }
-    auto context = std::make_unique<WindowGlContext>();
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    context->window = glfwCreateWindow(64, 64, "rt", nullptr, nullptr);
-    if (!context->window) {
-        error =
-            "window: no OpenGL 4.3 core context (compute shaders need 4.3+; macOS stops at "
-            "OpenGL 4.1, which has none)";
-        return nullptr;
-    }
-    glfwMakeContextCurrent(context->window);
-    error = context->finish(&glfw_loader, "GLFW");
-    return error.empty() ? std::move(context) : nullptr;
+    return create_window_context(error);
 }
 
 }  // namespace rt
