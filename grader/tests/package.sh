@@ -10,6 +10,15 @@ source "$(dirname "$0")/case_lib.sh"
 fail() { echo "FAIL: $*"; exit 1; }
 starter1() { stub "$src/$s1/camera_rays.cpp" > "$1/camera_rays.cpp"; }
 max1=$(stage_points 1)
+# only_grading LISTING: a package's file list holds nothing an instructor's tree has beyond
+# grading: no node modules, tools, docs, build tree, hidden tests, viewer (ImGui, GLFW and the X
+# libraries they pull in).
+only_grading() {
+  for pattern in node_modules '/tools/' '/docs/' 'CMakeCache.txt' '\.ninja' '/\.git/' \
+                 '/hidden/' 'install-deps.sh' '\.devcontainer' 'glfw' 'imgui' 'libX11'; do
+    if grep -qE "$pattern" "$1"; then fail "the package holds $pattern: $(grep -E "$pattern" "$1" | head -n 2)"; fi
+  done
+}
 
 case $case in
   gradescope)  # the zip's content and settings, run_autograder with the rate limit, the audit
@@ -20,12 +29,7 @@ case $case in
              rt-grade/cache/private/plan.json; do
       grep -q " $f\$" "$work/list" || fail "$f missing from the zip"
     done
-    # Nothing an instructor's tree has beyond grading: no node modules, tools, docs, build tree,
-    # viewer (ImGui, GLFW and the X libraries it pulls in).
-    for pattern in node_modules '/tools/' '/docs/' 'CMakeCache.txt' '\.ninja' '/\.git/' \
-                   '/hidden/' 'install-deps.sh' '\.devcontainer' 'glfw' 'imgui' 'libX11'; do
-      if grep -qE "$pattern" "$work/list"; then fail "the zip holds $pattern: $(grep -E "$pattern" "$work/list" | head -n 2)"; fi
-    done
+    only_grading "$work/list"
     root=$work/autograder
     mkdir -p "$root/source" "$root/submission"
     (cd "$root/source" && unzip -q "$work/ag.zip") || fail "unzip"
@@ -94,6 +98,7 @@ case $case in
     for f in Dockerfile entrypoint.sh rt-grade/bin/rt-grade rt-grade/packages.txt; do
       [ -e "$out/$f" ] || fail "$f missing from the image context"
     done
+    (cd "$out" && find . -type f) > "$work/list" && only_grading "$work/list"
     grep -q '^FROM debian:12' "$out/Dockerfile" || fail "the Dockerfile is not from Debian 12"
     grep -q '^ENTRYPOINT \["/grader/entrypoint.sh"\]' "$out/Dockerfile" || fail "no entry point"
     # validate ROOT: results.json holds PrairieLearn's fields and is at most 1 MiB.
@@ -145,6 +150,7 @@ case $case in
     "$bin/rt-grade" package --source "$src" --platform autolab --stages 1 --problem-names 1=camera --out "$out" > "$work/log" 2>&1 ||
       { cat "$work/log"; fail "package"; }
     [ -f "$out/autograde-Makefile" ] && [ -f "$out/autograde.tar" ] || fail "autograde-Makefile or autograde.tar missing"
+    tar -tf "$out/autograde.tar" > "$work/list" && only_grading "$work/list"
     # job NAME: a folder as Tango lays it out (the Makefile, the tar, the hand-in).
     job() {
       rm -rf "$work/$1" && mkdir -p "$work/$1"

@@ -239,13 +239,15 @@ int broken = ;")
     solution1; benign_helpers | append1
     checks=(--full-marks --not-contains "Build (compiling your files)") ;;
   benign_exceptions)  # the reference plus a helper that catches std::exception by reference
-    solution2; stages=2
+    # Stage 02's own limits: its CGAL leak test needs about 5 s of CPU through the judge on a slow
+    # machine, and honest code must score full marks under the limits students get.
+    solution2; stages=2 limit=()
     echo '#include <stdexcept>
 namespace rt { int checked(int x) { try { if (x < 0) throw std::runtime_error("negative"); return x; }
   catch (const std::exception& e) { return 0; } } }' | append2
     checks=(--full-marks --not-contains "Build (compiling your files)") ;;
   benign_to_string)  # the reference plus std::to_string(int) (GCC 12: a unique global digit table)
-    solution2; stages=2
+    solution2; stages=2 limit=()  # stage 02's own limits (benign_exceptions says why)
     echo '#include <string>
 namespace rt { std::string label(int i) { return "primitive " + std::to_string(i); } }' | append2
     checks=(--full-marks --not-contains "Build (compiling your files)") ;;

@@ -314,7 +314,8 @@ TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
     StudentCopy copy("bvh-loop");
     const fs::path file = copy.dir() / "bvh.glsl";
     std::string text = read(file);
-    const std::size_t at = text.find("    while (top > 0) {\n");
+    const std::string loop = "    while (holding || top > 0) {\n";  // the nearest-hit query's
+    const std::size_t at = text.find(loop);
     bool stubs = false;  // a live stub, not one commented between solution markers
     for (const char* f : kStudentFiles) {
         std::istringstream lines(read(copy.dir() / f));
@@ -323,11 +324,10 @@ TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
                      l.find_first_not_of(' ') != l.find("//");
     }
     if (at == std::string::npos || stubs)
-        GTEST_SKIP() << "this tree's GLSL has stubs before the BVH, or no `while (top > 0) {` in "
-                        "bvh.glsl (a starter tree): the course tree runs this test";
+        GTEST_SKIP() << "this tree's GLSL has stubs before the BVH, or no `" << loop.substr(4, 28)
+                     << "` in bvh.glsl (a starter tree): the course tree runs this test";
     const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
-    text.insert(at + std::string("    while (top > 0) {\n").size(),
-                "        if (top > 0) continue;  // never pops\n");
+    text.insert(at + loop.size(), "        if (holding || top > 0) continue;  // never pops\n");
     write(file, text);
     GpuRenderOptions options;
     options.student_dir = copy.dir();
