@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 #include "util.h"
 
@@ -53,6 +54,13 @@ json prairielearn_images(const Report& report, std::size_t budget) {
     return images;
 }
 
+// "12 of 18 points": what the student reads first (the sandbox and notes are in "output").
+std::string points_text(double score, double max_score) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g of %g points", std::round(score * 100) / 100, max_score);
+    return text;
+}
+
 }  // namespace
 
 void write_prairielearn_results(const Report& report, const fs::path& file, bool gradable,
@@ -66,7 +74,7 @@ void write_prairielearn_results(const Report& report, const fs::path& file, bool
     json results = {
         {"gradable", gradable},
         {"score", gradable && max_score > 0 ? score / max_score : 0.0},
-        {"message", gradable ? first_line(clean_output(report.general)) : why},
+        {"message", gradable ? points_text(score, max_score) : why},
         {"output", clean_output("Sandbox: " + report.isolation + "\n" + report.general)},
         {"tests", prairielearn_tests(report, kOutputBytesPerTest)},
     };
