@@ -29,9 +29,8 @@ fs::path templates(const PackageRequest& r) {
 void copy_template(const PackageRequest& r, const std::string& from, const fs::path& to) {
     fs::create_directories(to.parent_path());
     fs::copy_file(templates(r) / from, to, fs::copy_options::overwrite_existing);
-    if (to.extension() != "" && to.extension() != ".sh") return;
-    if (to.filename() == "Dockerfile" || to.filename() == "autograde-Makefile") return;
-    fs::permissions(to, kExecutable);
+    if (to.extension() == ".sh" || to.filename() == "run_autograder")
+        fs::permissions(to, kExecutable);
 }
 
 // The stages the package grades, checked against the tree.
