@@ -15,6 +15,9 @@ enum Status : std::uint8_t { kDone = 0, kThrew = 1, kCallback = 2 };
 
 // Sends one message; false when the peer is gone.
 bool send_message(int fd, const std::string& payload);
+// Keeps memory freed after large messages for the next one instead of returning it to the
+// kernel; both ends call it once, before their first message.
+void keep_freed_memory();
 // Receives one message; false at end of stream, on error or when it is larger than kMaxMessage.
 bool receive_message(int fd, std::string& payload);
 

@@ -60,6 +60,7 @@ class Client {
         if (fd_ < 0)
             if (const char* worker = std::getenv("RT_REMOTE_WORKER")) fd_ = start_worker(worker);
         signal(SIGPIPE, SIG_IGN);
+        keep_freed_memory();
     }
 
     std::string call(const std::string& request, const char* what) {
@@ -83,7 +84,7 @@ class Client {
                 throw RemoteError("malformed reply to " + function_name(what));
             if (stubs > stubs_seen_) count_stub_calls(stubs - stubs_seen_);
             stubs_seen_ = std::max(stubs_seen_, stubs);
-            std::string rest = reply.substr(1 + sizeof stubs);
+            std::string rest = std::move(reply.erase(0, 1 + sizeof stubs));
             if (status == kDone) return rest;
             if (status == kThrew) throw std::runtime_error(rest);
             answer_callback(callbacks, rest, what);

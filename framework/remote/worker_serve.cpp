@@ -93,6 +93,7 @@ std::string call_judge(std::uint32_t index, const std::string& arguments) {
 
 int serve(int fd) {
     g_fd = fd;
+    keep_freed_memory();
     for (std::string request; receive_message(fd, request);)
         if (!send_message(fd, serve_one(request))) break;
     return 0;
