@@ -144,7 +144,7 @@ add_test(NAME Web.ExportMatchesCpu
           -DOUT=${PROJECT_BINARY_DIR}/test-output/web
           -P ${PROJECT_SOURCE_DIR}/cmake/check_web_export.cmake)
 set_tests_properties(Web.ExportMatchesCpu PROPERTIES LABELS "web;render" TIMEOUT 300
-  SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+  COST 110 SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 # Stage 10's scenes, which the page accumulates over draws: slow on SwiftShader (160 s at their
 # own 160x120), so at 80x60 (about 40 s) and a test of its own, started early.
 add_test(NAME Web.SampledExportMatchesCpu
@@ -159,7 +159,7 @@ add_test(NAME Web.TogglesMatchCpu
           -DOUT=${PROJECT_BINARY_DIR}/test-output/web-toggles
           -P ${PROJECT_SOURCE_DIR}/cmake/check_web_toggles.cmake)
 set_tests_properties(Web.TogglesMatchCpu PROPERTIES LABELS "web;render" TIMEOUT 300
-  SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+  COST 40 SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 # A page whose student GLSL does not compile names the student's file and line.
 add_test(NAME Web.CompileErrorNamesStudentLine
   COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSOURCE=${PROJECT_SOURCE_DIR}
