@@ -110,7 +110,10 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryArgs& args) {
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
     auto* compare_cmd = app.add_subcommand(
-        "compare", "compare two images by the grader's metric (framework/image/compare.h)");
+        "compare",
+        "compare two images by the grader's metric (framework/image/compare.h); without "
+        "threshold options, with the grader's thresholds for REFERENCE's scene when it is a "
+        "graded reference_images/NN-stage/SCENE.png");
     compare_cmd->add_option("actual", args.actual, "image (.png or .exr)")->required();
     compare_cmd->add_option("reference", args.reference, "reference image")->required();
     compare_cmd->add_option("--tolerance", args.tolerance, "8-bit steps a channel may differ")
@@ -125,6 +128,11 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
         ->add_option("--block", args.block,
                      "compare the means of NxN blocks (Monte Carlo images, stage 10)")
         ->check(CLI::Range(0, 256));
+    compare_cmd->final_callback([compare_cmd, &args] {
+        for (const char* name :
+             {"--tolerance", "--max-failing-percent", "--neighbourhood", "--block"})
+            args.thresholds_given = args.thresholds_given || compare_cmd->count(name) > 0;
+    });
     return compare_cmd;
 }
 

@@ -67,6 +67,8 @@ struct CompareArgs {
     double max_failing_percent = CompareOptions{}.max_failing_percent;
     bool neighbourhood = false;
     int block = 0;
+    // None of the four above given: the grader's thresholds for the reference image's scene.
+    bool thresholds_given = false;
 };
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 

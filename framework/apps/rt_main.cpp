@@ -31,6 +31,7 @@
 #include "apps/rt_commands.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
+#include "course/manifest.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "render/accelerate.h"
@@ -144,17 +145,42 @@ int run_render(const RenderArgs& args) {
     return 0;
 }
 
-// The grader's metric on two image files: one line, exit 0 when they match.
+// The thresholds the grader uses for a reference image reference_images/NN-stage/SCENE.png:
+// the scene's own in stages/NN-stage/grading.json, or the stage's defaults. Nothing when the
+// image is not there or the stage is not graded; `stage` names the grading.json used.
+std::optional<ImageThresholds> graded_thresholds(const fs::path& reference, std::string& stage) {
+    const fs::path folder = fs::weakly_canonical(reference).parent_path();
+    if (folder.parent_path() != fs::weakly_canonical(source_dir() / "reference_images"))
+        return std::nullopt;
+    const fs::path stage_dir = source_dir() / "stages" / folder.filename();
+    if (!fs::exists(stage_dir / "grading.json")) return std::nullopt;
+    const StageSpec spec = load_stage_spec(source_dir(), stage_dir);
+    stage = "stages/" + folder.filename().string() + "/grading.json";
+    const SceneSpec* scene = spec.scene(reference.stem().string());
+    return scene ? scene->thresholds : spec.image_defaults;
+}
+
+// The grader's metric on two image files: one line, exit 0 when they match. Without threshold
+// options a graded reference image is compared as the grader compares it (full points or not).
 int run_compare(const CompareArgs& args) {
     CompareOptions options;
     options.tolerance = args.tolerance;
     options.max_failing_percent = args.max_failing_percent;
     options.neighbourhood = args.neighbourhood;
     options.block = args.block;
+    std::string stage;
+    std::optional<ImageThresholds> graded;
+    if (!args.thresholds_given) graded = graded_thresholds(args.reference, stage);
+    if (graded) options = graded->compare_options();
     const CompareResult result =
         compare_images(read_image8(args.actual), read_image8(args.reference), options);
     std::printf("%s vs %s: %s\n", args.actual.c_str(), args.reference.c_str(),
                 result.summary().c_str());
+    if (graded)
+        std::printf(
+            "  (the grader's thresholds, from %s: full points up to %.2f%% of the pixels "
+            "failing, none from %.2f%%)\n",
+            stage.c_str(), graded->pass_percent, graded->fail_percent);
     return result.passed ? 0 : 1;
 }
 
