@@ -24,6 +24,19 @@ function(rt_add_gtest target)
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
 endfunction()
 
+# rt_skip_pattern(<test> <regex>): <test> (a script test) says it cannot run with output
+# matching <regex>: xvfb-run, a browser or WebGL2 missing. A skip is for a starter tree only, on
+# a student's machine that may lack them; in the instructor tree scripts/install-deps.sh installs
+# everything, so a test that skips there has not run, and it fails instead. (GoogleTest's skips:
+# RT_SKIP_IN_STARTER_TREE, framework/testing/skip.h.)
+function(rt_skip_pattern test regex)
+  if(RT_INSTRUCTOR)
+    set_property(TEST ${test} APPEND PROPERTY FAIL_REGULAR_EXPRESSION "${regex}")
+  else()
+    set_property(TEST ${test} PROPERTY SKIP_REGULAR_EXPRESSION "${regex}")
+  endif()
+endfunction()
+
 # rt_graded_binary(<target> <out>): <out> is ON when grading.json in the calling folder lists
 # <target> among its unit_tests' binaries (rt-grade builds and runs exactly those judges).
 function(rt_graded_binary target out)

@@ -13,6 +13,7 @@
 # 3. For every stage N, re-releases into the same directory with --solved-through N --force
 #    (only the student files change, so the build is incremental) and requires the tests of
 #    stage N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
+# 4. With every stage solved, the README's test command passes: finishing fails no test.
 #
 # Environment: RT_RELEASE_CONFIGURE_ARGS: extra arguments for the starter tree's cmake
 # configure line; RT_CCACHE_DIR: the outer build's compiler cache, which the starter tree (laid
@@ -254,4 +255,13 @@ for solved in "${STAGES[@]}"; do
     [[ $solved == "$LAST_STAGE" ]] && next="no stage after it"
     ok "--solved-through $((10#$solved)): stages ${rung[0]}..$solved pass, $next ($((SECONDS - pass_start)) s)"
 done
+
+# --- 4. Finished: every stage written, C++ and GLSL, passes the README's test command ---------
+# The last rung released every solution. A student who has finished must see no failure: no
+# test may depend on a stub being there (a stub-report test skips once its stub is written).
+finish_start=$SECONDS
+(cd "$STARTER" && bash -c "${COMMANDS[1]}") > "$TMP/finished.log" 2>&1 ||
+    { grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*(Failed|Exception|Timeout)" "$TMP/finished.log"
+      tail -n 40 "$TMP/finished.log"; fail "the README's test command fails in a finished starter tree (above)"; }
+ok "finished: README command 2 passes with every stage written ($((SECONDS - finish_start)) s)"
 echo "total $((SECONDS - start)) s"

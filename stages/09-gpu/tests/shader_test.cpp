@@ -26,6 +26,7 @@
 #include "render/prepare.h"
 #include "scene/scene_loader.h"
 #include "student_copy.h"
+#include "testing/skip.h"
 #include "testing/stage_test.h"
 
 namespace fs = std::filesystem;
@@ -99,8 +100,9 @@ TEST(GpuShader, StubsCompileAndAreReportedOnce) {
     for (const char* f : kStudentFiles)
         write(copy.dir() / f, strip_solutions(read(copy.dir() / f)));
     if (read(copy.dir() / "camera.glsl").find("RT_NOT_IMPLEMENTED") == std::string::npos)
-        GTEST_SKIP() << "camera.glsl has no stub and no solution markers (you have written it): "
-                        "the released stubs were checked in the course tree; nothing is wrong";
+        RT_SKIP_IN_STARTER_TREE()
+            << "camera.glsl has no stub and no solution markers (you have written it): "
+               "the released stubs were checked in the course tree; nothing is wrong";
     GpuRenderOptions options;
     options.student_dir = copy.dir();
     const PreparedScene scene = small_scene("05-recursion/scenes/whitted.json");
@@ -123,7 +125,8 @@ TEST(GpuShader, StubsCompileAndAreReportedOnce) {
 // accepts is not always portable GLSL, and most scenes compile only part of the stubs.
 TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
     if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
-        GTEST_SKIP() << "glslangValidator not installed (apt-get install glslang-tools)";
+        RT_SKIP_IN_STARTER_TREE()
+            << "glslangValidator not installed (apt-get install glslang-tools)";
     const fs::path root = ::rt::testing::source_dir();
     const std::string all =
         "#define HAS_SPHERES\n#define HAS_PLANES\n#define HAS_TRIANGLES\n#define HAS_BOXES\n"
@@ -195,20 +198,34 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
 
 // A starter tree's GLSL of stage 10 or 11 (`folder`: its optional GPU part, stripped as
 // rt-grade release does) in a temporary folder, with stage 09's solutions, rendering `scene` at
-// 32 x 24 with 2 samples. Returns the stub report (stderr); every pixel must be magenta.
+// 32 x 24 with 2 samples. Returns the stub report (stderr); every pixel must be magenta. Renders
+// nothing when a file has no stub left (a starter tree its student has finished).
 struct StubbedRender {
     fs::path dir;  // where the stripped files were (removed)
     std::string err;
+    bool written = false;  // no stub left to render: the student has written these files
 };
+
+// The skip of a finished starter tree (StubsCompileAndAreReportedOnce says why it is no fault).
+constexpr const char* kWrittenSkip =
+    "no stub and no solution markers (you have written these files): the released stubs were "
+    "checked in the course tree; nothing is wrong";
 StubbedRender render_stubbed(const std::string& folder, std::initializer_list<const char*> files,
                              const std::string& scene_file) {
     StubbedRender r;
     r.dir = fs::temp_directory_path() / ("rt-" + folder + "-stubs-" + std::to_string(getpid()));
     fs::remove_all(r.dir);
     fs::create_directories(r.dir);
-    for (const char* f : files)
-        write(r.dir / f,
-              strip_solutions(read(::rt::testing::source_dir() / "stages" / folder / f)));
+    for (const char* f : files) {
+        const std::string stripped =
+            strip_solutions(read(::rt::testing::source_dir() / "stages" / folder / f));
+        r.written = r.written || stripped.find("RT_NOT_IMPLEMENTED") == std::string::npos;
+        write(r.dir / f, stripped);
+    }
+    if (r.written) {
+        fs::remove_all(r.dir);
+        return r;
+    }
     GpuRenderOptions options;
     options.student_dir = ::rt::testing::source_dir() / "stages/09-gpu";
     (folder.starts_with("10-") ? options.sampling_dir : options.path_dir) = r.dir;
@@ -230,6 +247,7 @@ StubbedRender render_stubbed(const std::string& folder, std::initializer_list<co
 // with its file, line and handout section.
 TEST(GpuShader, SamplingStubsAreReported) {
     const StubbedRender r = render_stubbed("10-sampling", {"sampling.glsl"}, "soft_shadows.json");
+    if (r.written) RT_SKIP_IN_STARTER_TREE() << "sampling.glsl has " << kWrittenSkip;
     const std::regex named("not implemented: stratified_sample \\(" +
                            display_path(r.dir / "sampling.glsl") +
                            ":[0-9]+\\);\\s*read stages/10-sampling/README.md#1-pixel-samples-"
@@ -243,6 +261,7 @@ TEST(GpuShader, SamplingStubsAreReported) {
 TEST(GpuShader, PathStubsAreReported) {
     const StubbedRender r =
         render_stubbed("11-path-tracing", {"bsdf.glsl", "path.glsl"}, "cornell_box.json");
+    if (r.written) RT_SKIP_IN_STARTER_TREE() << "bsdf.glsl or path.glsl has " << kWrittenSkip;
     const std::regex named("not implemented: path_radiance \\(" +
                            display_path(r.dir / "path.glsl") +
                            ":[0-9]+\\);\\s*read stages/11-path-tracing/README.md#6-the-path-"
@@ -324,8 +343,9 @@ TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
                      l.find_first_not_of(' ') != l.find("//");
     }
     if (at == std::string::npos || stubs)
-        GTEST_SKIP() << "this tree's GLSL has stubs before the BVH, or no `" << loop.substr(4, 28)
-                     << "` in bvh.glsl (a starter tree): the course tree runs this test";
+        RT_SKIP_IN_STARTER_TREE()
+            << "this tree's GLSL has stubs before the BVH, or no `" << loop.substr(4, 28)
+            << "` in bvh.glsl (a starter tree): the course tree runs this test";
     const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
     text.insert(at + loop.size(), "        if (holding || top > 0) continue;  // never pops\n");
     write(file, text);
@@ -361,7 +381,7 @@ TEST(GpuShader, ShadertoyExportErrorNamesTheStudentFileAndLine) {
     const ShadertoyRun run = run_shadertoy_export(scene, RenderMode::Normals);
     unsetenv("RT_GPU_STUDENT_DIR");
     if (run.compile_errors.starts_with("glslangValidator not installed"))
-        GTEST_SKIP() << run.compile_errors;
+        RT_SKIP_IN_STARTER_TREE() << run.compile_errors;
     const std::string where = display_path(file) + ":" + std::to_string(line) + ":";
     EXPECT_NE(run.compile_errors.find(where), std::string::npos) << "expected " << where << " in\n"
                                                                  << run.compile_errors;
@@ -395,7 +415,8 @@ TEST(GpuShader, ShadertoyExportRefuses) {
 // A starter tree's export (every stub in) is still GLSL ES 3.00 that Shadertoy compiles.
 TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
     if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
-        GTEST_SKIP() << "glslangValidator not installed (apt-get install glslang-tools)";
+        RT_SKIP_IN_STARTER_TREE()
+            << "glslangValidator not installed (apt-get install glslang-tools)";
     StudentCopy stubs("shadertoy");
     for (const char* f : kStudentFiles)
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
