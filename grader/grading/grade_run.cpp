@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <regex>
+#include <string>
 #include <thread>
 
 #include "core/parallel_for.h"
@@ -89,6 +91,16 @@ constexpr int kLeaderboardRepeats = 3;
 constexpr const char* kLeaderboardWidth = "640";
 constexpr const char* kLeaderboardHeight = "480";
 
+// A failed test's first line when the worker (the student's code) ended early: how it ended and,
+// from the judge's message, in which call ("CPU time limit hit (60 s, all its processes) in
+// path_radiance"), rather than the judge's guess ("a crash, exit() or abort").
+std::string worker_cause(const RunResult& worker, const Limits& limits, const std::string& output) {
+    static const std::regex call("during a call of ([A-Za-z_][A-Za-z0-9_]*)");
+    std::smatch m;
+    const std::string where = std::regex_search(output, m, call) ? " in " + m[1].str() : "";
+    return "your code's process: " + worker.describe(limits) + where;
+}
+
 class Runner {
   public:
     explicit Runner(Grading& g) : g_(g), hidden_(hidden_dirs(g.w)) {}
@@ -156,8 +168,9 @@ class Runner {
                                    "RT_GRADE_RESULT_FD=" + std::to_string(kResultFd)});
         r.pass_fds = {{channel.nonce_read, kNonceFd}, {channel.child_end, kResultFd}};
         std::string worker_output;
+        RunResult worker;
         const RunResult res =
-            channel.ok ? run_judged(bin, task, dir, r, worker_output) : RunResult{};
+            channel.ok ? run_judged(bin, task, dir, r, worker, worker_output) : RunResult{};
         g_.survivors += res.survivors;
         std::string why = channel.ok ? "" : "the grader could not open the test channel";
         const std::string records = channel.records();
@@ -172,6 +185,8 @@ class Runner {
                 const std::string first = first_failure(out.output);
                 head = first.empty() ? "failed (see the output below)" : "failed: " + first;
             }
+            // The judge only sees the worker's socket close; the worker's end is the cause.
+            if (!worker.ok()) head = worker_cause(worker, r.limits, out.output);
             if (res.output_truncated) head += " (output truncated)";
             out.output = head + "\n" + out.output;
         }
@@ -184,7 +199,7 @@ class Runner {
     // of its own, joined by a socket pair and nothing else (framework/remote/remote_call.h). Each
     // end is closed here as soon as its process is gone, so the other sees the end of the stream.
     RunResult run_judged(const fs::path& bin, const GradeTask& task, const fs::path& dir,
-                         RunSpec& judge, std::string& worker_output) {
+                         RunSpec& judge, RunResult& worker_result, std::string& worker_output) {
         int ends[2];
         if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return RunResult{};
         RunSpec worker = base_spec(bin / kWorker, child_dir(dir / "worker-out"),
@@ -196,7 +211,6 @@ class Runner {
         add_gpu(task, worker);
         const CpuLease cpu;  // each waits for the other's answers: one CPU for both
         judge.cpu = worker.cpu = cpu.cpu();
-        RunResult worker_result;
         std::thread serving([&] {
             worker_result = run_sandboxed(worker);
             close(ends[1]);

@@ -115,8 +115,9 @@ namespace { struct Spin { Spin() { volatile bool forever = true; while (forever)
 CPP
     # Spinning is work: the CPU limit stops it (the wall clock is for a child that waits). Every
     # process of the stage spins to its limit, so one second each keeps the case short.
+    # The first line names the cause and the call, not the judge's guess of a crash.
     limit=(--time-limit 1)
-    checks=(--score-max 0 --contains "CPU time limit hit (1 s") ;;
+    checks=(--score-max 0 --contains "your code's process: CPU time limit hit (1 s") ;;
   fork_bomb)
     solution1
     append1 <<'CPP'
