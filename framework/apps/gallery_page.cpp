@@ -253,7 +253,10 @@ int run_gallery(const fs::path& source, const fs::path& out, int threads) {
             RenderOptions options;
             options.threads = threads;
             const fs::path image_file = stage_out / (scene_file.stem().string() + ".png");
-            const Image image = render(scene, scene.mode, options);
+            Image image = render(scene, scene.mode, options);
+            const NonFinitePixels non_finite = mark_non_finite_pixels(image);
+            if (non_finite.count > 0)
+                std::fprintf(stderr, "%s\n", non_finite.describe(scene_file.string()).c_str());
             write_image(image, image_file);
             if (!regenerating) {
                 std::string web_problem;

@@ -133,6 +133,8 @@ int run_render(const RenderArgs& args) {
     options.threads = args.threads;
     options.show_progress = !args.quiet && stdout_is_terminal();
     Image image = args.gpu ? render_gpu(scene, mode, gpu) : render(scene, mode, options);
+    const NonFinitePixels non_finite = mark_non_finite_pixels(image);
+    if (non_finite.count > 0) std::fprintf(stderr, "%s\n", non_finite.describe(args.scene).c_str());
     if (overlay) draw_ray_tree(scene, debug_pixel(scene, overlay->first, overlay->second), image);
     write_image(image, args.output);
     const std::string how = args.gpu

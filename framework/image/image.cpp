@@ -218,4 +218,26 @@ Image read_image(const std::filesystem::path& file, Encoding integer_encoding, I
     return out;
 }
 
+NonFinitePixels mark_non_finite_pixels(Image& image) {
+    NonFinitePixels found;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const Color& c = image.pixels[i];
+        if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)) continue;
+        if (found.count++ == 0) {
+            found.first_x = int(i % std::size_t(image.width));
+            found.first_y = int(i / std::size_t(image.width));
+        }
+        image.pixels[i] = Color(1, 0, 1);  // magenta, as a stub's pixel
+    }
+    return found;
+}
+
+std::string NonFinitePixels::describe(const std::string& scene) const {
+    const std::string at = std::to_string(first_x) + "," + std::to_string(first_y);
+    return scene + ": " + std::to_string(count) +
+           " pixels are not a number or infinite, shown magenta (the first at " + at +
+           "): look for a 0/0, 0 * inf or inf - inf in their shading; rt render " + scene +
+           " --debug-pixel " + at + " prints that pixel's rays (docs/conventions.md#colour)";
+}
+
 }  // namespace rt

@@ -88,4 +88,17 @@ struct ImageInfo {
 Image read_image(const std::filesystem::path& file, Encoding integer_encoding = Encoding::Srgb,
                  ImageInfo* info = nullptr);
 
+// Pixels with a NaN or infinite channel (a 0/0, 0 * inf or inf - inf in the shading), which the
+// PNG writer would otherwise turn black or white without a word: mark_non_finite_pixels paints
+// them magenta, as render() paints a stub's pixel, and counts them. `rt render` and the gallery
+// print describe().
+struct NonFinitePixels {
+    long long count = 0;
+    int first_x = -1, first_y = -1;  // the first in reading order
+
+    // One line naming the scene, the count, the first pixel and the command that shows it.
+    std::string describe(const std::string& scene) const;
+};
+NonFinitePixels mark_non_finite_pixels(Image& image);
+
 }  // namespace rt

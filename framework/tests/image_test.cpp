@@ -60,6 +60,28 @@ TEST(Srgb, ClampsAndNaN) {
 // bit patterns of (0, 1), on every float within 4096 steps of where each code starts (found
 // from the inverse transfer function, independently of the table), and on the special values.
 // (Every float of (0, 1), about 10^9, was checked once, 2026-12-03.)
+// A NaN or infinite pixel is shown magenta and counted, the first named with its --debug-pixel
+// command, instead of turning black (or white) in the PNG without a word.
+TEST(NonFinitePixels, AreMagentaCountedAndNamed) {
+    Image image(4, 3);
+    for (Color& c : image.pixels) c = Color(0.25f);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    image.pixels[6] = Color(0.5f, nan, 0.5f);  // x 2, y 1
+    image.pixels[11] = Color(inf, 0, 0);
+    const NonFinitePixels found = mark_non_finite_pixels(image);
+    EXPECT_EQ(found.count, 2);
+    EXPECT_EQ(found.first_x, 2);
+    EXPECT_EQ(found.first_y, 1);
+    EXPECT_EQ(image.pixels[6], Color(1, 0, 1));
+    EXPECT_EQ(image.pixels[11], Color(1, 0, 1));
+    EXPECT_EQ(image.pixels[0], Color(0.25f)) << "finite pixels stay";
+    const std::string line = found.describe("s.json");
+    EXPECT_NE(line.find("s.json: 2 pixels are not a number or infinite"), std::string::npos)
+        << line;
+    EXPECT_NE(line.find("rt render s.json --debug-pixel 2,1"), std::string::npos) << line;
+}
+
 TEST(Srgb, TableIsThePowEncoding) {
     const auto by_pow = [](float x) { return int(std::lround(linear_to_srgb(x) * 255)); };
     const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
