@@ -87,8 +87,9 @@ Color sample_light_mis(const PreparedScene& scene, const SurfacePoint& at, const
 // `emissive`, then (below scene.max_depth bounces) sample_light_mis, then a sample_bsdf bounce;
 // an area light a bounce meets (nearest_area_light, scene/area_light_hit.h) adds its radiance
 // weighted by the power heuristic of the bounce's pdf against the light's (full weight after a
-// delta bounce or for the camera ray), and ends the path. After 3 bounces Russian roulette:
-// survive with q = min(max component of the throughput, 0.95), divide the throughput by q.
+// delta bounce or for the camera ray), and ends the path. Russian roulette once the bounce
+// sampled at the path's 4th surface (and every later one) has multiplied the throughput: survive
+// with q = min(max component of the throughput, 0.95), divide the throughput by q.
 // Random numbers per bounce, in this order: u_light, u (sample_light_mis), u_lobe, u
 // (sample_bsdf), then the roulette's. A ray that escapes sees scene.background.
 Color path_radiance(const PreparedScene& scene, const Ray& ray, SampleStream& stream);

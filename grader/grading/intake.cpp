@@ -219,7 +219,10 @@ void list_ignored(const GradeOptions& o, Intake& in, const fs::path& sub,
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         const std::string rel = it->path().lexically_relative(sub).string();
         const std::string name = it->path().filename().string();
-        if (it.depth() == 0 && (name.starts_with("build") || name == ".git")) {
+        // Build trees, the history and installed npm packages (tools/web/node_modules, whose
+        // .bin/ links every self-grade would otherwise list) are never a student's work.
+        const bool generated = it.depth() == 0 && (name.starts_with("build") || name == ".git");
+        if (generated || (fs::is_directory(it->symlink_status()) && name == "node_modules")) {
             it.disable_recursion_pending();
             continue;
         }

@@ -123,10 +123,11 @@ Color path_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStr
         const BsdfSample s = sample_bsdf(material, wo, u_lobe, stream.next2());
         if (s.weight == Color(0)) break;
         throughput *= s.weight;
-        full_weight = s.delta, bounce_pdf = s.pdf;
+        full_weight = s.delta;
+        bounce_pdf = s.pdf;
         const Vec3 direction = frame.to_world(s.wi);
         ray = spawn_ray(at, glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal, direction);
-        if (depth >= 3) {  // Russian roulette, unbiased by the division
+        if (depth >= 3) {  // the 4th surface on: Russian roulette, unbiased by the division
             const Real q =
                 std::min(Real(0.95), Real(std::max({throughput.r, throughput.g, throughput.b})));
             if (stream.next() >= q) break;
