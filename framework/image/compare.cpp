@@ -16,6 +16,24 @@ int channel_difference(const std::uint8_t* a, const std::uint8_t* b) {
     return d;
 }
 
+// A pixel of the heat map: red where the image is brighter (`signed_sum` of its channels'
+// differences > 0), blue where darker; full strength where the pixel fails, else dim with `d`.
+void paint_difference(std::uint8_t* heat, double d, double signed_sum, bool fails) {
+    const std::uint8_t strength = fails ? 255 : std::uint8_t(std::min(128.0, d * 16));
+    heat[signed_sum >= 0 ? 0 : 2] = strength;
+}
+
+// The words for the sign of the mean difference: which way the image is off, or that it is off
+// both ways alike (noise, a shifted edge) when the signed mean is under half the absolute one.
+std::string direction_words(double signed_mean, double abs_mean) {
+    char words[96];
+    if (std::abs(signed_mean) < 0.5 * abs_mean || abs_mean == 0)
+        return "as much brighter as darker";
+    std::snprintf(words, sizeof words, "%s than the reference by %.2f on average",
+                  signed_mean > 0 ? "brighter" : "darker", std::abs(signed_mean));
+    return words;
+}
+
 // The mean linear colour of each block, re-encoded to sRGB on the 0..255 scale.
 std::vector<double> block_means(const Image8& image, int block) {
     static const std::vector<double> linear = [] {
@@ -47,29 +65,29 @@ CompareResult compare_block_means(const Image8& actual, const Image8& reference,
     const int w = actual.width, h = actual.height, block = options.block;
     const int bw = (w + block - 1) / block;
     const std::vector<double> a = block_means(actual, block), r = block_means(reference, block);
-    double total = 0, largest = 0;
+    double total = 0, signed_total = 0, largest = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::size_t b = (std::size_t(y / block) * bw + std::size_t(x / block)) * 3;
             double d = 0;
+            double signed_sum = 0;
             for (int c = 0; c < 3; ++c) {
-                const double dc = std::abs(a[b + std::size_t(c)] - r[b + std::size_t(c)]);
-                d = std::max(d, dc);
-                total += dc;
+                const double dc = a[b + std::size_t(c)] - r[b + std::size_t(c)];
+                d = std::max(d, std::abs(dc));
+                total += std::abs(dc);
+                signed_sum += dc;
             }
+            signed_total += signed_sum;
             largest = std::max(largest, d);
-            std::uint8_t* heat = result.heat_map.at(x, y);
-            if (d > options.tolerance) {
-                ++result.failing_pixels;
-                heat[0] = heat[1] = heat[2] = 255;
-            } else {
-                heat[0] = std::uint8_t(std::min(255.0, d * 32));
-            }
+            const bool fails = d > options.tolerance;
+            if (fails) ++result.failing_pixels;
+            paint_difference(result.heat_map.at(x, y), d, signed_sum, fails);
         }
     const double pixels = double(w) * h;
     result.max_difference = int(std::ceil(largest));
     result.failing_percent = 100.0 * double(result.failing_pixels) / pixels;
     result.mean_abs_difference = total / (pixels * 3);
+    result.mean_signed_difference = signed_total / (pixels * 3);
     result.passed = result.failing_percent <= options.max_failing_percent;
     return result;
 }
@@ -78,15 +96,17 @@ CompareResult compare_block_means(const Image8& actual, const Image8& reference,
 
 std::string CompareResult::summary() const {
     if (!size_matches) return "image size differs from the reference";
-    char line[240];
+    char line[320];
     std::snprintf(line, sizeof line,
-                  "%s: %lld failing pixels (%.3f%%), max channel difference %d, mean %.3f%s",
+                  "%s: %lld failing pixels (%.3f%%), max channel difference %d, mean %.3f%s; "
+                  "yours is %s",
                   passed ? "match" : "MISMATCH", failing_pixels, failing_percent, max_difference,
                   mean_abs_difference,
                   block > 0 ? (" (of the means over " + std::to_string(block) + "x" +
                                std::to_string(block) + " blocks)")
                                   .c_str()
-                            : "");
+                            : "",
+                  direction_words(mean_signed_difference, mean_abs_difference).c_str());
     return line;
 }
 
@@ -103,13 +123,18 @@ CompareResult compare_images(const Image8& actual, const Image8& reference,
         result.block = options.block;
         return compare_block_means(actual, reference, options, std::move(result));
     }
-    double total = 0;
+    double total = 0, signed_total = 0;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const std::uint8_t* a = actual.at(x, y);
             const std::uint8_t* r = reference.at(x, y);
             const int d = channel_difference(a, r);
-            for (int c = 0; c < 3; ++c) total += std::abs(int(a[c]) - int(r[c]));
+            int signed_sum = 0;
+            for (int c = 0; c < 3; ++c) {
+                total += std::abs(int(a[c]) - int(r[c]));
+                signed_sum += int(a[c]) - int(r[c]);
+            }
+            signed_total += signed_sum;
             result.max_difference = std::max(result.max_difference, d);
             bool fails = d > options.tolerance;
             if (fails && options.neighbourhood) {
@@ -120,18 +145,14 @@ CompareResult compare_images(const Image8& actual, const Image8& reference,
                         fails = channel_difference(a, reference.at(nx, ny)) > options.tolerance;
                     }
             }
-            std::uint8_t* heat = result.heat_map.at(x, y);
-            if (fails) {
-                ++result.failing_pixels;
-                heat[0] = heat[1] = heat[2] = 255;
-            } else {
-                heat[0] = std::uint8_t(std::min(255, d * 32));
-            }
+            if (fails) ++result.failing_pixels;
+            paint_difference(result.heat_map.at(x, y), d, signed_sum, fails);
         }
     }
     const double pixels = double(w) * h;
     result.failing_percent = 100.0 * double(result.failing_pixels) / pixels;
     result.mean_abs_difference = total / (pixels * 3);
+    result.mean_signed_difference = signed_total / (pixels * 3);
     result.passed = result.failing_percent <= options.max_failing_percent;
     return result;
 }

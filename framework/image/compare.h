@@ -31,9 +31,14 @@ struct CompareResult {
     long long failing_pixels = 0;
     double failing_percent = 100;
     double mean_abs_difference = 0;  // per channel, in 8-bit steps
-    int block = 0;                   // the options' block: differences are of block means
+    // The mean of (actual - reference) per channel: > 0 the image is brighter than the
+    // reference on average, < 0 darker.
+    double mean_signed_difference = 0;
+    int block = 0;  // the options' block: differences are of block means
     bool passed = false;
-    Image8 heat_map;  // black where equal, brighter red the larger the difference, white if failing
+    // Black where equal; red where the image is brighter than the reference (the sum of its
+    // channels), blue where darker, dim below the tolerance and full where the pixel fails.
+    Image8 heat_map;
 
     std::string summary() const;  // one line for logs and test failures
 };

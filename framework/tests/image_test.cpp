@@ -336,7 +336,33 @@ TEST(Compare, ToleranceAndFailingPercentage) {
     r = compare_images(img, ref);
     EXPECT_FALSE(r.passed) << r.summary();
     EXPECT_EQ(r.failing_pixels, 11);
-    EXPECT_EQ(r.heat_map.at(50, 50)[0], 255);
+    EXPECT_EQ(std::max(r.heat_map.at(50, 50)[0], r.heat_map.at(50, 50)[2]), 255)
+        << "a failing pixel is at full strength (red or blue by its sign)";
+}
+
+// The summary says which way an image is off, and the heat map shows it: red where brighter than
+// the reference, blue where darker.
+TEST(Compare, SaysBrighterOrDarkerAndShowsIt) {
+    const Image8 ref = gradient(20, 10);
+    Image8 dark = ref;
+    for (std::uint8_t& v : dark.data) v = std::uint8_t(v / 2);
+    CompareResult r = compare_images(dark, ref);
+    EXPECT_LT(r.mean_signed_difference, 0);
+    EXPECT_NE(r.summary().find("yours is darker than the reference by"), std::string::npos)
+        << r.summary();
+    EXPECT_EQ(r.heat_map.at(19, 9)[2], 255) << "a failing darker pixel is full blue";
+    EXPECT_EQ(r.heat_map.at(19, 9)[0], 0);
+    Image8 bright = ref;
+    bright.at(19, 9)[0] = 255;
+    r = compare_images(bright, ref);
+    EXPECT_GT(r.mean_signed_difference, 0);
+    EXPECT_EQ(r.heat_map.at(19, 9)[0], 255) << "a failing brighter pixel is full red";
+    EXPECT_NE(r.summary().find("brighter than the reference"), std::string::npos) << r.summary();
+    Image8 both = ref;
+    both.at(0, 0)[0] = std::uint8_t(ref.at(0, 0)[0] + 50);
+    both.at(10, 0)[0] = std::uint8_t(ref.at(10, 0)[0] - 50);
+    EXPECT_NE(compare_images(both, ref).summary().find("as much brighter as darker"),
+              std::string::npos);
 }
 
 TEST(Compare, SizeMismatchFails) {

@@ -139,7 +139,7 @@ std::string scene_html(const ReportTest& t) {
     };
     img(t.student_png, "your image");
     img(t.reference_png, "reference");
-    img(t.diff_png, "difference (white: failing pixel)");
+    img(t.diff_png, "difference (red: yours brighter, blue: darker; full strength: failing pixel)");
     return h + "</div><pre>" + html_escape(t.metrics) + "</pre></div>\n";
 }
 
