@@ -23,17 +23,6 @@ void paint_difference(std::uint8_t* heat, double d, double signed_sum, bool fail
     heat[signed_sum >= 0 ? 0 : 2] = strength;
 }
 
-// The words for the sign of the mean difference: which way the image is off, or that it is off
-// both ways alike (noise, a shifted edge) when the signed mean is under half the absolute one.
-std::string direction_words(double signed_mean, double abs_mean) {
-    char words[96];
-    if (std::abs(signed_mean) < 0.5 * abs_mean || abs_mean == 0)
-        return "as much brighter as darker";
-    std::snprintf(words, sizeof words, "%s than the reference by %.2f on average",
-                  signed_mean > 0 ? "brighter" : "darker", std::abs(signed_mean));
-    return words;
-}
-
 // The mean linear colour of each block, re-encoded to sRGB on the 0..255 scale.
 std::vector<double> block_means(const Image8& image, int block) {
     static const std::vector<double> linear = [] {
@@ -94,6 +83,17 @@ CompareResult compare_block_means(const Image8& actual, const Image8& reference,
 
 }  // namespace
 
+// Off both ways alike when the signed mean is under half the absolute one.
+std::string CompareResult::direction() const {
+    if (std::abs(mean_signed_difference) < 0.5 * mean_abs_difference || mean_abs_difference == 0)
+        return "as much brighter as darker";
+    char words[96];
+    std::snprintf(words, sizeof words, "%s than the reference by %.2f on average",
+                  mean_signed_difference > 0 ? "brighter" : "darker",
+                  std::abs(mean_signed_difference));
+    return words;
+}
+
 std::string CompareResult::summary() const {
     if (!size_matches) return "image size differs from the reference";
     char line[320];
@@ -106,7 +106,7 @@ std::string CompareResult::summary() const {
                                std::to_string(block) + " blocks)")
                                   .c_str()
                             : "",
-                  direction_words(mean_signed_difference, mean_abs_difference).c_str());
+                  direction().c_str());
     return line;
 }
 

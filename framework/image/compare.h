@@ -41,6 +41,9 @@ struct CompareResult {
     Image8 heat_map;
 
     std::string summary() const;  // one line for logs and test failures
+    // Which way the image is off: "darker than the reference by 2.10 on average", "brighter
+    // ...", or "as much brighter as darker" (noise, a shifted edge).
+    std::string direction() const;
 };
 
 CompareResult compare_images(const Image8& actual, const Image8& reference,

@@ -52,9 +52,10 @@ ImageScore score_image(const Image8& actual, const Image8& reference, const Imag
                                             : "";
     std::snprintf(line, sizeof line,
                   "%.3f%% of the pixels differ%s by more than %d (full points up to %.2f%%, none "
-                  "from %.2f%%); max difference %d; SSIM %.4f (reported, not graded)",
+                  "from %.2f%%); max difference %d; yours is %s; SSIM %.4f (reported, not "
+                  "graded)",
                   failing, blocks.c_str(), th.tolerance, th.pass_percent, th.fail_percent,
-                  score.compare.max_difference, score.ssim);
+                  score.compare.max_difference, score.compare.direction().c_str(), score.ssim);
     score.metrics = line;
     return score;
 }
