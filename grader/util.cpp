@@ -198,4 +198,13 @@ std::optional<std::int64_t> parse_iso8601(const std::string& text) {
     return days * 86400 + h * 3600 + mi * 60 + s - offset;
 }
 
+std::string csv_cell(std::string_view text) {
+    std::string cell = "\"";
+    const bool formula =
+        !text.empty() && std::string_view("=+-@\t\r").find(text[0]) != std::string_view::npos;
+    if (formula) cell += '\'';
+    for (const char c : text) cell += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return cell + "\"";
+}
+
 }  // namespace rt::grader

@@ -36,6 +36,12 @@ std::string two_digits(int n);  // "07": stage numbers as folders and test names
 // gtest-style pattern: '*' any run, '?' one character.
 bool glob_match(std::string_view pattern, std::string_view text);
 
+// A CSV cell: quoted, quotes doubled, and text a spreadsheet would run as a formula (a first
+// character of = + - @, a tab or a carriage return: OWASP's CSV injection list) behind a ' that
+// makes it text. Every cell a student's text reaches goes through it (scores.csv, changes.csv,
+// pairs.csv).
+std::string csv_cell(std::string_view text);
+
 std::string base64(std::string_view data);
 // Drops ANSI escapes and bytes that are not printable UTF-8-ish text.
 std::string clean_output(std::string_view text);

@@ -25,7 +25,8 @@ struct Row {
     const BatchEntry* entry = nullptr;
     bool graded = false;
     GradeSummary summary;
-    std::string error;  // what the grader threw
+    std::string error;  // what the grader threw, or why the submission was refused
+    bool refused = false;
 };
 
 // One column per stage (stageNN), ready for a gradebook import: a row the grader could not
@@ -53,7 +54,8 @@ std::string scores_csv(const std::vector<Row>& rows, const std::vector<int>& sta
                               s.stage_scores[at - s.stage_numbers.begin()]);
             csv += "," + std::string(cell);
         }
-        const std::string status = !r.graded        ? "grader error: " + r.error
+        const std::string status = r.refused        ? "refused: " + r.error
+                                   : !r.graded      ? "grader error: " + r.error
                                    : s.build_failed ? "build failed"
                                                     : "ok";
         std::snprintf(cell, sizeof cell, ",%.1f", s.seconds);
@@ -102,12 +104,17 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
         o.renders = out / entry.name / "renders";  // the dashboard's thumbnails of failing scenes
         o.quiet = true;
         o.jobs = per_job_tests;
-        Row row{entry.name, &entry, false, {}, {}};
+        Row row{entry.name, &entry, false, {}, {}, false};
         if (entry.exported) {  // the dashboard's names (cmd/dashboard.h)
             fs::create_directories(out / entry.name);
             write_text_atomically(out / entry.name / kStudentsFile,
                                   entry.exported->names + " (" + entry.exported->sids + ")\n");
         }
+        // A submission its export could not unpack is graded as unreadable (its results.json
+        // and report say why) and its row says "refused: <why>".
+        o.refused = entry.refused;
+        row.refused = !entry.refused.empty();
+        row.error = entry.refused;
         try {
             // One broken submission never stops the batch: anything thrown is its row's error.
             row.summary = grade_submission(o, log);
@@ -117,6 +124,7 @@ int run_batch(const GradeOptions& base, const fs::path& dir, const fs::path& out
             log << entry.name << ": " << row.summary.score << " / " << row.summary.max_score
                 << "\n";
         } catch (const std::exception& e) {
+            row.refused = false;
             row.error = clean_output(e.what());
             std::lock_guard lock(mutex);
             log << entry.name << ": grader error: " << e.what() << "\n";

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/text_file.h"
@@ -21,29 +25,73 @@ std::string number(double v) {
     return text;
 }
 
-fs::path unpack(const fs::path& zip) {
+// The folder of an export's submission an entry of its zip belongs to ("assignment_61_export/
+// submission_3/" of "assignment_61_export/submission_3/a.cpp"), or "" for the export's own files.
+std::string submission_prefix(const std::string& entry) {
+    static const std::regex prefix("^((?:[A-Za-z0-9_.-]+/)?submission_[0-9]+/)");
+    std::smatch m;
+    return std::regex_search(entry, m, prefix) ? m[1].str() : "";
+}
+
+// unzip's first line of complaint, for a row of scores.csv, with the paths relative to the
+// export (`dir`: the temporary folder it is unpacked in).
+std::string unzip_complaint(const std::string& output, const fs::path& dir = {}) {
+    std::string line = clean_output(output);
+    line = line.substr(0, line.find('\n'));
+    const std::string prefix = dir.string() + "/";
+    for (auto at = line.find(prefix); !dir.empty() && at != std::string::npos;
+         at = line.find(prefix))
+        line.erase(at, prefix.size());
+    return line.empty() ? "unzip could not extract it" : line;
+}
+
+// A zipped export, unpacked one submission at a time: a submission whose entries unzip cannot
+// write (a symbolic link followed by a file written through it, a truncated or encrypted entry)
+// is refused alone, with unzip's reason in `refused` under its folder's name, and left empty;
+// the other submissions are unpacked and graded. A zip that cannot be listed, or whose own
+// files (the metadata) cannot be extracted, is refused whole.
+fs::path unpack(const fs::path& zip, std::map<std::string, std::string>& refused) {
     char tmpl[] = "/tmp/rt-grade-export-XXXXXX";
     if (!mkdtemp(tmpl)) throw std::runtime_error("cannot make a temporary folder in /tmp");
+    const fs::path dir = tmpl;
+    const std::string archive = shell_quote(zip.string());
+    std::string listing;
+    if (run_trusted("unzip -Z1 " + archive, &listing) != 0)
+        throw std::runtime_error(zip.string() + ": not a readable zip (" +
+                                 unzip_complaint(listing) + ")");
+    std::set<std::string> prefixes;
+    std::istringstream lines(listing);
+    for (std::string entry; std::getline(lines, entry);)
+        if (const std::string prefix = submission_prefix(entry); !prefix.empty())
+            prefixes.insert(prefix);
     std::string output;
-    if (run_trusted("unzip -q " + shell_quote(zip.string()) + " -d " + shell_quote(tmpl),
-                    &output) != 0)
-        throw std::runtime_error(zip.string() + ": not a readable zip (" + clean_output(output) +
-                                 ")");
-    return tmpl;
+    const std::string own =
+        "unzip -q -o " + archive + " -x '*submission_[0-9]*/*' -d " + shell_quote(dir.string());
+    if (run_trusted(own, &output) > 1)  // 1: a warning, nothing lost; 11: nothing matched
+        if (output.find("caution: filename not matched") == std::string::npos)
+            throw std::runtime_error(zip.string() + ": not a readable zip (" +
+                                     unzip_complaint(output) + ")");
+    for (const std::string& prefix : prefixes) {
+        const std::string command = "unzip -q -o " + archive + " " + shell_quote(prefix + "*") +
+                                    " -d " + shell_quote(dir.string());
+        if (run_trusted(command, &output) == 0) continue;
+        const std::string folder = fs::path(prefix).parent_path().filename().string();
+        refused[folder] = unzip_complaint(output, dir);
+        std::error_code ec;
+        fs::remove_all(dir / prefix, ec);
+        fs::create_directories(dir / prefix, ec);  // listed by the metadata, graded as refused
+    }
+    return dir;
 }
 
 }  // namespace
 
-std::string csv_cell(const std::string& text) {
-    std::string cell = "\"";
-    for (const char c : text) cell += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return cell + "\"";
-}
-
 BatchInput batch_input(const fs::path& dir, bool latest_only) {
     BatchInput in;
     fs::path folder = dir;
-    if (fs::is_regular_file(dir) && dir.extension() == ".zip") folder = in.unpacked = unpack(dir);
+    std::map<std::string, std::string> refused;
+    if (fs::is_regular_file(dir) && dir.extension() == ".zip")
+        folder = in.unpacked = unpack(dir, refused);
     if (!fs::is_directory(folder))
         throw std::runtime_error(dir.string() +
                                  ": not a folder of submissions nor a Gradescope export's .zip");
@@ -51,13 +99,16 @@ BatchInput batch_input(const fs::path& dir, bool latest_only) {
         in.is_export = true;
         std::vector<ExportedSubmission> all = read_gradescope_export(*root);
         if (latest_only) all = latest_per_student(all);
-        for (auto& s : all) in.entries.push_back({s.path, s.folder, s});
+        for (auto& s : all) {
+            const auto why = refused.find(s.folder);
+            in.entries.push_back({s.path, s.folder, s, why == refused.end() ? "" : why->second});
+        }
     } else {
         for (const auto& e : fs::directory_iterator(folder)) {
             if (!e.is_directory() && e.path().extension() != ".zip") continue;
             std::string name = e.path().filename().string();
             if (name.ends_with(".zip")) name.resize(name.size() - 4);
-            in.entries.push_back({e.path(), clean_output(name), {}});
+            in.entries.push_back({e.path(), clean_output(name), {}, {}});
         }
     }
     std::sort(in.entries.begin(), in.entries.end(),

@@ -17,6 +17,7 @@ struct BatchEntry {
     std::filesystem::path path;                  // a folder or a .zip
     std::string name;                            // its row and its report folder
     std::optional<ExportedSubmission> exported;  // from an export's metadata
+    std::string refused;  // why its part of a zipped export could not be unpacked ("": it was)
 };
 
 struct BatchInput {
@@ -29,9 +30,6 @@ struct BatchInput {
 // of an export, its submissions (`latest_only`: the newest of each student). Throws
 // std::runtime_error with a one-line reason when it cannot be read.
 BatchInput batch_input(const std::filesystem::path& dir, bool latest_only);
-
-// A CSV field: quoted, with quotes doubled.
-std::string csv_cell(const std::string& text);
 
 // The CSV columns an export adds after the submission's name, and after its new score.
 std::string export_header();

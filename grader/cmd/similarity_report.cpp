@@ -134,18 +134,12 @@ std::string index_page(const SimilarityReport& r, std::size_t flagged) {
     return html + notes(r) + "</body></html>\n";
 }
 
-std::string csv_field(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 std::string pairs_csv(const SimilarityReport& r) {
     std::string csv = "file,a,b,a_in_b,b_in_a,score,a_tokens,b_tokens\n";
     for (const SimilarityPair& p : r.pairs) {
         const CohortMember& a = r.cohort[p.a];
         const CohortMember& b = r.cohort[p.b];
-        csv += csv_field(p.file) + "," + csv_field(a.name) + "," + csv_field(b.name) + "," +
+        csv += csv_cell(p.file) + "," + csv_cell(a.name) + "," + csv_cell(b.name) + "," +
                std::to_string(p.a_in_b) + "," + std::to_string(p.b_in_a) + "," +
                std::to_string(p.score()) + "," + std::to_string(tokens_of(a, p.file)) + "," +
                std::to_string(tokens_of(b, p.file)) + "\n";

@@ -15,6 +15,9 @@ struct GradeOptions {
     std::filesystem::path source;      // the instructor's tree
     std::filesystem::path cache;       // grading workspaces (default: <source>/build/grader-cache)
     std::filesystem::path submission;  // folder, .zip, or "." for the working tree
+    // Why the submission could not be unpacked (a batch's export, cmd/batch_input.h): graded as
+    // unreadable with this reason, like a broken zip; "" when it was.
+    std::string refused;
     std::vector<int> stages;           // empty: every stage with a grading.json
     std::filesystem::path results;     // Gradescope results.json (optional)
     std::filesystem::path html;        // HTML report (optional)

