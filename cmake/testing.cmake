@@ -94,6 +94,9 @@ const char* const kImageTestStage = \"${stage_folder}\";\n\
   add_executable(${target} ${image_objects})
   target_link_libraries(${target} PRIVATE ${target}_objects rt_test_support rt_render
     ${arg_LIBRARIES} GTest::gtest_main)
+  # Its functions' names in the dynamic symbol table (-rdynamic): a test stopped at its CPU limit
+  # names the functions it was in (testing/test_watch.h).
+  set_target_properties(${target} PROPERTIES ENABLE_EXPORTS ON)
   rt_add_gtest(${target} PREFIX "Stage${number}." LABELS stage${number} ${arg_LABELS})
   # `cmake --build --preset release --target stageNN`: what a student working on stage NN needs
   # (its test binaries and rt), not every other stage's tests, the grader or the benchmarks.

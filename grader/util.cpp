@@ -80,10 +80,6 @@ std::optional<std::string> command_output(const std::string& command) {
     return output;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 std::string two_digits(int n) {
     char text[8];
     std::snprintf(text, sizeof text, "%02d", n);
@@ -122,30 +118,6 @@ bool glob_match(std::string_view pattern, std::string_view text) {
     }
     while (p < pattern.size() && pattern[p] == '*') ++p;
     return p == pattern.size();
-}
-
-std::string base64(std::string_view data) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((data.size() + 2) / 3 * 4);
-    std::size_t i = 0;
-    for (; i + 2 < data.size(); i += 3) {
-        const unsigned v = (unsigned char)data[i] << 16 | (unsigned char)data[i + 1] << 8 |
-                           (unsigned char)data[i + 2];
-        out += table[v >> 18];
-        out += table[(v >> 12) & 63];
-        out += table[(v >> 6) & 63];
-        out += table[v & 63];
-    }
-    if (i < data.size()) {
-        unsigned v = (unsigned char)data[i] << 16;
-        if (i + 1 < data.size()) v |= (unsigned char)data[i + 1] << 8;
-        out += table[v >> 18];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < data.size() ? table[(v >> 6) & 63] : '=';
-        out += '=';
-    }
-    return out;
 }
 
 std::string clean_output(std::string_view text) {

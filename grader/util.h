@@ -1,5 +1,5 @@
 // Small helpers of the trusted grader: hashing, shell commands it runs itself. Files and HTML
-// escaping: core/text_file.h.
+// escaping: core/text_file.h; base64 and seconds_since: core/.
 #pragma once
 
 #include <chrono>
@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/base64.h"
+#include "core/seconds_since.h"
 #include "core/text_file.h"
 
 namespace rt::grader {
@@ -30,7 +32,6 @@ int run_argv(const std::vector<std::string>& argv, const std::filesystem::path& 
 std::uint64_t fnv1a(std::string_view data, std::uint64_t hash = 1469598103934665603ull);
 std::string hex(std::uint64_t value);
 
-double seconds_since(std::chrono::steady_clock::time_point start);
 std::string two_digits(int n);  // "07": stage numbers as folders and test names spell them
 
 // gtest-style pattern: '*' any run, '?' one character.
@@ -42,7 +43,6 @@ bool glob_match(std::string_view pattern, std::string_view text);
 // pairs.csv).
 std::string csv_cell(std::string_view text);
 
-std::string base64(std::string_view data);
 // Drops ANSI escapes and bytes that are not printable UTF-8-ish text.
 std::string clean_output(std::string_view text);
 

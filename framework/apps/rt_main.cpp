@@ -29,6 +29,7 @@
 #include "apps/cli_parse.h"
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
+#include "core/seconds_since.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
 #include "course/manifest.h"
@@ -63,10 +64,6 @@ std::pair<int, int> parse_pixel(const std::string& text, const char* option,
                                  std::to_string(scene.image.width) + " and 0 <= Y < " +
                                  std::to_string(scene.image.height));
     return {x, y};
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // --debug-pixel: the CPU's ray tree (text or JSON), or with --gpu what the shader computed.

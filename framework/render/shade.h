@@ -61,8 +61,8 @@ class TraceObserver {
     virtual void end_ray() = 0;
 };
 
-// The deepest bounce the loop's fixed stack holds (the scene loader's max_depth limit).
-inline constexpr int kMaxTraceDepth = 64;
+// The deepest bounce the loop's fixed stack holds: the scene's max_depth limit.
+inline constexpr int kMaxTraceDepth = kMaxDepthLimit;
 
 // The colour seen along `ray`, a camera ray at depth `depth` (0 for camera rays): an explicit
 // loop over a fixed stack of frames {ray, depth, weight, colour so far, next branch}, which adds

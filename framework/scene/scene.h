@@ -166,6 +166,10 @@ inline constexpr int kRenderModeCount = int(RenderMode::BvhVisits) + 1;
 // BVH (built once after loading, by build_acceleration in render/accelerate.h).
 enum class Accelerator { None, Bvh };
 
+// The deepest max_depth a scene may ask for: the scene loader's limit, the CPU tracer's fixed
+// stack (render/shade.h) and the GPU's (render/gpu/gpu_render.cpp) all hold this many bounces.
+inline constexpr int kMaxDepthLimit = 64;
+
 // A scene as its file describes it (scene/scene_loader.h), or as a program or test builds it.
 // Rendering needs more, built from it in one place: prepare_scene (render/prepare.h) makes a
 // PreparedScene (scene/prepared_scene.h) with the features, the BVH and the texture system.

@@ -12,7 +12,6 @@ namespace {
 // Limits against absurd sizes (documented in docs/scene-format.md).
 constexpr double kMaxImageSide = 16384;
 constexpr double kMaxPixels = 64.0 * 1024 * 1024;
-constexpr double kMaxRecursionDepth = 64;
 constexpr double kMaxSamplesPerPixel = 65536;
 
 }  // namespace
@@ -56,11 +55,11 @@ void SceneSections::read_render(const json& root) {
     }
     if (const json* v = member(*render, "max_depth")) {
         double d = whole_number(*v, "/render/max_depth");
-        if (d < 0 || d > kMaxRecursionDepth)
-            fail_value(
-                "/render/max_depth",
-                "\"max_depth\" must be between 0 and 64, got " + source_text("/render/max_depth"),
-                "a few bounces are enough");
+        if (d < 0 || d > kMaxDepthLimit)
+            fail_value("/render/max_depth",
+                       "\"max_depth\" must be between 0 and " + std::to_string(kMaxDepthLimit) +
+                           ", got " + source_text("/render/max_depth"),
+                       "a few bounces are enough");
         scene_.max_depth = int(d);
     }
     if (const json* v = member(*render, "shadows")) scene_.shadows = boolean(*v, "/render/shadows");

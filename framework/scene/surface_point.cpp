@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/prepared_scene.h"
 #include "scene/transform.h"
 
 namespace rt {

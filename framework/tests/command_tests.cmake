@@ -77,6 +77,13 @@ add_test(NAME Cli.CompareOptionsReplaceTheGradersThresholds
   COMMAND $<TARGET_FILE:rt> compare ${soft_shadows} ${soft_shadows} --tolerance 2)
 set_tests_properties(Cli.CompareOptionsReplaceTheGradersThresholds PROPERTIES LABELS "cli"
   FAIL_REGULAR_EXPRESSION "grader's thresholds")
+# A page a lecturer publishes names its scene from stages/ on, never the folders above it (the
+# lecturer's machine): exported from an absolute path, the page holds no absolute path.
+add_test(NAME Cli.ExportWebShowsNoMachinePath
+  COMMAND bash -c "\"$0\" export-web \"$1\" -o \"$2\" && grep -q 'stages/01-camera-rays/scenes/perspective_directions.json' \"$2\" && ! grep -q -- \"$3\" \"$2\""
+          $<TARGET_FILE:rt> ${PROJECT_SOURCE_DIR}/stages/01-camera-rays/scenes/perspective_directions.json
+          ${PROJECT_BINARY_DIR}/test-output/export-web-path.html ${PROJECT_SOURCE_DIR}/)
+set_tests_properties(Cli.ExportWebShowsNoMachinePath PROPERTIES LABELS "cli;gpu")
 # Damaged OBJ files (tests/bad_objs/expected.txt): one line naming the OBJ file and line, exit 1.
 add_test(NAME Cli.DamagedObjFilesGiveOneLineErrors
   COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DDIR=${CMAKE_CURRENT_SOURCE_DIR}/tests/bad_objs

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "camera/camera_moves.h"
+#include "core/seconds_since.h"
 #include "core/source_dir.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
@@ -17,10 +18,6 @@ namespace fs = std::filesystem;
 
 // How long wait-refined waits before the session fails (a stuck render must not hang CI).
 constexpr double kRefineTimeoutSeconds = 300;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // stages/NN-name/scenes/X.json -> reference_images/NN-name/X.png, when that exists.
 std::optional<Image8> find_reference(const fs::path& scene_file) {

@@ -18,15 +18,15 @@ struct GradeOptions {
     // Why the submission could not be unpacked (a batch's export, cmd/batch_input.h): graded as
     // unreadable with this reason, like a broken zip; "" when it was.
     std::string refused;
-    std::vector<int> stages;           // empty: every stage with a grading.json
-    std::filesystem::path results;     // Gradescope results.json (optional)
-    std::filesystem::path html;        // HTML report (optional)
-    std::filesystem::path renders;     // failing scenes' images, for the dashboard (optional)
-    int jobs = 0;                      // parallel test processes (0: hardware threads)
-    bool quiet = false;                // no terminal summary
-    bool started_only = false;         // no --stages: grade the stages started (self-grading)
-    bool reveal_hidden = false;        // terminal summary shows hidden tests (instructor)
-    double time_limit = 0;             // > 0: overrides every test's and render's wall/CPU limit
+    std::vector<int> stages;        // empty: every stage with a grading.json
+    std::filesystem::path results;  // Gradescope results.json (optional)
+    std::filesystem::path html;     // HTML report (optional)
+    std::filesystem::path renders;  // failing scenes' images, for the dashboard (optional)
+    int jobs = 0;                   // parallel test processes (0: hardware threads)
+    bool quiet = false;             // no terminal summary
+    bool started_only = false;      // no --stages: grade the stages started (self-grading)
+    bool reveal_hidden = false;     // terminal summary shows hidden tests (instructor)
+    double time_limit = 0;          // > 0: overrides every test's and render's wall/CPU limit
     // The platforms besides Gradescope (grading/platform_results.h):
     std::filesystem::path prairielearn_results;  // PrairieLearn's results.json (optional)
     bool autolab_scores = false;  // Autolab: a score line on stdout at the start, after each test

@@ -196,7 +196,9 @@ void write_html_report(const Report& report, const fs::path& file) {
     if (!report.general.empty())
         h += "<pre class=\"note\">" + html_escape(report.general) + "</pre>\n";
     h += tests_table(report, 0);
-    for (const auto& s : report.stages) h += stage_html(report, s);
+    // The newest stage first: a student grading stage 10 reads stage 10, not stage 01.
+    for (auto s = report.stages.rbegin(); s != report.stages.rend(); ++s)
+        h += stage_html(report, *s);
     h += "</body></html>\n";
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
     write_text_atomically(file, h);

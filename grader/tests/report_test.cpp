@@ -50,5 +50,21 @@ TEST(Report, EveryTestHasAnAnchorFromItsName) {
     EXPECT_NE(html.find("<a href=\"#Stage-02-Scenes/Plane.Hits/a\">"), std::string::npos) << html;
 }
 
+// A student grading the stage just worked on finds it first, not after stage 01.
+TEST(Report, TheNewestStageComesFirst) {
+    Report report;
+    report.stages = {{1, "Camera rays", "stages/01-camera-rays"},
+                     {2, "Intersections", "stages/02-intersections"}};
+    ReportTest first = test("Stage 01 Perspective.CornersFollowFieldOfView", "passed");
+    first.stage = 1;
+    report.tests = {first, test("Stage 02 Sphere.SmallSphereFarAway", "passed")};
+    const std::string html = html_of(report);
+    const auto two = html.find("Intersections");
+    const auto one = html.find("Camera rays");
+    ASSERT_NE(two, std::string::npos) << html;
+    ASSERT_NE(one, std::string::npos) << html;
+    EXPECT_LT(two, one) << "stage 02's section before stage 01's";
+}
+
 }  // namespace
 }  // namespace rt::grader

@@ -29,8 +29,8 @@ namespace rt {
 namespace {
 
 const Color kStubColor{1, 0, 1};
-constexpr int kMaxGpuLights = 64;  // visibility is a vec3[MAX_LIGHTS] per invocation
-constexpr int kMaxGpuDepth = 64;   // the Frame stack: as the CPU's kMaxTraceDepth
+constexpr int kMaxGpuLights = 64;             // visibility is a vec3[MAX_LIGHTS] per invocation
+constexpr int kMaxGpuDepth = kMaxDepthLimit;  // the Frame stack, as deep as the CPU's
 // Stage 10: the uniform block's arrays (80 bytes an area light), and the per-invocation copy of
 // the spheres a scene with motion blur moves per camera sample (32 bytes a sphere).
 constexpr int kMaxGpuAreaLights = 64;

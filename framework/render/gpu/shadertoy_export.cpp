@@ -16,6 +16,20 @@
 namespace fs = std::filesystem;
 
 namespace rt {
+
+// What a published export calls its scene (shadertoy_export.h).
+std::string public_scene_name(const std::string& source) {
+    if (source.empty()) return "a scene";
+    const fs::path path = fs::path(source).lexically_normal();
+    fs::path from_stages;
+    for (const fs::path& part : path) {
+        if (part == "stages") from_stages.clear();
+        from_stages /= part;
+    }
+    const bool in_stages = *from_stages.begin() == "stages";
+    return in_stages ? from_stages.generic_string() : path.filename().string();
+}
+
 namespace {
 
 // The shortest literal that reads back as exactly `x` (std::to_chars round-trips).
@@ -91,7 +105,8 @@ const std::string kZero4 = "vec4(0.0)", kZeroInt4 = "ivec4(0)";
 // What trace.comp takes as uniforms, as constants.
 std::string uniform_constants(const PreparedScene& scene, RenderMode mode) {
     const Camera& c = scene.camera;
-    std::string s = "// The scene (" + (scene.source.empty() ? "built in code" : scene.source) +
+    std::string s = "// The scene (" +
+                    (scene.source.empty() ? "built in code" : public_scene_name(scene.source)) +
                     "), as trace.comp reads it from its storage buffers and uniforms.\n";
     s += "const Camera camera = Camera(" + literal(int(c.projection)) + ", " + v3(c.eye) + ", " +
          v3(c.u) + ", " + v3(c.v) + ", " + v3(c.w) + ", " + literal(float(c.vertical_fov_degrees)) +
@@ -338,7 +353,8 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
     if (!shader.error.empty()) throw GpuError(shader.error);
     const gpu::GpuScene packed = gpu::pack_scene(scene);
     ShadertoyExport out;
-    out.text = "// " + (scene.source.empty() ? std::string("A scene") : scene.source) +
+    out.text = "// " +
+               (scene.source.empty() ? std::string("A scene") : public_scene_name(scene.source)) +
                " in mode " + to_string(mode) +
                ", exported by `rt export-shadertoy` (stages/09-gpu/README.md#publish-on-shadertoy)"
                ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "

@@ -57,4 +57,9 @@ std::string wrap_shadertoy_export(const ShadertoyExport& shader);
 // The lines the wrapper puts before the export (to map a compiler's line numbers back to it).
 long shadertoy_wrapper_head_lines();
 
+// The scene as a published export (a Shadertoy shader, an rt export-web page) names it: from its
+// stages/ folder on ("stages/06-bvh/scenes/mesh_garden.json"), else its file name alone; never
+// the folders above, which are the lecturer's machine's. "a scene" when it has no file.
+std::string public_scene_name(const std::string& source);
+
 }  // namespace rt

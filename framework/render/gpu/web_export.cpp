@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/base64.h"
 #include "core/source_dir.h"
 #include "render/camera_ray.h"
 #include "render/gpu/gpu_render.h"
@@ -24,20 +25,6 @@ std::string read_page_file(const std::string& name) {
     if (!(in && text << in.rdbuf()))
         throw GpuError(display_path(file) + ": cannot read the page template");
     return text.str();
-}
-
-std::string base64(const std::string& bytes) {
-    static const char* const digits =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-        unsigned v = 0;
-        for (std::size_t k = 0; k < 3; ++k)
-            v = v << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
-    }
-    return out;
 }
 
 // The CPU render as a data URL, through the framework's PNG writer (a temporary file: it writes
@@ -243,7 +230,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
     auto v3 = [](const Vec3& v) {
         return nlohmann::json::array({float(v.x), float(v.y), float(v.z)});
     };
-    nlohmann::json data = {{"scene", scene.source.empty() ? "a scene" : display_path(scene.source)},
+    nlohmann::json data = {{"scene", public_scene_name(scene.source)},
                            {"mode", to_string(mode)},
                            {"width", scene.image.width},
                            {"height", scene.image.height},
