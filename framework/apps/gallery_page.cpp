@@ -126,9 +126,11 @@ int GalleryPage::failing() const {
 
 // One scene's card: its badge, the render, reference and difference, and the metric.
 void GalleryPage::write_scene(std::ostream& page, const Entry& e) {
-    std::string status = "none", badge = "no reference";
+    std::string status = "none";
+    std::string badge = "no reference";
     if (e.compared && !e.result.size_matches) {
-        status = "fail", badge = "wrong size";
+        status = "fail";
+        badge = "wrong size";
     } else if (e.compared) {
         const double p = e.result.failing_percent;
         status = e.result.passed ? "pass" : p < e.fail_percent ? "partial" : "fail";
@@ -168,9 +170,13 @@ void GalleryPage::write_scene(std::ostream& page, const Entry& e) {
 
 fs::path GalleryPage::write() const {
     std::ostringstream page;
-    int passed = 0, graded = 0;
-    for (const Entry& e : entries_)
-        if (e.graded) ++graded, passed += e.compared && e.result.passed;
+    int passed = 0;
+    int graded = 0;
+    for (const Entry& e : entries_) {
+        if (!e.graded) continue;
+        ++graded;
+        passed += e.compared && e.result.passed;
+    }
     page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          << "<title>rt gallery</title>\n"
          << kStyle << "\n</head>\n<body>\n"

@@ -190,7 +190,8 @@ void SceneSections::read_lens_and_shutter(const json& camera, Projection project
         if (!(open <= close))
             fail_value("/camera/shutter", "the shutter closes before it opens",
                        "give [open, close] with open <= close, e.g. [0, 1]");
-        s.shutter_open = open, s.shutter_close = close;
+        s.shutter_open = open;
+        s.shutter_close = close;
     }
 }
 
