@@ -93,9 +93,7 @@ void GalleryPage::add(const fs::path& stage, const fs::path& scene_file, const f
     e.name = scene_file.stem().string();
     const SceneSpec* graded = s.spec ? s.spec->scene(e.name) : nullptr;
     e.graded = graded != nullptr;
-    const ImageThresholds thresholds = graded   ? graded->thresholds
-                                       : s.spec ? s.spec->image_defaults
-                                                : ImageThresholds{};
+    const ImageThresholds thresholds = s.spec ? s.spec->thresholds_of(e.name) : ImageThresholds{};
     e.options = thresholds.compare_options();
     e.fail_percent = thresholds.fail_percent;
     e.image = relative_link(image_file, out_);

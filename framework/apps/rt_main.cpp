@@ -155,8 +155,7 @@ std::optional<ImageThresholds> graded_thresholds(const fs::path& reference, std:
     if (!fs::exists(stage_dir / "grading.json")) return std::nullopt;
     const StageSpec spec = load_stage_spec(source_dir(), stage_dir);
     stage = "stages/" + folder.filename().string() + "/grading.json";
-    const SceneSpec* scene = spec.scene(reference.stem().string());
-    return scene ? scene->thresholds : spec.image_defaults;
+    return spec.thresholds_of(reference.stem().string());
 }
 
 // The grader's metric on two image files: one line, exit 0 when they match. Without threshold

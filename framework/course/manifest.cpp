@@ -101,6 +101,11 @@ CompareOptions ImageThresholds::compare_options() const {
     return options;
 }
 
+ImageThresholds StageSpec::thresholds_of(const std::string& name) const {
+    const SceneSpec* graded = scene(name);
+    return graded ? graded->thresholds : image_defaults;
+}
+
 const SceneSpec* StageSpec::scene(const std::string& name) const {
     for (const SceneSpec& s : scenes)
         if (s.name == name) return &s;

@@ -67,6 +67,8 @@ struct StageSpec {
     std::string leaderboard_scene;
 
     const SceneSpec* scene(const std::string& name) const;  // nullptr when not graded
+    // The thresholds the grader compares scene `name` with: its own, or image_defaults.
+    ImageThresholds thresholds_of(const std::string& name) const;
 };
 
 // `stage_json` read without throwing: `problem` says what is wrong ("missing or unreadable",
