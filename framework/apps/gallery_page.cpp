@@ -184,8 +184,8 @@ fs::path GalleryPage::write() const {
         page << " (the other " << entries_.size() - graded << " of the " << entries_.size()
              << " scenes are not graded: no verdict)";
     page << ". Each scene: "
-            "your render, the reference, and the difference (black: equal, red: differs within "
-            "tolerance, <b>white: failing pixel</b>).</p>\n";
+            "your render, the reference, and the difference (black: equal; red: yours brighter, "
+            "blue: darker; dim within the tolerance, <b>full: a failing pixel</b>).</p>\n";
     // At a glance: the graded scenes that do not pass, each linked to its place below.
     bool first = true;
     for (const Entry& e : entries_) {

@@ -85,7 +85,8 @@ CompareResult compare_block_means(const Image8& actual, const Image8& reference,
 
 // Off both ways alike when the signed mean is under half the absolute one.
 std::string CompareResult::direction() const {
-    if (std::abs(mean_signed_difference) < 0.5 * mean_abs_difference || mean_abs_difference == 0)
+    if (mean_abs_difference == 0) return "the same as the reference";
+    if (std::abs(mean_signed_difference) < 0.5 * mean_abs_difference)
         return "as much brighter as darker";
     char words[96];
     std::snprintf(words, sizeof words, "%s than the reference by %.2f on average",

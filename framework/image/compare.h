@@ -42,7 +42,7 @@ struct CompareResult {
 
     std::string summary() const;  // one line for logs and test failures
     // Which way the image is off: "darker than the reference by 2.10 on average", "brighter
-    // ...", or "as much brighter as darker" (noise, a shifted edge).
+    // ...", "as much brighter as darker" (noise, a shifted edge), or "the same as the reference".
     std::string direction() const;
 };
 
