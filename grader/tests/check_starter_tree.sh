@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# End-to-end check of `rt-grade release` (CTest: Release.StarterTreeFailsStubs).
+# End-to-end check of `rt-grade release` (CTest: Release.StarterTreeLadder; step 1 alone:
+# Release.StarterTreeText).
 #
-#   check_starter_tree.sh BIN_DIR SRC_DIR
+#   check_starter_tree.sh BIN_DIR SRC_DIR [--text-only]
 #
 # 1. Releases SRC_DIR (every stage stubbed) into a temporary directory and checks the text:
 #    no solution markers left, stubs un-commented, student function signatures intact.
@@ -15,16 +16,21 @@
 #    stage N to PASS and those of stage N+1 to FAIL on their stubs (why that suffices: below).
 # 4. With every stage solved, the README's test command passes: finishing fails no test.
 #
+# --text-only stops after step 1 (seconds; CTest: Release.StarterTreeText, in every CI run). The
+# whole ladder is a rehearsal of a student's course (minutes; label rehearsal, outside CI's
+# default run: `ctest --preset rehearsal`).
+#
 # Environment: RT_RELEASE_CONFIGURE_ARGS: extra arguments for the starter tree's cmake
 # configure line; RT_CCACHE_DIR: the outer build's compiler cache, which the starter tree (laid
 # out as SOURCE/build like the outer tree) and its grading workspace then share
 # (cmake/compiler_cache.cmake): only the student files, stubbed here, compile afresh.
 set -u -o pipefail
 
-if [[ $# -ne 2 ]]; then
-    echo "usage: $0 BIN_DIR SRC_DIR" >&2
+if [[ $# -lt 2 || $# -gt 3 || ( $# -eq 3 && "$3" != "--text-only" ) ]]; then
+    echo "usage: $0 BIN_DIR SRC_DIR [--text-only]" >&2
     exit 2
 fi
+TEXT_ONLY="${3:-}"
 RT_GRADE="$1/rt-grade"
 SRC="$(cd "$2" && pwd)"
 JOBS="$(nproc 2>/dev/null || echo 2)"
@@ -105,6 +111,10 @@ for file in "${STUDENT_FILES[@]}"; do
 done
 [[ $signatures -gt 0 ]] || fail "found no function signatures in the student files"
 ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every region has an RT_NOT_IMPLEMENTED stub"
+if [[ -n "$TEXT_ONLY" ]]; then
+    echo "total $((SECONDS - start)) s (--text-only: the build and the ladder are Release.StarterTreeLadder's)"
+    exit 0
+fi
 
 # --- 2. Build the starter tree; its stage tests must fail on the stubs --------------------
 build_stage_tests() {

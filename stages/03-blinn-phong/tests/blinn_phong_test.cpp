@@ -104,6 +104,19 @@ TEST_F(BlinnPhong, LightBehindSurfaceGivesNothing) {
     expect_color_near(c, Color(0), "light below the surface (N.L < 0): no diffuse, no specular");
 }
 
+// The viewer below the surface (a back face seen from behind) with the light above: N.L = 0.6
+// but H = normalize(L + V) leans below, N.H = -1/sqrt(2). The clamp max(0, N.H) comes before the
+// power, so no highlight, whatever the exponent: with n_s = 2 an unclamped (-0.707)^2 adds 0.5.
+TEST_F(BlinnPhong, HalfVectorBelowSurfaceGivesNoHighlight) {
+    const Material m = material(Color(0.5f), Color(1), 2);
+    const Color c =
+        blinn_phong(m, Vec3(0, 0, 1), Vec3(-0.6f, 0, -0.8f), Vec3(0.8f, 0, 0.6f), Color(1));
+    expect_color_near(c, m.diffuse * 0.6f,
+                      "N.H < 0 (the viewer below the surface): the specular term is "
+                      "k_s max(0, N.H)^n_s = 0; clamp N.H at 0 before the power "
+                      "(stages/03-blinn-phong/README.md#diffuse-and-specular)");
+}
+
 // Never negative, never NaN: random unit vectors, including L = -V (a zero half vector).
 TEST_F(BlinnPhong, NeverNegativeOrNaN) {
     std::mt19937 rng(1234);

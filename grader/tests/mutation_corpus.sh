@@ -1,0 +1,137 @@
+#!/usr/bin/env bash
+# The mutation corpus (grader/tests/mutations/, docs/grading.md "Grading power"): realistic
+# mistakes a student makes, each of which must lose points with a message that names its cause,
+# and correct alternatives to the reference, each of which must keep full marks.
+#
+#   mutation_corpus.sh BIN_DIR SRC_DIR STAGE [NAME...]
+#
+# Grades every mutation of stage STAGE (grader/tests/mutations/NN/*.mutation), or only the NAMEs
+# given, in one `rt-grade batch` (each mutation is one submission: the stage's reference files
+# with the mutation's edits), then prints a line per mutation and the stage's score:
+#   mistakes caught: C of N; alternatives kept: K of M
+# and fails unless every mistake is caught and every alternative kept.
+#
+# A .mutation file: a comment saying what the student did, `key: value` lines, then one or more
+# find/replace pairs, each text a block of whole lines that must occur exactly once in the file:
+#   # What the student wrote and why it is wrong (or why it is right).
+#   kind: mistake                  mistake | alternative
+#   file: blinn_phong.cpp          a student file of the stage (stage.json)
+#   cause: specular|half vector    (mistakes) an extended regex, matched without case against
+#                                  the output of the tests that lost points
+#   find:
+#   <the reference's lines>
+#   replace:
+#   <the student's lines>
+set -uo pipefail
+if [[ $# -lt 3 ]]; then
+  echo "usage: $0 BIN_DIR SRC_DIR STAGE [NAME...]" >&2
+  exit 2
+fi
+bin=$1 src=$2 stage=$((10#$3))
+shift 3
+corpus=$(cd "$(dirname "$0")" && pwd)/mutations/$(printf '%02d' "$stage")
+stage_dir=$(cd "$src" && echo stages/$(printf '%02d' "$stage")-*)
+[[ -d $src/$stage_dir ]] || { echo "FAIL: no stage $stage under $src/stages"; exit 1; }
+[[ -d $corpus ]] || { echo "FAIL: no mutations for stage $stage in $corpus"; exit 1; }
+
+work=$(mktemp -d /tmp/rt-mutations-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+
+# field FILE KEY: the value of a `key: value` header line.
+field() { sed -n "s/^$2: *//p" "$1" | head -n 1; }
+
+# apply MUTATION TARGET: the find/replace pairs applied to TARGET. Each find text must occur
+# exactly once: a reference that changed under a mutation is reported, never silently skipped.
+apply() {
+  local mutation=$1 target=$2 pairs=$work/pairs
+  rm -rf "$pairs" && mkdir -p "$pairs"
+  awk -v dir="$pairs" '
+    /^find:[ \t]*$/ { n++; out = dir "/" n ".find"; printf "" > out; next }
+    /^replace:[ \t]*$/ { out = dir "/" n ".replace"; printf "" > out; next }
+    out != "" { print > out }' "$mutation"
+  local count=0 find replace text block rest
+  for find in "$pairs"/*.find; do
+    [[ -e $find ]] || break
+    replace=${find%.find}.replace
+    [[ -e $replace ]] || { echo "$mutation: a find: block without its replace: block"; return 1; }
+    text=$(cat "$target")
+    block=$(cat "$find")
+    if [[ $text != *"$block"* ]]; then
+      echo "$mutation: its find: block ($(head -n 1 "$find" | sed 's/^ *//')...) is not in" \
+           "$(basename "$target"): update the mutation to the reference"
+      return 1
+    fi
+    rest=${text#*"$block"}
+    if [[ $rest == *"$block"* ]]; then
+      echo "$mutation: its find: block occurs more than once in $(basename "$target"): add a line of context"
+      return 1
+    fi
+    printf '%s\n' "${text/"$block"/"$(cat "$replace")"}" > "$target"
+    count=$((count + 1))
+  done
+  [[ $count -gt 0 ]] || { echo "$mutation: no find:/replace: pair"; return 1; }
+}
+
+# The submissions: one folder per mutation, holding every student file of the stage.
+mapfile -t student_files < <(jq -r '.student_files[]' "$src/$stage_dir/stage.json")
+names=("$@")
+if [[ ${#names[@]} -eq 0 ]]; then
+  for m in "$corpus"/*.mutation; do names+=("$(basename "$m" .mutation)"); done
+fi
+declare -A kind cause
+for name in "${names[@]}"; do
+  m=$corpus/$name.mutation
+  [[ -f $m ]] || { echo "FAIL: no mutation $m"; exit 1; }
+  kind[$name]=$(field "$m" kind)
+  cause[$name]=$(field "$m" cause)
+  file=$(field "$m" file)
+  case ${kind[$name]} in
+    mistake) [[ -n ${cause[$name]} ]] || { echo "FAIL: $m: a mistake needs a cause: line"; exit 1; } ;;
+    alternative) ;;
+    *) echo "FAIL: $m: kind: must be mistake or alternative"; exit 1 ;;
+  esac
+  printf '%s\n' "${student_files[@]}" | grep -qx "$file" ||
+    { echo "FAIL: $m: file: $file is not a student file of $stage_dir (${student_files[*]})"; exit 1; }
+  dir=$work/submissions/$name/$stage_dir
+  mkdir -p "$dir"
+  for f in "${student_files[@]}"; do cp "$src/$stage_dir/$f" "$dir/$f"; done
+  apply "$m" "$dir/$file" || { echo "FAIL: the mutation does not apply"; exit 1; }
+  cmp -s "$src/$stage_dir/$file" "$dir/$file" && { echo "FAIL: $m changes nothing"; exit 1; }
+done
+
+start=$(date +%s)
+"$bin/rt-grade" batch "$work/submissions" --out "$work/grades" --stages "$stage" --jobs 2 \
+  > "$work/batch.log" 2>&1 || { cat "$work/batch.log"; echo "FAIL: rt-grade batch"; exit 1; }
+echo "graded ${#names[@]} mutations of stage $stage in $(( $(date +%s) - start )) s"
+
+mistakes=0 caught=0 alternatives=0 kept=0
+for name in "${names[@]}"; do
+  results=$work/grades/$name/results.json
+  [[ -s $results ]] || { echo "MISSED   $name: no results.json"; continue; }
+  score=$(jq '.score' "$results")
+  max=$(jq '[.tests[].max_score] | add' "$results")
+  if [[ ${kind[$name]} == alternative ]]; then
+    alternatives=$((alternatives + 1))
+    if [[ $score == "$max" ]]; then
+      kept=$((kept + 1))
+      echo "kept     $name: $score of $max"
+    else
+      echo "LOST     $name (a correct alternative): $score of $max; the tests that took points:"
+      jq -r '.tests[] | select(.score < .max_score) | "         \(.name): \(.output | split("\n")[0])"' "$results"
+    fi
+    continue
+  fi
+  mistakes=$((mistakes + 1))
+  failing=$(jq -r '.tests[] | select(.score < .max_score) | .name + "\n" + .output' "$results")
+  if [[ $score == "$max" ]]; then
+    echo "MISSED   $name: full marks ($max)"
+  elif ! grep -qiE -- "${cause[$name]}" <<< "$failing"; then
+    echo "UNNAMED  $name: $score of $max, but no failing test's message matches /${cause[$name]}/; they say:"
+    jq -r '.tests[] | select(.score < .max_score) | "         \(.name): \(.output | split("\n")[0])"' "$results" | head -n 8
+  else
+    caught=$((caught + 1))
+    echo "caught   $name: $score of $max ($(jq '[.tests[] | select(.score < .max_score)] | length' "$results") tests)"
+  fi
+done
+echo "stage $stage: mistakes caught: $caught of $mistakes; alternatives kept: $kept of $alternatives"
+[[ $caught -eq $mistakes && $kept -eq $alternatives ]]
