@@ -1,11 +1,34 @@
-# Every stub names a handout section: RT_NOT_IMPLEMENTED("stages/NN-x/README.md#anchor").
-# Checks that each such file exists and has a heading whose GitHub anchor is <anchor>, so the
-# message a student reads always leads somewhere. A starter tree (RELEASE.txt) with every stub
-# written passes: there is nothing left to check.
+# Every stub names a handout section: RT_NOT_IMPLEMENTED("stages/NN-x/README.md#anchor"); every
+# stage test suite too: RT_TEST_SUITE(Name, "anchor") in stages/NN-x/tests/ (or hidden/) names
+# stages/NN-x/README.md#anchor. Checks that each such file exists and has a heading whose GitHub
+# anchor is <anchor>, so the message a student reads always leads somewhere. A starter tree
+# (RELEASE.txt) with every stub written passes: there is nothing left to check.
 # Usage: cmake -DSOURCE=<source tree> -P check_handout_links.cmake
 file(GLOB_RECURSE sources ${SOURCE}/stages/*.cpp ${SOURCE}/stages/*.h ${SOURCE}/stages/*.glsl)
 set(checked 0)
+set(suites 0)
 set(problems "")
+
+# check_link(SOURCE HANDOUT ANCHOR): HANDOUT exists under SOURCE and has a heading for ANCHOR.
+function(check_link source handout anchor)
+  if(NOT EXISTS ${SOURCE}/${handout})
+    set(problems "${problems}\n  ${source}: ${handout} does not exist" PARENT_SCOPE)
+    return()
+  endif()
+  file(STRINGS ${SOURCE}/${handout} headings REGEX "^#+ ")
+  foreach(heading ${headings})
+    # GitHub's anchor: lower case, punctuation other than '-' and '_' dropped, spaces to '-'.
+    string(REGEX REPLACE "^#+ +" "" text "${heading}")
+    string(TOLOWER "${text}" text)
+    string(REGEX REPLACE "[^a-z0-9 _-]" "" text "${text}")
+    string(REPLACE " " "-" text "${text}")
+    if(text STREQUAL anchor)
+      return()
+    endif()
+  endforeach()
+  set(problems "${problems}\n  ${source}: no heading for #${anchor} in ${handout}" PARENT_SCOPE)
+endfunction()
+
 foreach(source ${sources})
   file(STRINGS ${source} lines REGEX "RT_NOT_IMPLEMENTED\\(\"")
   foreach(line ${lines})
@@ -13,28 +36,22 @@ foreach(source ${sources})
       string(APPEND problems "\n  ${source}: stub without a handout#section: ${line}")
       continue()
     endif()
-    set(handout ${CMAKE_MATCH_1})
-    set(anchor ${CMAKE_MATCH_2})
-    if(NOT EXISTS ${SOURCE}/${handout})
-      string(APPEND problems "\n  ${source}: ${handout} does not exist")
+    check_link(${source} ${CMAKE_MATCH_1} ${CMAKE_MATCH_2})
+    math(EXPR checked "${checked} + 1")
+  endforeach()
+  # A test suite's section is in its stage's handout: stages/NN-x/{tests,hidden}/FILE.
+  if(NOT source MATCHES "^${SOURCE}/(stages/[0-9][0-9]-[^/]+)/(tests|hidden)/")
+    continue()
+  endif()
+  set(handout ${CMAKE_MATCH_1}/README.md)
+  file(STRINGS ${source} lines REGEX "^RT_TEST_SUITE\\(")
+  foreach(line ${lines})
+    if(NOT line MATCHES "^RT_TEST_SUITE\\([A-Za-z0-9_]+, \"([^\"#]+)\"\\);")
+      string(APPEND problems "\n  ${source}: a suite without its handout section: ${line}")
       continue()
     endif()
-    file(STRINGS ${SOURCE}/${handout} headings REGEX "^#+ ")
-    set(found FALSE)
-    foreach(heading ${headings})
-      # GitHub's anchor: lower case, punctuation other than '-' and '_' dropped, spaces to '-'.
-      string(REGEX REPLACE "^#+ +" "" text "${heading}")
-      string(TOLOWER "${text}" text)
-      string(REGEX REPLACE "[^a-z0-9 _-]" "" text "${text}")
-      string(REPLACE " " "-" text "${text}")
-      if(text STREQUAL anchor)
-        set(found TRUE)
-      endif()
-    endforeach()
-    if(NOT found)
-      string(APPEND problems "\n  ${source}: no heading for #${anchor} in ${handout}")
-    endif()
-    math(EXPR checked "${checked} + 1")
+    check_link(${source} ${handout} ${CMAKE_MATCH_1})
+    math(EXPR suites "${suites} + 1")
   endforeach()
 endforeach()
 if(problems)
@@ -47,4 +64,4 @@ if(checked EQUAL 0 AND EXISTS ${SOURCE}/RELEASE.txt)
 elseif(checked EQUAL 0)
   message(FATAL_ERROR "no RT_NOT_IMPLEMENTED stubs found under ${SOURCE}/stages")
 endif()
-message(STATUS "${checked} stub messages point at existing handout sections")
+message(STATUS "${checked} stub messages and ${suites} test suites point at existing handout sections")

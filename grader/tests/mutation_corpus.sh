@@ -35,7 +35,7 @@ stage_dir=$(cd "$src" && echo stages/$(printf '%02d' "$stage")-*)
 [[ -d $corpus ]] || { echo "FAIL: no mutations for stage $stage in $corpus"; exit 1; }
 
 work=$(mktemp -d /tmp/rt-mutations-XXXXXX)
-trap 'rm -rf "$work"' EXIT
+trap '[[ -n ${RT_KEEP_MUTATIONS:-} ]] || rm -rf "$work"' EXIT
 
 # field FILE KEY: the value of a `key: value` header line.
 field() { sed -n "s/^$2: *//p" "$1" | head -n 1; }
@@ -122,7 +122,10 @@ for name in "${names[@]}"; do
     continue
   fi
   mistakes=$((mistakes + 1))
-  failing=$(jq -r '.tests[] | select(.score < .max_score) | .name + "\n" + .output' "$results")
+  # The failing tests' names and messages, without the handout links every failure carries
+  # (a section's name, such as #diffuse-and-specular, is not a message naming the cause).
+  failing=$(jq -r '.tests[] | select(.score < .max_score) | .name + "\n" + .output' "$results" |
+            grep -vE 'Read the handout: |The handout on what this test checks: ')
   if [[ $score == "$max" ]]; then
     echo "MISSED   $name: full marks ($max)"
   elif ! grep -qiE -- "${cause[$name]}" <<< "$failing"; then

@@ -29,7 +29,7 @@ using rt::testing::expect_vec_near;
 constexpr const char* kFlipHint =
     " (y grows downwards: stages/01-camera-rays/README.md#from-a-pixel-to-the-image-plane)";
 
-RT_TEST_SUITE(Perspective);
+RT_TEST_SUITE(Perspective, "perspective-rays");
 
 // The centre of the image (W/2, H/2) looks straight ahead along -w.
 TEST_F(Perspective, CenterLooksAlongViewDirection) {
@@ -122,7 +122,7 @@ TEST_F(Perspective, FollowsCameraFrame) {
                     "camera.u = +z");
 }
 
-RT_TEST_SUITE(Orthographic);
+RT_TEST_SUITE(Orthographic, "orthographic-rays");
 
 // All orthographic rays are parallel to the view direction.
 TEST_F(Orthographic, DirectionsAreTheViewDirection) {
@@ -168,7 +168,7 @@ TEST_F(Orthographic, IgnoresFieldOfView) {
                     "ignores the field of view)");
 }
 
-RT_TEST_SUITE(CameraRay);
+RT_TEST_SUITE(CameraRay, "from-a-pixel-to-the-image-plane");
 
 // The framework's camera_ray dispatches on the projection to your two functions.
 TEST_F(CameraRay, DispatchesOnProjection) {

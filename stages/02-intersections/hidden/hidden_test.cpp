@@ -5,7 +5,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(HiddenSphere);
+RT_TEST_SUITE(HiddenSphere, "ray-sphere");
 
 // A grazing ray far from the origin: the stable quadratic still finds the near root.
 TEST_F(HiddenSphere, FarAwayHit) {
@@ -16,7 +16,7 @@ TEST_F(HiddenSphere, FarAwayHit) {
     expect_vec_near(hit.normal, Vec3(0, 0, 1), "normal of the far-away hit", Real(1e-3));
 }
 
-RT_TEST_SUITE(HiddenPlane);
+RT_TEST_SUITE(HiddenPlane, "ray-plane");
 
 // A ray starting on the plane does not report it at t = 0 (open interval).
 TEST_F(HiddenPlane, OriginOnPlaneMisses) {

@@ -4,7 +4,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(Box);
+RT_TEST_SUITE(Box, "ray-box-slabs");
 
 const rt::Box kUnit{Vec3(-1), Vec3(1), 0};
 

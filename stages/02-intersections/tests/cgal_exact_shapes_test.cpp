@@ -79,7 +79,7 @@ struct SphereChecker {
     }
 };
 
-RT_TEST_SUITE(SphereExact);
+RT_TEST_SUITE(SphereExact, "a-stable-quadratic");
 
 TEST_F(SphereExact, RandomRaysAgreeWithExactRoot) {
     // Spheres of radius 0.1 .. 10 around random centres, origins in a box 30 wide. Rays whose
@@ -225,7 +225,7 @@ TEST_F(SphereExact, OriginOnTheSphere) {
 // ---------------------------------------------------------------------------------------------
 // Boxes and planes.
 
-RT_TEST_SUITE(BoxExact);
+RT_TEST_SUITE(BoxExact, "ray-box-slabs");
 
 TEST_F(BoxExact, SlabsAgreeWithCgal) {
     // Hit/miss against do_intersect(Ray_3, Iso_cuboid_3) (through exact slabs, checked to agree).
@@ -296,7 +296,7 @@ TEST_F(BoxExact, SlabsAgreeWithCgal) {
                          << "with exact arithmetic (more than 600 expected); " << kReadBox;
 }
 
-RT_TEST_SUITE(PlaneExact);
+RT_TEST_SUITE(PlaneExact, "ray-plane");
 
 TEST_F(PlaneExact, RandomRaysMatchExactT) {
     // t = n.(p - o) / n.d. Rounding p - o costs eps |p - o| per component, and the two dot
@@ -373,7 +373,7 @@ TEST_F(PlaneExact, ParallelInPlaneAndOnPlaneOrigins) {
 // ---------------------------------------------------------------------------------------------
 // Zero, NaN and infinite directions: every function reports a miss and leaves `hit` alone.
 
-RT_TEST_SUITE(DegenerateRays);
+RT_TEST_SUITE(DegenerateRays, "what-you-work-with");
 
 TEST_F(DegenerateRays, ZeroNanInfDirectionsMissEverything) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN(), inf = kInfinity;

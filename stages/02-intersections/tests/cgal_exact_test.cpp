@@ -113,7 +113,7 @@ struct TriangleChecker {
     }
 };
 
-RT_TEST_SUITE(TriangleExact);
+RT_TEST_SUITE(TriangleExact, "ray-triangle-cramers-rule");
 
 TEST_F(TriangleExact, RandomRaysAgreeWithCgal) {
     // Random triangles in [-1, 1]^3 and origins in [-4, 4]^3. The hit/miss bands and t bounds
@@ -301,7 +301,7 @@ LeakCount shoot_edges_and_vertices(const Mesh& mesh, const Vec3& center, Real la
     return count;
 }
 
-RT_TEST_SUITE(ClosedMesh);
+RT_TEST_SUITE(ClosedMesh, "ray-triangle-cramers-rule");
 
 // A precondition of the leak test, checked inside it (it exercises no student code, so on its
 // own it would pass in a starter tree): the generated meshes are closed and face outwards.

@@ -4,7 +4,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(Nearest);
+RT_TEST_SUITE(Nearest, "nearest-hit");
 
 // Three primitives along -z, added in an order that is not the depth order.
 Scene row_scene() {

@@ -4,7 +4,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(Plane);
+RT_TEST_SUITE(Plane, "ray-plane");
 
 TEST_F(Plane, HitFromAbove) {
     Hit hit;

@@ -5,7 +5,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(Sphere);
+RT_TEST_SUITE(Sphere, "ray-sphere");
 
 // A ray from z = 5 towards the origin hits the unit sphere at z = 1, t = 4, normal +z.
 TEST_F(Sphere, HitFromOutside) {

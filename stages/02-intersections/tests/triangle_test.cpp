@@ -7,7 +7,7 @@
 namespace rt::stage02 {
 namespace {
 
-RT_TEST_SUITE(Triangle);
+RT_TEST_SUITE(Triangle, "ray-triangle-cramers-rule");
 
 const Vec3 A(0, 0, 0), B(1, 0, 0), C(0, 1, 0);  // counter-clockwise seen from +z
 

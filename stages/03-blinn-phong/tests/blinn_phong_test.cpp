@@ -15,9 +15,9 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(Lights);
-RT_TEST_SUITE(BlinnPhong);
-RT_TEST_SUITE(DirectLight);
+RT_TEST_SUITE(Lights, "lights");
+RT_TEST_SUITE(BlinnPhong, "diffuse-and-specular");
+RT_TEST_SUITE(DirectLight, "summing-the-terms");
 
 constexpr float kTol = 1e-5f;
 

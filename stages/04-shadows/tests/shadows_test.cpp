@@ -15,9 +15,9 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(ShadowRayContract);
-RT_TEST_SUITE(Acne);
-RT_TEST_SUITE(Transmittance);
+RT_TEST_SUITE(ShadowRayContract, "shadow-rays");
+RT_TEST_SUITE(Acne, "robust-ray-origins");
+RT_TEST_SUITE(Transmittance, "coloured-shadows-through-glass");
 
 Light point_light(Vec3 position) {
     Light l;

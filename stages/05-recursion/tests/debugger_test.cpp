@@ -11,7 +11,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(Debugger);
+RT_TEST_SUITE(Debugger, "the-ray-tree-debugger");
 
 // A pixel on the glass sphere of whitted.json (found with `rt render --debug-pixel`).
 constexpr int kX = 126, kY = 62;

@@ -15,11 +15,11 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(Reflect);
-RT_TEST_SUITE(Refract);
-RT_TEST_SUITE(Fresnel);
-RT_TEST_SUITE(Secondary);
-RT_TEST_SUITE(Recursion);
+RT_TEST_SUITE(Reflect, "mirror-reflection");
+RT_TEST_SUITE(Refract, "refraction-snells-law");
+RT_TEST_SUITE(Fresnel, "fresnel-schlicks-approximation");
+RT_TEST_SUITE(Secondary, "secondary-rays-and-their-weights");
+RT_TEST_SUITE(Recursion, "secondary-rays-and-their-weights");
 
 constexpr Real kTol = Real(1e-5);
 

@@ -12,8 +12,8 @@ namespace {
 using bvh_test::Random;
 using bvh_test::scene_from_mesh;
 
-RT_TEST_SUITE(SahSplitCost);
-RT_TEST_SUITE(BvhBuild);
+RT_TEST_SUITE(SahSplitCost, "the-surface-area-heuristic");
+RT_TEST_SUITE(BvhBuild, "building-the-tree");
 
 BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
     BvhPrimitive p;

@@ -12,7 +12,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(BvhImage);
+RT_TEST_SUITE(BvhImage, "checking-your-tree");
 
 // The heat map depends on the exact shape of the tree, so it is not compared with a reference
 // image (a valid tree built a little differently would fail). Instead: rays that miss the root

@@ -16,10 +16,10 @@ namespace {
 using bvh_test::Random;
 using bvh_test::scene_from_mesh;
 
-RT_TEST_SUITE(Slab);
-RT_TEST_SUITE(NearestHit);
-RT_TEST_SUITE(AnyHit);
-RT_TEST_SUITE(Visits);
+RT_TEST_SUITE(Slab, "ray-box-slab-test");
+RT_TEST_SUITE(NearestHit, "nearest-hit-traversal");
+RT_TEST_SUITE(AnyHit, "any-hit-queries");
+RT_TEST_SUITE(Visits, "checking-your-tree");
 
 BvhNode unit_node() {
     return BvhNode{Vec3f(-1), 0, Vec3f(1), 1};

@@ -10,10 +10,10 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(ColorSpace);
-RT_TEST_SUITE(Wrap);
-RT_TEST_SUITE(Nearest);
-RT_TEST_SUITE(Bilinear);
+RT_TEST_SUITE(ColorSpace, "colour-spaces");
+RT_TEST_SUITE(Wrap, "wrap-modes");
+RT_TEST_SUITE(Nearest, "nearest-neighbour");
+RT_TEST_SUITE(Bilinear, "bilinear-filtering");
 
 void expect_color(const Color& got, const Color& want, const char* what, float tol = 1e-5f) {
     EXPECT_NEAR(got.r, want.r, tol) << what << " (red)";

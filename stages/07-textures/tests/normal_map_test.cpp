@@ -11,7 +11,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(NormalMap);
+RT_TEST_SUITE(NormalMap, "normal-mapping");
 
 using rt::testing::expect_vec_near;
 

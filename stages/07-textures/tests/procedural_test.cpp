@@ -9,9 +9,9 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(Checker);
-RT_TEST_SUITE(Noise);
-RT_TEST_SUITE(Marble);
+RT_TEST_SUITE(Checker, "checkerboards");
+RT_TEST_SUITE(Noise, "gradient-noise");
+RT_TEST_SUITE(Marble, "marble");
 
 const Color kA(1, 0, 0), kB(0, 0, 1);
 

@@ -12,10 +12,10 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(SphereTexcoord);
-RT_TEST_SUITE(PlaneTexcoord);
-RT_TEST_SUITE(BoxTexcoord);
-RT_TEST_SUITE(TriangleTexcoord);
+RT_TEST_SUITE(SphereTexcoord, "spheres");
+RT_TEST_SUITE(PlaneTexcoord, "planes");
+RT_TEST_SUITE(BoxTexcoord, "boxes");
+RT_TEST_SUITE(TriangleTexcoord, "triangles");
 
 constexpr Real kTol = Real(1e-5);
 

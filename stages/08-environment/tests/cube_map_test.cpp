@@ -9,7 +9,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(CubeMap);
+RT_TEST_SUITE(CubeMap, "2-cube-map-faces");
 
 constexpr Real kFaceTol = 1e-6f;
 const char* const kNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};

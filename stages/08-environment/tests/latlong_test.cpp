@@ -10,7 +10,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(LatLong);
+RT_TEST_SUITE(LatLong, "1-lat-long-coordinates");
 
 constexpr Real kPiUv = std::numbers::pi_v<Real>;
 constexpr Real kUvTol = 1e-5f;

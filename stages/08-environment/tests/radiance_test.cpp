@@ -16,7 +16,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(Radiance);
+RT_TEST_SUITE(Radiance, "3-looking-up-the-environment");
 
 constexpr Real kPi = std::numbers::pi_v<Real>;
 

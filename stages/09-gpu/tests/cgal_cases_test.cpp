@@ -293,7 +293,7 @@ CgalBatch cgal_batch(const CgalFamilies& f) {
     return batch;
 }
 
-RT_TEST_SUITE(GpuExactCases);
+RT_TEST_SUITE(GpuExactCases, "intersections");
 
 // Only where Real is float: the GPU computes in float, and a double build's exact answers are
 // for its double inputs (a test that would only skip there is not compiled).

@@ -127,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(Ungraded, UberConformance,
                          case_name);
 
 // The two headless contexts run the student's shaders to the same image.
-RT_TEST_SUITE(GpuContexts);
+RT_TEST_SUITE(GpuContexts, "what-the-tests-check");
 
 TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
     const PreparedScene scene = prepare_scene(

@@ -116,7 +116,7 @@ std::vector<GpuAnswer> answers_on_gpu(const std::vector<RandomCase>& cases) {
     return answers;
 }
 
-RT_TEST_SUITE(GpuIntersect);
+RT_TEST_SUITE(GpuIntersect, "intersections");
 
 TEST_F(GpuIntersect, AnswersAsStage02Does) {
     const std::vector<RandomCase> cases = random_cases();

@@ -33,7 +33,7 @@ Medium fog_slab(Real density) {  // fog in the slab 1 <= z <= 3, unbounded acros
     return m;
 }
 
-RT_TEST_SUITE(Fog);
+RT_TEST_SUITE(Fog, "optional-fog");
 
 TEST_F(Fog, FreeFlightDistancesFollowTheirDensity) {
     // Bins of equal probability under sigma exp(-sigma s): the cumulative distribution

@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuSampled, ::testing::ValuesIn(gpu_sampling_sc
                              return info.param;
                          });
 
-RT_TEST_SUITE(GpuSampledRuns);
+RT_TEST_SUITE(GpuSampledRuns, "optional-the-gpu");
 
 // The same image in every run, for any number of samples per dispatch (each sample's numbers
 // depend on its pixel and index only) and on either headless context; no stub reached.

@@ -49,7 +49,7 @@ double corner_form_factor(double a, double b, double h) {
            (2 * kPi);
 }
 
-RT_TEST_SUITE(AreaSampling);
+RT_TEST_SUITE(AreaSampling, "4-sampling-area-lights");
 
 TEST_F(AreaSampling, RectangleSamplesFollowTheirPdf) {
     const AreaLight light = rectangle(Vec3(-1, 2, -0.5f), Vec3(2, 0, 0), Vec3(0, 0, 1));
@@ -155,7 +155,7 @@ std::vector<double> estimates(const PreparedScene& scene, const SurfacePoint& at
     return values;
 }
 
-RT_TEST_SUITE(SoftShadows);
+RT_TEST_SUITE(SoftShadows, "5-soft-shadows");
 
 TEST_F(SoftShadows, RectangleIrradianceMatchesTheFormFactor) {
     PreparedScene empty;
@@ -203,7 +203,7 @@ TEST_F(SoftShadows, AnOccluderOverHalfTheLightHalvesIt) {
                        2 * corner_form_factor(1, 0.5, 2), "half the light blocked");
 }
 
-RT_TEST_SUITE(Glossy);
+RT_TEST_SUITE(Glossy, "6-glossy-reflection");
 
 // Glossy directions against normalize(mirror + fuzz s) with s from a reference uniform sphere:
 // both binned by the angle to the mirror direction and the angle around it.
@@ -240,7 +240,7 @@ TEST_F(Glossy, DirectionsSpreadAsAFuzzSphere) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(d[c], mirror[c], 1e-6) << "fuzz 0 is a mirror";
 }
 
-RT_TEST_SUITE(Indirect);
+RT_TEST_SUITE(Indirect, "7-ambient-occlusion-and-indirect-light");
 
 TEST_F(Indirect, AmbientOcclusionUnderACeiling) {
     // A ceiling at height 1; blockers count up to distance 2: the directions with cos > 1/2

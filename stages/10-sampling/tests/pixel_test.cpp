@@ -14,7 +14,7 @@
 namespace rt {
 namespace {
 
-RT_TEST_SUITE(PixelEstimates);
+RT_TEST_SUITE(PixelEstimates, "1-pixel-samples-and-filters");
 
 std::vector<double> pixel_samples(const PreparedScene& scene, int x, int y, int count,
                                   int channel = 0) {

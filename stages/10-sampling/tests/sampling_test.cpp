@@ -18,7 +18,7 @@ namespace {
 using stats::kPi;
 using stats::kSamples;
 
-RT_TEST_SUITE(Warps);
+RT_TEST_SUITE(Warps, "2-disk-hemisphere-and-sphere");
 
 // Bins of equal probability for a density that is uniform in (a, phi) with a in [0, 1] and
 // phi the angle of (x, y): a = r^2 for the disk, 1 - z^2 for the cosine hemisphere, (1 - z) / 2
@@ -120,7 +120,7 @@ TEST_F(Warps, TentFilterFollowsOneMinusAbsX) {
         "tent_filter_offset");
 }
 
-RT_TEST_SUITE(PixelSamples);
+RT_TEST_SUITE(PixelSamples, "1-pixel-samples-and-filters");
 
 TEST_F(PixelSamples, EachSampleOfASquareCountHasItsOwnCell) {
     stats::Uniform random(5);
@@ -170,7 +170,7 @@ TEST_F(PixelSamples, JitterIsUniformWithinEachCell) {
     }
 }
 
-RT_TEST_SUITE(Lens);
+RT_TEST_SUITE(Lens, "3-depth-of-field-and-motion-blur");
 
 Camera test_camera() {
     return make_look_at_camera(Projection::Perspective, Vec3(0, 1, 5), Vec3(0, 0, 0), Vec3(0, 1, 0),

@@ -51,7 +51,7 @@ auto pdf_on_grid(Arguments arguments) {
                                   [&](int k) { return arguments(grid[std::size_t(k)]); });
 }
 
-RT_TEST_SUITE(GgxDistribution);
+RT_TEST_SUITE(GgxDistribution, "1-the-ggx-microfacet-distribution");
 
 TEST_F(GgxDistribution, ProjectedAreaIntegratesToOne) {
     // The integral of D(h) cos theta_h over the hemisphere: the microfacets' projected area is
@@ -143,7 +143,7 @@ void check_sampling(const Material& m, const Vec3& wo, std::uint64_t seed) {
     stats::expect_chi_square(bins.observed, expected, what);
 }
 
-RT_TEST_SUITE(BsdfSampling);
+RT_TEST_SUITE(BsdfSampling, "2-sampling-the-ggx-lobe");
 
 TEST_F(BsdfSampling, DiffuseSamplesFollowTheirPdf) {
     check_sampling(diffuse(Color(0.7f)), direction(0.5), 31);
@@ -174,7 +174,7 @@ TEST_F(BsdfSampling, PdfIntegratesToOneForRoughLobes) {
                                  << "wrong measure? Divide the half vector's density by 4 |wo.h|";
 }
 
-RT_TEST_SUITE(GgxEnergy);
+RT_TEST_SUITE(GgxEnergy, "3-the-bsdf-of-a-material");
 
 // The directional albedo, the integral of f cos over wi, as the mean of sample weights.
 stats::Estimate albedo(const Material& m, const Vec3& wo, std::uint64_t seed) {
@@ -218,7 +218,7 @@ TEST_F(GgxEnergy, SmoothWhiteLobeKeepsNearlyAll) {
         }
 }
 
-RT_TEST_SUITE(DeltaLobes);
+RT_TEST_SUITE(DeltaLobes, "3-the-bsdf-of-a-material");
 
 TEST_F(DeltaLobes, MirrorReflectsAboutTheNormal) {
     Material mirror;

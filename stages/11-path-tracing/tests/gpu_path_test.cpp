@@ -69,7 +69,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuPath, ::testing::Values("cornell_box", "veac
                              return info.param;
                          });
 
-RT_TEST_SUITE(GpuPathRuns);
+RT_TEST_SUITE(GpuPathRuns, "optional-the-gpu");
 
 // The same image in every run, for any number of samples per dispatch (each sample's numbers
 // depend on its pixel and index only) and on either headless context; no stub reached.

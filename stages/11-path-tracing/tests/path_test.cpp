@@ -17,7 +17,7 @@ namespace {
 
 using stats::kSamples;
 
-RT_TEST_SUITE(Mis);
+RT_TEST_SUITE(Mis, "4-multiple-importance-sampling");
 
 TEST_F(Mis, WeightsSumToOne) {
     stats::Uniform random(71);
@@ -64,7 +64,7 @@ std::vector<double> radiance(const PreparedScene& scene, const Vec3& origin, std
     return values;
 }
 
-RT_TEST_SUITE(Furnace);
+RT_TEST_SUITE(Furnace, "6-the-path-tracer");
 
 TEST_F(Furnace, EmittingWhiteSphereMatchesTheGeometricSeries) {
     // Every wall point emits Le and reflects the fraction a of what it receives, the same
@@ -105,7 +105,7 @@ TEST_F(Furnace, SphereLightInsideAWhiteSphereMatchesTheClosedForm) {
                                 "without the division?");
 }
 
-RT_TEST_SUITE(DirectLight);
+RT_TEST_SUITE(DirectLight, "5-next-event-estimation");
 
 TEST_F(DirectLight, AgreesWithStage10AreaLightEstimate) {
     // A white Lambertian floor and a rectangle light off to the side, tilted: at the point seen
