@@ -4,6 +4,7 @@
 #   # expect-differs A B MIN       DIR/A.png and DIR/B.png differ in at least MIN pixels
 #   # expect-same A B              DIR/A.png and DIR/B.png are the same image (tolerance 0)
 #   # expect-files NAME...         the session wrote DIR/NAME.png
+#   # expect-output TEXT           the session printed TEXT
 #   # expect-scene FILE NAME       `rt render DIR/FILE` (a scene the session wrote) matches
 #                                  DIR/NAME.png under the grader's metric
 #   cmake -DRT=<rt> -DSCENE=<scene.json> -DSCRIPT=<session.txt> -DOUT=<dir> -P check_view.cmake
@@ -72,6 +73,11 @@ foreach(line ${lines})
       message(FATAL_ERROR "${file} does not render the view ${name} shows: ${cmp}${err}")
     endif()
     message(STATUS "${file}: ${cmp}")
+  elseif(line MATCHES "^# expect-output (.*)$")
+    string(FIND "${out}" "${CMAKE_MATCH_1}" at)
+    if(at LESS 0)
+      message(FATAL_ERROR "the session did not print \"${CMAKE_MATCH_1}\"")
+    endif()
   elseif(line MATCHES "^# expect-files (.*)$")
     separate_arguments(names UNIX_COMMAND "${CMAKE_MATCH_1}")
     foreach(name ${names})

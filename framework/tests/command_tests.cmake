@@ -192,13 +192,14 @@ endif()
 # The viewer under Xvfb (without xvfb-run, saying why: rt_skip_pattern): screenshots in
 # build/test-output/view/.
 if(TARGET rt_view AND RT_INSTRUCTOR)
-  foreach(session "ScriptedSession;05-recursion/scenes/whitted.json;session"
-                  "TextureFilterAndBvh;07-textures/scenes/textured_whitted.json;textures_session")
+  foreach(session "ScriptedSession;stages/05-recursion/scenes/whitted.json;session"
+                  "TextureFilterAndBvh;stages/07-textures/scenes/textured_whitted.json;textures_session"
+                  "NonFinitePixels;framework/tests/view/non_finite.json;non_finite_session")
     list(GET session 0 name)
     list(GET session 1 scene)
     list(GET session 2 script)
     add_test(NAME View.${name}
-      COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${PROJECT_SOURCE_DIR}/stages/${scene}
+      COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${PROJECT_SOURCE_DIR}/${scene}
               -DSCRIPT=${CMAKE_CURRENT_SOURCE_DIR}/tests/view/${script}.txt
               -DOUT=${PROJECT_BINARY_DIR}/test-output/view/${script}
               -P ${PROJECT_SOURCE_DIR}/cmake/check_view.cmake)

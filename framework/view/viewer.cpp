@@ -154,6 +154,7 @@ void Viewer::update() {
     if (std::optional<Frame> frame = renderer_.take()) {
         if (frame->generation == generation_) {
             frame_ = std::move(frame);
+            report_non_finite_pixels();
             if (frame_->refined()) {
                 refine_seconds_ = seconds_since(restarted_at_);
                 if (scripted())  // the session's log: what a person would read off the HUD
@@ -175,6 +176,15 @@ void Viewer::update() {
     }
     run_script();
     if (display_dirty_) rebuild_display();
+}
+
+// NaN and infinite pixels are painted magenta, as `rt render` paints them, before the frame is
+// shown, compared or saved; the status line says how many and how to debug the first.
+void Viewer::report_non_finite_pixels() {
+    const NonFinitePixels found = mark_non_finite_pixels(frame_->image);
+    non_finite_ = found.count == 0 ? "" : found.describe(scene_file_);
+    if (!non_finite_.empty() && scripted() && frame_->last)
+        std::printf("%s\n", non_finite_.c_str());
 }
 
 void Viewer::rebuild_display() {

@@ -77,12 +77,16 @@ class Viewer {
     bool has_reference() const { return reference_.has_value(); }
     const std::optional<CompareResult>& comparison() const { return comparison_; }
     const std::string& status() const { return status_; }
+    // The current frame's NaN and infinite pixels (shown magenta): how many, the first, how to
+    // debug it; empty when there are none.
+    const std::string& non_finite() const { return non_finite_; }
     bool scripted() const { return !script_.empty(); }
 
   private:
     void run_script();
     bool run_command(const ScriptCommand& c);  // false: it waits (run again next frame)
     void queue_mouse(const ScriptCommand& c);  // mouse-click, mouse-drag, mouse-wheel
+    void report_non_finite_pixels();
     void rebuild_display();
     void save_png(const Image8& image, const std::string& name);
     void fail(const ScriptCommand& c, const std::string& message);
@@ -109,6 +113,7 @@ class Viewer {
     std::optional<std::filesystem::path> screenshot_request_;
     int screenshot_count_ = 0;
     std::string status_;
+    std::string non_finite_;
 
     std::vector<SyntheticMouse> mouse_;  // frames still to play, last first
     std::vector<ScriptCommand> script_;

@@ -201,6 +201,11 @@ void draw_panel(Viewer& viewer, float width, float height) {
     ImGui::Separator();
     ImGui::TextWrapped("Drag: orbit. Right drag: pan. Wheel: zoom. Click: ray tree.");
     if (!viewer.status().empty()) ImGui::TextWrapped("%s", viewer.status().c_str());
+    if (!viewer.non_finite().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 1, 1));  // the pixels' magenta
+        ImGui::TextWrapped("%s", viewer.non_finite().c_str());
+        ImGui::PopStyleColor();
+    }
     if (const auto& tree = viewer.selected()) {
         ImGui::Separator();
         ImGui::Text("pixel (%d, %d): %d rays, colour (%.4f, %.4f, %.4f)", tree->x, tree->y,
