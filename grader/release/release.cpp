@@ -168,6 +168,16 @@ std::string markers_problem(ReleasePlan& plan, const fs::path& source,
     return "";
 }
 
+// Folders that quote the reference solutions outside their markers stay with the instructor: the
+// benchmarks' back-ends (tools/bench: the tuned BVH that stage 06's reference once was, the
+// stage 11 path tracer's strategies) and the mutation corpus (grader/tests/mutations: each
+// mutation quotes the reference lines it changes).
+bool instructor_only(const std::string& relative) {
+    for (const char* folder : {"tools/bench/", "grader/tests/mutations/"})
+        if (relative.starts_with(folder)) return true;
+    return false;
+}
+
 // Pass 1 for one file of the tree: copied, rewritten (its regions stripped or kept, and its stub
 // kept for `rt-grade .`), skipped, or a problem.
 void plan_file(ReleasePlan& plan, const ReleaseOptions& options, const std::string& relative) {
@@ -179,6 +189,7 @@ void plan_file(ReleasePlan& plan, const ReleaseOptions& options, const std::stri
     if (stage) plan.stage_info(options.source, stage->folder);  // every stage is in RELEASE.txt
     // Hidden tests (stages/NN-name/hidden/, named in grading.json) stay with the grader.
     if (stage && stage->relative.starts_with("hidden/")) return;
+    if (instructor_only(relative)) return;
     if (fs::is_symlink(status) || !fs::is_regular_file(status)) {
         if (fs::is_symlink(status)) plan.copied.insert(relative);
         return;  // directories here are git submodules: not part of a starter tree

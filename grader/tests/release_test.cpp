@@ -336,6 +336,20 @@ TEST_F(ReleaseTree, StripsEveryStageAndSkipsBuildDirs) {
     EXPECT_EQ(notes.find(source_.string()), std::string::npos) << notes;
 }
 
+// The folders that quote the solutions outside their markers (the tuned BVH back-end, the
+// mutation corpus) are not in a starter tree; the rest of tools/ and grader/tests/ is.
+TEST_F(ReleaseTree, LeavesOutFoldersThatQuoteTheSolutions) {
+    write("tools/bench/tuned_bvh.cpp", "// the old reference, tuned\n");
+    write("grader/tests/mutations/01/fov_not_halved.mutation", "find:\n  solved();\n");
+    write("tools/rehearsal.sh", "echo rehearsal\n");
+    write("grader/tests/trust.sh", "echo trust\n");
+    ASSERT_EQ(release(), 0) << errors_.str();
+    EXPECT_FALSE(fs::exists(out_ / "tools/bench"));
+    EXPECT_FALSE(fs::exists(out_ / "grader/tests/mutations"));
+    EXPECT_TRUE(fs::exists(out_ / "tools/rehearsal.sh"));
+    EXPECT_TRUE(fs::exists(out_ / "grader/tests/trust.sh"));
+}
+
 // GLSL student files (stage 09) carry the same markers in the same // comments: stripped and
 // un-commented like C++, and a .glsl file with markers must be listed in student_files too.
 TEST_F(ReleaseTree, StripsGlslStudentFiles) {

@@ -1,6 +1,8 @@
-// The BVH benchmark's back-ends (brute force, the students' BVH, a faulty wrapper for the tests),
-// how their answers are compared, and the chunked parallel loop every back-end is run with.
+// The BVH benchmark's back-ends (brute force, the students' BVH, the tuned BVH, a faulty wrapper
+// for the tests), how their answers are compared, and the chunked parallel loop every back-end is
+// run with.
 #include "bench/bvh_bench.h"
+#include "bench/tuned_bvh.h"
 
 #include <atomic>
 #include <chrono>
@@ -135,6 +137,40 @@ class BvhBackend final : public Backend {
     PreparedScene& scene_;
 };
 
+// The former reference's tricks (tuned_bvh.h), on a tree of its own over the same scene.
+class TunedBvhBackend final : public Backend {
+  public:
+    explicit TunedBvhBackend(const PreparedScene& scene) : scene_(scene) {}
+    std::string name() const override { return "bvh-tuned"; }
+    double build() override {
+        const auto start = Clock::now();
+        std::vector<BvhPrimitive> prims = bvh_primitives(scene_);
+        Bvh bvh;
+        tuned::build(std::move(prims), BvhBuildOptions{}, bvh);
+        const double ms = ms_since(start);
+        bvh_ = std::move(bvh);
+        return ms;
+    }
+    void trace(const RayBatch& batch, std::size_t begin, std::size_t end,
+               RayResult* results) const override {
+        for (std::size_t i = begin; i < end; ++i) {
+            Hit hit;
+            RayResult r;
+            if (batch.any_hit && tuned::any(scene_, bvh_, batch.rays[i], batch.ranges[i])) r.t = 0;
+            if (!batch.any_hit &&
+                tuned::nearest(scene_, bvh_, batch.rays[i], batch.ranges[i], hit)) {
+                r.t = hit.t;
+                r.primitive = hit.primitive;
+            }
+            results[i] = r;
+        }
+    }
+
+  private:
+    const PreparedScene& scene_;
+    Bvh bvh_;
+};
+
 class FaultyBackend final : public Backend {
   public:
     FaultyBackend(std::unique_ptr<Backend> inner, std::size_t period)
@@ -165,6 +201,9 @@ std::unique_ptr<Backend> make_brute_force_backend(const PreparedScene& scene) {
 }
 std::unique_ptr<Backend> make_bvh_backend(PreparedScene& scene) {
     return std::make_unique<BvhBackend>(scene);
+}
+std::unique_ptr<Backend> make_tuned_bvh_backend(const PreparedScene& scene) {
+    return std::make_unique<TunedBvhBackend>(scene);
 }
 std::unique_ptr<Backend> make_faulty_backend(std::unique_ptr<Backend> inner, std::size_t period) {
     return std::make_unique<FaultyBackend>(std::move(inner), period);

@@ -84,6 +84,9 @@ std::unique_ptr<Backend> make_brute_force_backend(const PreparedScene& scene);
 // Stage 06: bvh_primitives + build_bvh into scene.bvh, then bvh_intersect_nearest /
 // bvh_intersect_any.
 std::unique_ptr<Backend> make_bvh_backend(PreparedScene& scene);
+// The former reference's speed tricks on the same tree (tuned_bvh.h): its own build and
+// traversal, the scene's planes and primitives.
+std::unique_ptr<Backend> make_tuned_bvh_backend(const PreparedScene& scene);
 // A back-end that answers like `inner` except on every `period`-th ray that `inner` reports a
 // hit for, where it names another primitive (nearest-hit) or reports a miss (any-hit). For the
 // test that proves the correctness check catches a wrong back-end.
