@@ -14,18 +14,19 @@ bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
     // BEGIN SOLUTION
     const float eps = 5.9604644775390625e-8;  // 2^-24
     const float growth = 1.0 + 2.0 * (3.0 * eps) / (1.0 - 3.0 * eps);
-    float t0 = t_range.min, t1 = kInfinity;
+    float t0 = t_range.min;
+    float t1 = t_range.max;
     for (int axis = 0; axis < 3; ++axis) {
+        // A positive direction meets the slab's min plane first, a negative one its max plane.
         const bool negative = inv_direction[axis] < 0.0;
-        const float near_side = negative ? node.max[axis] : node.min[axis];
-        const float far_side = negative ? node.min[axis] : node.max[axis];
-        const float near = (near_side - ray.origin[axis]) * inv_direction[axis];
-        const float far = (far_side - ray.origin[axis]) * inv_direction[axis];
+        const float near_plane = negative ? node.max[axis] : node.min[axis];
+        const float far_plane = negative ? node.min[axis] : node.max[axis];
+        const float near = (near_plane - ray.origin[axis]) * inv_direction[axis];
+        const float far = (far_plane - ray.origin[axis]) * inv_direction[axis] * growth;
+        // Written so that a NaN (0 * inf: the origin on the plane) leaves the interval as it is.
         t0 = near > t0 ? near : t0;
         t1 = far < t1 ? far : t1;
     }
-    t1 *= growth;
-    t1 = t_range.max < t1 ? t_range.max : t1;
     t_entry = t0;
     return t0 <= t1;
     // STUB
@@ -36,11 +37,6 @@ bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
 }
 
 // BEGIN SOLUTION
-// `left` when left_first, else `right`, field by field: WebGL's GLSL has no ?: on a struct.
-BvhNode pick_child(bool left_first, BvhNode left, BvhNode right) {
-    return BvhNode(left_first ? left.min : right.min, left_first ? left.first : right.first,
-                   left_first ? left.max : right.max, left_first ? left.count : right.count);
-}
 // STUB
 // // Helper functions of your own may go here.
 // END SOLUTION
@@ -52,58 +48,60 @@ BvhNode pick_child(bool left_first, BvhNode left, BvhNode right) {
 bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     // BEGIN SOLUTION
     bool found = false;
-    for (int i = 0; i < primitive_counts.y; ++i)
+    for (int i = 0; i < primitive_counts.y; ++i) {
         if (intersect_primitive(primitive_id(kPlane, i), ray, t_range, hit)) {
             found = true;
-            t_range.max = hit.t;
+            t_range.max = hit.t;  // what follows must be nearer
         }
+    }
     const vec3 inv_direction = 1.0 / ray.direction;
-    // Invocations run in lock-step, 8 at a time on llvmpipe, and both sides of an `if` cost
-    // all 8: so each descends to a leaf in an inner loop (one node a turn), then the 8 test
-    // their leaves' primitives together. The node to visit next, the nearer child hit, stays in
-    // `node` (already read for its box test); only the farther waits on the stack, since every
-    // store to or load from a stack is a loop over the 8 lanes there.
-    uint stack_node[kBvhMaxDepth + 1];
-    float stack_t[kBvhMaxDepth + 1];
+    // The nodes still to visit and where the ray enters them: the far children waiting, and the
+    // near one about to be taken.
+    uint stack_node[kBvhMaxDepth];
+    float stack_t[kBvhMaxDepth];
     int top = 0;
     float t_root;
     bvh_nodes_visited += 1u;
-    BvhNode node = bvh_nodes[0];
-    bool holding = intersect_node(node, ray, inv_direction, t_range, t_root);
-    while (holding || top > 0) {
-        // Descend until this invocation holds a leaf (or has nothing left to visit).
-        uint first = 0u, count = 0u;
-        while (holding || top > 0) {
-            if (!holding) {
-                --top;
-                if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
-                node = bvh_nodes[stack_node[top]];
+    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) {
+        stack_node[0] = 0u;
+        stack_t[0] = t_root;
+        top = 1;
+    }
+    while (top > 0) {
+        --top;
+        if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
+        const BvhNode node = bvh_nodes[stack_node[top]];
+        if (node.count > 0u) {
+            for (uint k = node.first; k < node.first + node.count; ++k) {
+                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
+                    found = true;
+                    t_range.max = hit.t;
+                }
             }
-            holding = false;
-            if (node.count > 0u) {
-                first = node.first, count = node.count;
-                break;
-            }
-            float t_left, t_right;
-            bvh_nodes_visited += 2u;
-            const BvhNode left = bvh_nodes[node.first], right = bvh_nodes[node.first + 1u];
-            const bool hit_left = intersect_node(left, ray, inv_direction, t_range, t_left);
-            const bool hit_right = intersect_node(right, ray, inv_direction, t_range, t_right);
-            const bool left_first = !hit_right || (hit_left && t_left <= t_right);
-            // The farther waits if both are hit (its slot is written either way: one store
-            // without an `if` costs llvmpipe less than one behind it).
-            stack_node[top] = node.first + (left_first ? 1u : 0u);
-            stack_t[top] = left_first ? t_right : t_left;
-            top += hit_left && hit_right ? 1 : 0;
-            holding = hit_left || hit_right;
-            node = pick_child(left_first, left, right);  // the nearer child hit
+            continue;
         }
-        // Then its primitives, together with the other invocations that hold one.
-        for (uint k = first; k < first + count; ++k)
-            if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
-                found = true;
-                t_range.max = hit.t;
-            }
+        // Both children's boxes: the nearer is taken next (the left one on a tie), the other
+        // waits below it.
+        const uint left = node.first;
+        const uint right = node.first + 1u;
+        float t_left;
+        float t_right;
+        const bool hit_left = intersect_node(bvh_nodes[left], ray, inv_direction, t_range, t_left);
+        const bool hit_right =
+            intersect_node(bvh_nodes[right], ray, inv_direction, t_range, t_right);
+        bvh_nodes_visited += 2u;
+        if (hit_left && hit_right) {
+            const bool right_nearer = t_right < t_left;
+            stack_node[top] = right_nearer ? left : right;
+            stack_t[top] = right_nearer ? t_left : t_right;
+            stack_node[top + 1] = right_nearer ? right : left;
+            stack_t[top + 1] = right_nearer ? t_right : t_left;
+            top += 2;
+        } else if (hit_left || hit_right) {
+            stack_node[top] = hit_left ? left : right;
+            stack_t[top] = hit_left ? t_left : t_right;
+            top += 1;
+        }
     }
     return found;
     // STUB
@@ -115,40 +113,37 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
 // Whether anything is hit in t_range (shadow rays): stops at the first hit found.
 bool bvh_intersect_any(Ray ray, Interval t_range) {
     // BEGIN SOLUTION
-    // No `return` inside a loop: llvmpipe pays for one there, so `found` ends the loops.
     Hit scratch = no_hit();
     bool found = false;
     for (int i = 0; i < primitive_counts.y && !found; ++i)
         found = intersect_primitive(primitive_id(kPlane, i), ray, t_range, scratch);
     const vec3 inv_direction = 1.0 / ray.direction;
-    uint stack[kBvhMaxDepth + 1];
+    uint stack[kBvhMaxDepth + 1];  // nodes whose box the ray enters, still to open
     int top = 0;
-    float t_root;
-    BvhNode node = bvh_nodes[0];
-    bool holding = intersect_node(node, ray, inv_direction, t_range, t_root);
-    // As bvh_intersect_nearest: descend to a leaf, nearer child first, then test it. Nearer
-    // first pays here too (1.1x on large_icosphere): the 8 lanes' rays part less.
-    while ((holding || top > 0) && !found) {
-        uint first = 0u, count = 0u;
-        while (holding || top > 0) {
-            if (!holding) node = bvh_nodes[stack[--top]];
-            holding = false;
-            if (node.count > 0u) {
-                first = node.first, count = node.count;
-                break;
-            }
-            float t_left, t_right;
-            const BvhNode left = bvh_nodes[node.first], right = bvh_nodes[node.first + 1u];
-            const bool hit_left = intersect_node(left, ray, inv_direction, t_range, t_left);
-            const bool hit_right = intersect_node(right, ray, inv_direction, t_range, t_right);
-            const bool left_first = !hit_right || (hit_left && t_left <= t_right);
-            stack[top] = node.first + (left_first ? 1u : 0u);  // the farther, kept if both hit
-            top += hit_left && hit_right ? 1 : 0;
-            holding = hit_left || hit_right;
-            node = pick_child(left_first, left, right);  // the nearer child hit
+    float t_entry;
+    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_entry)) {
+        stack[0] = 0u;
+        top = 1;
+    }
+    while (top > 0 && !found) {
+        --top;
+        const BvhNode node = bvh_nodes[stack[top]];
+        if (node.count > 0u) {
+            for (uint k = node.first; k < node.first + node.count && !found; ++k)
+                found = intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch);
+            continue;
         }
-        for (uint k = first; k < first + count && !found; ++k)
-            found = intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch);
+        // Any order will do; the right child is opened first.
+        const uint left = node.first;
+        const uint right = node.first + 1u;
+        if (intersect_node(bvh_nodes[left], ray, inv_direction, t_range, t_entry)) {
+            stack[top] = left;
+            top += 1;
+        }
+        if (intersect_node(bvh_nodes[right], ray, inv_direction, t_range, t_entry)) {
+            stack[top] = right;
+            top += 1;
+        }
     }
     return found;
     // STUB
