@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -11,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/text_file.h"
+#include "grading/intake.h"
 #include "util.h"
 
 namespace rt::grader {
@@ -65,18 +67,26 @@ fs::path unpack(const fs::path& zip, std::map<std::string, std::string>& refused
         if (const std::string prefix = submission_prefix(entry); !prefix.empty())
             prefixes.insert(prefix);
     std::string output;
-    const std::string own =
-        "unzip -q -o " + archive + " -x '*submission_[0-9]*/*' -d " + shell_quote(dir.string());
-    const int status = run_trusted(own, &output);
+    const int status = run_trusted(extract_capped(zip, "", dir, "*submission_[0-9]*/*"), &output);
     if (status > 1 && status != 11)  // 1: a warning, nothing lost; 11: no file of its own
         throw std::runtime_error(zip.string() + ": not a readable zip (" + unzip_complaint(output) +
                                  ")");
     for (const std::string& prefix : prefixes) {
-        const std::string command = "unzip -q -o " + archive + " " + shell_quote(prefix + "*") +
-                                    " -d " + shell_quote(dir.string());
-        if (run_trusted(command, &output) == 0) continue;
         const std::string folder = fs::path(prefix).parent_path().filename().string();
-        refused[folder] = unzip_complaint(output, dir);
+        // A submission that declares more than one uploaded alone may hold is not unpacked.
+        std::uintmax_t bytes = 0;
+        if (zip_declared_bytes(zip, prefix + "*", bytes) && bytes > kMaxZipBytes) {
+            refused[folder] = "its files expand to " + std::to_string(bytes >> 20) +
+                              " MB, more than the 64 MB a submission may hold (a zip bomb?)";
+            fs::create_directories(dir / prefix);  // listed by the metadata, graded as refused
+            continue;
+        }
+        const int unzipped = run_trusted(extract_capped(zip, prefix + "*", dir), &output);
+        if (unzipped == 0) continue;
+        refused[folder] = unzipped == 128 + SIGXFSZ
+                              ? "a file of it expands beyond the 64 MB a submission may hold, "
+                                "more than its zip entry declares (a zip bomb?)"
+                              : unzip_complaint(output, dir);
         std::error_code ec;
         fs::remove_all(dir / prefix, ec);
         fs::create_directories(dir / prefix, ec);  // listed by the metadata, graded as refused

@@ -13,7 +13,6 @@ namespace rt::grader {
 namespace {
 
 constexpr std::uintmax_t kMaxStudentFileBytes = 256 * 1024;
-constexpr std::uintmax_t kMaxZipBytes = 64ull << 20;
 
 bool odd_name(const std::string& name) {
     if (name.empty() || name[0] == '-' || name.size() > 100) return true;
@@ -73,22 +72,18 @@ std::string check_source(const std::string& text, const fs::path& ws_src,
 
 // A zip is listed before it is extracted: its total size is capped (zip bombs).
 bool extract_zip(const fs::path& zip, const fs::path& dir, std::string& error) {
-    std::string listing;
-    if (run_trusted("unzip -Z -t " + shell_quote(zip.string()), &listing) != 0) {
+    std::uintmax_t bytes = 0;
+    if (!zip_declared_bytes(zip, "", bytes)) {
         error = "not a readable zip file";
         return false;
     }
-    std::smatch m;
-    if (std::regex_search(listing, m, std::regex(R"((\d+) bytes uncompressed)")) &&
-        std::stoull(m[1].str()) > kMaxZipBytes) {
+    if (bytes > kMaxZipBytes) {
         error = "the zip expands to more than 64 MB";
         return false;
     }
     std::string out;
     fs::create_directories(dir);
-    // -: never absolute or ../ paths (unzip's default refuses them; -: would allow, so omit it).
-    run_trusted("unzip -qq -o " + shell_quote(zip.string()) + " -d " + shell_quote(dir.string()),
-                &out);
+    run_trusted(extract_capped(zip, "", dir), &out);
     return true;
 }
 
@@ -257,6 +252,28 @@ Intake take_in(const GradeOptions& o, const std::vector<StageSpec>& graded,
     const std::set<std::string> claimed = claim_student_files(in, sub, graded, ws_src);
     list_ignored(o, in, sub, claimed, other_stage_files(graded, all));
     return in;
+}
+
+bool zip_declared_bytes(const fs::path& zip, const std::string& pattern, std::uintmax_t& bytes) {
+    std::string command = "unzip -Z -t " + shell_quote(zip.string());
+    if (!pattern.empty()) command += " " + shell_quote(pattern);
+    std::string listing;
+    if (run_trusted(command, &listing) != 0) return false;
+    std::smatch m;
+    if (!std::regex_search(listing, m, std::regex(R"((\d+) bytes uncompressed)"))) return false;
+    bytes = std::stoull(m[1].str());
+    return true;
+}
+
+std::string extract_capped(const fs::path& zip, const std::string& pattern, const fs::path& dir,
+                           const std::string& exclude) {
+    // ulimit -f counts 1024-byte blocks; unzip stops at the first file over it. Without -: unzip
+    // never writes an absolute or ../ path (-: would allow them, so it is left out).
+    std::string command = "ulimit -f " + std::to_string(kMaxZipBytes / 1024) + " && unzip -q -o " +
+                          shell_quote(zip.string());
+    if (!pattern.empty()) command += " " + shell_quote(pattern);
+    if (!exclude.empty()) command += " -x " + shell_quote(exclude);
+    return command + " -d " + shell_quote(dir.string());
 }
 
 }  // namespace rt::grader

@@ -2,6 +2,7 @@
 // files of the graded stages are read; everything else is listed as ignored. Trusted code.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -11,6 +12,23 @@
 #include "grading/grade.h"
 
 namespace rt::grader {
+
+// The most a submission's files may expand to: a zip that declares more is refused unread (a zip
+// bomb), whether it is uploaded alone or is one submission of an export.
+inline constexpr std::uintmax_t kMaxZipBytes = 64ull << 20;
+
+// What the entries of `zip` matching `pattern` (unzip's wildcards; every entry when empty)
+// declare they expand to, in bytes; false when unzip cannot list them. The extraction itself
+// runs with each file capped at kMaxZipBytes (extract_capped), so a size the listing
+// understates cannot fill the disk.
+bool zip_declared_bytes(const std::filesystem::path& zip, const std::string& pattern,
+                        std::uintmax_t& bytes);
+
+// unzip's command line for extracting `zip`'s entries matching `pattern` (every entry when
+// empty) but those matching `exclude` into `dir`, each file limited to kMaxZipBytes; for
+// run_trusted.
+std::string extract_capped(const std::filesystem::path& zip, const std::string& pattern,
+                           const std::filesystem::path& dir, const std::string& exclude = "");
 
 struct Ignored {
     std::string path, reason;

@@ -41,6 +41,24 @@ case $case in
     "$bin/results_check" "$work/grades/submission_2/results.json" --contains "could not be read" || exit 1
     [ ! -e "$work/outside" ] || { echo "FAIL: written through the link"; exit 1; }
     exit 0 ;;
+  export_bomb)  # a zipped export with a zip bomb as one submission: only it is refused, unread
+    exp=$work/a/assignment_9_export
+    mkdir -p "$exp/submission_1" "$exp/submission_2"
+    cp "$src/$s1/camera_rays.cpp" "$exp/submission_1/"
+    cp "$src/$s1/camera_rays.cpp" "$exp/submission_2/"
+    head -c 200M /dev/zero > "$exp/submission_2/zeros.bin"  # 200 MB, about 200 KB zipped
+    for n in 1 2; do printf 'submission_%s:\n  :submitters:\n  - :name: Student %s\n    :sid: %s\n  :created_at: 2026-12-01 09:0%s:00.000000000 -0800\n' \
+                      "$n" "$n" "$n" "$n"; done > "$exp/submission_metadata.yml"
+    (cd "$work/a" && zip -q -r "$work/export.zip" .) || exit 1
+    rm -rf "$work/a"
+    "$bin/rt-grade" batch "$work/export.zip" --out "$work/grades" --jobs 1 --stages 1 || exit 1
+    cat "$work/grades/scores.csv"
+    grep -q '^"submission_1",.*,"ok",' "$work/grades/scores.csv" || { echo "FAIL: submission_1 not graded"; exit 1; }
+    grep -q '^"submission_2",.*,0,[0-9]*,0,"refused: its files expand to 200 MB, more than the 64 MB' "$work/grades/scores.csv" ||
+      { echo "FAIL: submission_2 not refused for its size"; exit 1; }
+    # The bomb was never unpacked: no file of 64 MB or more anywhere the batch wrote.
+    [ -z "$(find "$work" /tmp/rt-grade-export-* -size +65535k 2>/dev/null)" ] || { echo "FAIL: the bomb was unpacked"; exit 1; }
+    exit 0 ;;
   package_run)  # the package's run_autograder in a simulated Gradescope layout
     # A package for an assignment of two stages, the first and the last: a complete submission
     # scores full marks in both, and the stages between are not graded (the reference case
