@@ -77,7 +77,8 @@ TEST_F(Perspective, AspectRatioWidensHorizontally) {
            "aspect ratio 2 times tan(45 deg) (the field of view is vertical)";
     EXPECT_NEAR(top.direction.y / -top.direction.z, 1, kTol)
         << "middle of the top edge (100, 0) of a 200x100 image, fov 90: y / -z should be "
-           "tan(45 deg) = 1";
+           "tan(45 deg) = 1 (the field of view is in degrees and std::tan takes radians: "
+           "convert with glm::radians)";
 }
 
 // Pixel (0, 0) has its centre at (0.5, 0.5): the renderer passes pixel centres, and y grows

@@ -231,5 +231,50 @@ TEST_F(Transmittance, ColoredShadowsThroughGlass) {
                       "an opaque box behind the glass: blocked");
 }
 
+// Shadow rays crossing a glass sphere at oblique angles, through points with no exact
+// coordinates: each surface filters once, whatever the rounding of the hit points.
+TEST_F(Transmittance, GlassSphereFiltersOncePerSurface) {
+    PreparedScene scene = floor_scene();
+    scene.materials.push_back(glass(Color(0.5f, 0.8f, 0.9f)));
+    const Vec3 center(0.13f, 1.7f, -0.21f);
+    const Vec3 light_position(0.37f, 4.1f, 0.29f);
+    scene.spheres = {Sphere{center, 0.5f, 1}};
+    const Light light = point_light(light_position);
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            // Aim from the light through a point well inside the sphere's silhouette.
+            const Vec3 aim = center + Vec3(Real(0.04) * (Real(i) - Real(3.5)), 0,
+                                           Real(0.04) * (Real(j) - Real(3.5)));
+            const Real s = light_position.y / (light_position.y - aim.y);
+            const Vec3 p = light_position + s * (aim - light_position);
+            const SurfacePoint at = floor_point(scene, p.x, p.z);
+            expect_color_near(light_transmittance(scene, at, illuminate(light, at.point)),
+                              Color(0.25f, 0.64f, 0.81f),
+                              "floor point (" + std::to_string(p.x) + ", " + std::to_string(p.z) +
+                                  ") in the shadow of a glass sphere: k_t^2, each surface once; "
+                                  "after a transparent surface continue from offset_ray_origin "
+                                  "on its far side, not from the hit point, or the walk hits the "
+                                  "same surface again");
+        }
+    }
+}
+
+// Past a transparent surface the walk still ends at the light: an opaque sphere beyond a point
+// light casts no shadow through the glass either.
+TEST_F(Transmittance, RangeStillEndsAtTheLightPastGlass) {
+    PreparedScene scene = floor_scene();
+    scene.materials.push_back(glass(Color(0.9f, 0.5f, 0.2f)));
+    scene.vertices = {Vec3(-1, 3, -1), Vec3(1, 3, -1), Vec3(0, 3, 2)};
+    scene.triangles = {Triangle{{0, 1, 2}, 1}};
+    scene.spheres = {Sphere{Vec3(0, 5.5f, 0), 1, 0}};
+    const SurfacePoint at = floor_point(scene, 0, 0);
+    expect_color_near(
+        light_transmittance(scene, at, illuminate(point_light(Vec3(0, 4, 0)), at.point)),
+        Color(0.9f, 0.5f, 0.2f),
+        "point light at height 4, a glass triangle at height 3 and an opaque sphere beyond the "
+        "light (4.5 to 6.5): k_t; after moving the origin past a transparent surface, shorten "
+        "t_range.max by the distance moved, so the range still ends at the light");
+}
+
 }  // namespace
 }  // namespace rt

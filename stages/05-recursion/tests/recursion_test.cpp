@@ -78,7 +78,9 @@ TEST_F(Fresnel, SchlickClosedForms) {
     EXPECT_NEAR(schlick_reflectance(1, 1.5f, 1), 0.04, kTol);
     EXPECT_NEAR(schlick_reflectance(0, 1, 1.5f), 1, kTol);
     EXPECT_NEAR(schlick_reflectance(Real(0.5), 1, 1.5f), 0.04 + 0.96 / 32, kTol);
-    EXPECT_EQ(schlick_reflectance(std::cos(Real(1.0)), 1.5f, 1), 1);  // past 41.8 degrees
+    EXPECT_EQ(schlick_reflectance(std::cos(Real(1.0)), 1.5f, 1), 1)
+        << "leaving glass (1.5 into 1) at 57 degrees, past the critical angle 41.8 degrees: "
+           "F = 1; when n1 > n2 Schlick uses cos_t, the cosine on the less dense side";
     for (int i = 0; i <= 100; ++i) {
         const Real c = Real(i) / 100;
         for (Real n2 : {Real(1.33), Real(1.5), Real(2.4)}) {
@@ -127,7 +129,9 @@ TEST_F(Secondary, RaysKeepThePointsTime) {
     const Ray in{at.point + Vec3(-1, 1, 0), Vec3(1, -1, 0), at.time};
     const SecondaryRays s =
         secondary_rays(in, at, mirror_glass(Color(0.5f), Color(0.5f), 1.5f), false);
-    ASSERT_TRUE(s.reflected.valid && s.refracted.valid);
+    ASSERT_TRUE(s.reflected.valid && s.refracted.valid)
+        << "entering glass 1.5 at 45 degrees (front face): eta = n1 / n2 = 1 / 1.5, and going "
+           "into a denser medium there is no total internal reflection";
     EXPECT_EQ(s.reflected.ray.time, at.time) << "make rays with spawn_ray(at, n, direction)";
     EXPECT_EQ(s.refracted.ray.time, at.time) << "make rays with spawn_ray(at, n, direction)";
 }
@@ -139,7 +143,9 @@ TEST_F(Secondary, EnteringAndLeaving) {
     const Material glass = mirror_glass(Color(0), Color(0.9f), 1.5f);
     SurfacePoint at = flat_point(Vec3(0, 1, 0), true);
     SecondaryRays s = secondary_rays(Ray{at.point - d, d}, at, glass, false);
-    ASSERT_TRUE(s.refracted.valid);
+    ASSERT_TRUE(s.refracted.valid)
+        << "entering glass 1.5 at 45 degrees (front face): eta = n1 / n2 = 1 / 1.5, and going "
+           "into a denser medium there is no total internal reflection";
     EXPECT_FALSE(s.reflected.valid);
     EXPECT_EQ(s.refracted.weight, Color(0.9f));
     Vec3 expected;
@@ -155,6 +161,31 @@ TEST_F(Secondary, EnteringAndLeaving) {
     ASSERT_TRUE(s.refracted.valid);
     EXPECT_NEAR(s.refracted.ray.direction.x, 0.75, kTol);
     EXPECT_FALSE(s.total_internal_reflection);
+}
+
+// The incoming direction need not be unit length (an instance's ray is not renormalised:
+// docs/conventions.md#transforms); the secondary rays and their weights do not depend on it.
+TEST_F(Secondary, NonUnitIncomingDirection) {
+    const Material glass = mirror_glass(Color(0.1f), Color(0.9f), 1.5f);
+    const Vec3 d(std::sin(kPi / 6), -std::cos(kPi / 6), 0);  // 30 degrees from the normal
+    for (const bool front_face : {true, false}) {
+        const SurfacePoint at = flat_point(Vec3(0, 1, 0), front_face);
+        const std::string side = front_face ? "entering" : "leaving";
+        const SecondaryRays unit = secondary_rays(Ray{at.point - d, d}, at, glass, true);
+        const SecondaryRays scaled =
+            secondary_rays(Ray{at.point - d, Real(3) * d}, at, glass, true);
+        ASSERT_TRUE(unit.refracted.valid && scaled.refracted.valid) << side;
+        const std::string what = side +
+                                 " glass at 30 degrees, incoming direction 3 times unit length: "
+                                 "refract needs a unit d, normalise incoming.direction";
+        expect_vec_near(scaled.refracted.ray.direction, unit.refracted.ray.direction,
+                        "refracted direction, " + what);
+        expect_vec_near(glm::normalize(scaled.reflected.ray.direction),
+                        glm::normalize(unit.reflected.ray.direction),
+                        "reflected direction, " + what);
+        EXPECT_NEAR(scaled.reflected.weight.r, unit.reflected.weight.r, kTol)
+            << "reflected weight (Fresnel on), " << what;
+    }
 }
 
 // Leaving glass past the critical angle: no refracted ray; all of k_t is reflected.

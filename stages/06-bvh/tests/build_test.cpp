@@ -194,18 +194,40 @@ TEST_F(BvhBuild, DegenerateInputs) {
 }
 
 TEST_F(BvhBuild, DepthIsBoundedOnPathologicalSpacing) {
-    // Centroids at 2^i: binning peels one primitive per level, which would go 100 deep.
+    // Centroids at 2.2^i with 2 bins: the only boundary peels off the largest primitive, so the
+    // SAH alone would go 100 levels deep (2^i with 16 bins stops at 27, below the limit).
     std::vector<BvhPrimitive> prims;
     for (std::uint32_t i = 0; i < 100; ++i) {
-        const float x = std::ldexp(1.0f, int(i));
+        const float x = float(std::pow(2.2, double(i)));
         prims.push_back(box_primitive({x, 0, 0}, {x, 1, 1}, i));
     }
     BvhBuildOptions options;
     options.max_leaf_size = 1;
+    options.bins = 2;
     Bvh bvh;
     build_bvh(prims, options, bvh);
     EXPECT_EQ(validate_bvh(bvh, prims), "");
-    EXPECT_LE(bvh_depth(bvh), kBvhMaxDepth);
+    EXPECT_EQ(bvh_depth(bvh), kBvhMaxDepth)
+        << "the root has depth 1 and a node at depth kBvhMaxDepth (64) is a leaf (step 2)";
+}
+
+TEST_F(BvhBuild, LeafWhenNoSplitPays) {
+    // Eight 2x2x2 boxes almost on top of each other, centroids 0.01 apart along x: every split
+    // costs about 1 + 8 > N = 8, so the SAH keeps one leaf of 8 though max_leaf_size is 4.
+    std::vector<BvhPrimitive> prims;
+    for (std::uint32_t i = 0; i < 8; ++i) {
+        const float x = 0.01f * float(i);
+        prims.push_back(box_primitive({x - 1, -1, -1}, {x + 1, 1, 1}, i));
+    }
+    const BvhBuildOptions options;
+    for (int k = 1; k < options.bins; ++k)  // the premise, from the cost model itself
+        ASSERT_GE(reference_cost(prims, 0, k, options), 8.0f) << "boundary " << k;
+    Bvh bvh;
+    build_bvh(prims, options, bvh);
+    EXPECT_EQ(validate_bvh(bvh, prims), "");
+    EXPECT_EQ(bvh.nodes.size(), 1u)
+        << "every split costs at least N = 8, yet the root was split: a node whose best split "
+           "costs at least as much as the leaf is a leaf (step 2)";
 }
 
 TEST_F(BvhBuild, TreeIsDeterministic) {

@@ -133,6 +133,11 @@ void compare_ray(const PreparedScene& scene, const Ray& ray, Interval range, Com
             brute.primitive, v ? "hit" : "miss", double(bvh.t), bvh.primitive,
             any ? "hit" : "miss");
         c.first = text;
+        if (b && v && bvh.t > brute.t)
+            c.first +=
+                " (the BVH's hit is farther than the loop's: a later leaf replaced a nearer hit, "
+                "or a box holding it was skipped; is t_range.max shrunk to hit.t after every "
+                "hit?)";
     }
 }
 
@@ -284,6 +289,33 @@ TEST_F(Visits, GrowLogarithmically) {
     EXPECT_LT(visits[3] / visits[0], 3.0)
         << "64 times the triangles took " << visits[3] / visits[0] << " times the node visits ("
         << visits[0] << " -> " << visits[3] << "): that is not logarithmic";
+}
+
+// Nearer child first: a ray hitting a wall in front of a dense sphere finds the wall first; the
+// sphere's subtree, entered beyond that hit, is never opened.
+TEST_F(Visits, NearerChildFirstSkipsWhatIsBehindTheHit) {
+    TriangleMesh mesh = make_icosphere(5);  // 20,480 triangles, radius 1, at the origin
+    const std::uint32_t base = std::uint32_t(mesh.vertices.size());
+    for (const Vec3& v : {Vec3(-2, -2, 3), Vec3(2, -2, 3), Vec3(2, 2, 3), Vec3(-2, 2, 3)})
+        mesh.vertices.push_back(v);  // a wall at z = 3, between the rays' origin and the sphere
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.triangles.push_back({base, base + 2, base + 3});
+    const PreparedScene scene = built(scene_from_mesh(mesh));
+    Random random(9);
+    BvhStats stats;
+    const int rays = 1000;
+    for (int i = 0; i < rays; ++i) {
+        const Vec3 jitter = random.vec(-0.2, 0.2);
+        const Ray ray{{0, 0, 10}, {jitter.x, jitter.y, -1}};
+        Hit hit;
+        ASSERT_TRUE(bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &stats));
+        ASSERT_NEAR(hit.t, 7, 1e-3) << "the wall at z = 3";
+    }
+    const double per_ray = double(stats.nodes_visited) / rays;
+    EXPECT_LT(per_ray, 12) << per_ray
+                           << " nodes visited per ray: the sphere behind the wall was opened; go "
+                              "into the nearer child first and skip a popped node whose entry is "
+                              "beyond the nearest hit";
 }
 
 }  // namespace

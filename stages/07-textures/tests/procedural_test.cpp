@@ -66,7 +66,10 @@ TEST_F(Noise, MatchesTheGradientsNearACorner) {
     for (int x = 0; x < 3; ++x) {
         const Vec3 c(Real(x), 1, -2);
         const Real expected = glm::dot(noise_gradient(x, 1, -2), d);
-        EXPECT_NEAR(gradient_noise(c + d), expected, 2e-4) << "near corner (" << x << ", 1, -2)";
+        EXPECT_NEAR(gradient_noise(c + d), expected, 2e-4)
+            << "near corner (" << x
+            << ", 1, -2): there the noise must be g(c).d, the other "
+               "corners' weights vanishing as the fade curve 6t^5 - 15t^4 + 10t^3 does";
     }
 }
 
@@ -100,6 +103,24 @@ TEST_F(Marble, ScaleStretchesThePattern) {
     const Vec3 p(0.37f, 0.21f, 0.9f);
     const Color small = marble(p, kA, kB, 1), big = marble(p * Real(2), kA, kB, 2);
     EXPECT_NEAR(small.r, big.r, 1e-5) << "marble(2p, scale 2) = marble(p, scale 1)";
+}
+
+TEST_F(Marble, FollowsTheTurbulenceFormula) {
+    // s = 0.5 + 0.5 sin((x + 4 turbulence(p)) pi), turbulence = sum over k = 0..4 of
+    // |noise(2^k p)| / 2^k; with a = red and b = blue, s is the blue channel.
+    for (int i = 0; i < 20; ++i) {
+        const Vec3 point(Real(i) * 0.37f - 3, Real(i) * 0.11f + 0.2f, 1.3f - Real(i) * 0.05f);
+        const Real scale = 1.5f;
+        const Vec3 p = point / scale;
+        Real turbulence = 0;
+        for (int k = 0; k < 5; ++k)
+            turbulence += std::abs(gradient_noise(p * Real(1 << k))) / Real(1 << k);
+        const Real s = Real(0.5) + Real(0.5) * std::sin((p.x + 4 * turbulence) * kPi);
+        EXPECT_NEAR(marble(point, kA, kB, scale).b, s, 1e-4)
+            << "sample " << i
+            << ": marble's turbulence sums |noise(2^k p)| / 2^k, each octave "
+               "twice the frequency and half the weight of the last";
+    }
 }
 
 }  // namespace

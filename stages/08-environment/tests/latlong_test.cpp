@@ -43,10 +43,14 @@ TEST_F(LatLong, AnyLengthGivesTheSameCoordinates) {
 }
 
 TEST_F(LatLong, PolesNeverGiveNaN) {
-    // Nearly vertical directions whose normalised y may round above 1.
-    for (const Vec3& d : {Vec3(1e-20f, 5, 0), Vec3(0, -3, 1e-30f), Vec3(0, 1, 0)}) {
+    // Nearly vertical directions whose normalised y may round above 1 (a very short one does:
+    // y * y is subnormal in float, and (0, 1e-20, 0) normalises to y = 1.0000026).
+    for (const Vec3& d : {Vec3(1e-20f, 5, 0), Vec3(0, -3, 1e-30f), Vec3(0, 1, 0),
+                          Vec3(0, 1e-20f, 0), Vec3(0, -3e-20f, 0)}) {
         const Vec2 uv = latlong_uv(d);
-        EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
+        EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y))
+            << "direction (" << d.x << ", " << d.y << ", " << d.z
+            << "): clamp d.y to [-1, 1] before acos";
         EXPECT_GE(uv.x, 0);
         EXPECT_LT(uv.x, 1);
         EXPECT_NEAR(uv.y, d.y > 0 ? 0 : 1, kUvTol);

@@ -137,5 +137,25 @@ TEST_F(Radiance, BackgroundUsesTheEnvironment) {
     EXPECT_EQ(background(scene, d), environment_radiance(scene, d));
 }
 
+TEST_F(Radiance, ImagesAreReadLinearNotSrgbDecoded) {
+    // Uniform images of 0.5: environment images are linear radiance, so every direction reads
+    // 0.5; sRGB decoding would give 0.214.
+    PreparedScene scene;
+    scene.environment.kind = EnvironmentKind::LatLong;
+    scene.environment.image = scene.add_texture_image(4, 2, std::vector<Color>(8, Color(0.5f)));
+    refresh_features(scene);
+    expect_color(environment_radiance(scene, Vec3(0.3f, 0.2f, -1)), Color(0.5f),
+                 "lat-long: read the linear image as stored (texture_view(index, false)), not "
+                 "sRGB-decoded");
+    PreparedScene cube;
+    cube.environment.kind = EnvironmentKind::CubeMap;
+    for (int f = 0; f < 6; ++f)
+        cube.environment.faces[f] =
+            cube.add_texture_image(2, 2, std::vector<Color>(4, Color(0.5f)));
+    refresh_features(cube);
+    expect_color(environment_radiance(cube, Vec3(0.3f, 0.2f, -1)), Color(0.5f),
+                 "cube face: read the linear image as stored, not sRGB-decoded");
+}
+
 }  // namespace
 }  // namespace rt
