@@ -3,6 +3,7 @@
 // the path of rt-worker: how ctest checks the split without the grader).
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -37,6 +38,15 @@ int start_worker(const char* worker) {
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return -1;
     const pid_t pid = fork();
     if (pid == 0) {
+        // The judge's test watchdog (testing/test_watch.h) limits the judge's CPU time for the
+        // test under way; fork would hand that soft limit to the worker, which serves every test
+        // and would be stopped once all of them together used it (a cold shader cache does).
+        // The hard limit, a sandbox's, stays.
+        rlimit cpu{};
+        if (getrlimit(RLIMIT_CPU, &cpu) == 0 && cpu.rlim_cur != cpu.rlim_max) {
+            cpu.rlim_cur = cpu.rlim_max;
+            setrlimit(RLIMIT_CPU, &cpu);
+        }
         dup2(ends[1], 3);
         fcntl(3, F_SETFD, 0);  // the worker's end survives exec even when it already was 3
         setenv("RT_REMOTE_FD", "3", 1);
