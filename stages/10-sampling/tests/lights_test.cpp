@@ -115,7 +115,9 @@ TEST_F(AreaSampling, SphereSamplesFollowTheirPdf) {
             << "a sample off the sphere";
         ASSERT_GE(glm::dot(s.normal, from - s.point), -1e-4) << "a sample on the hidden side";
         const Vec3 d = glm::normalize(s.point - from);
-        if (i < 100) {
+        // Away from the silhouette: there a technique sampling by area has the density
+        // distance^2 / cos, ill-conditioned in the direction's rounding (the cone's is constant).
+        if (i < 100 && glm::dot(s.normal, -d) >= Real(0.1)) {
             EXPECT_NEAR(s.pdf, sphere_pdf(light, from, d), 1e-3 * s.pdf)
                 << "sample_sphere and sphere_pdf disagree";
         }
@@ -123,19 +125,25 @@ TEST_F(AreaSampling, SphereSamplesFollowTheirPdf) {
         if (phi < 0) phi += 2 * kPi;
         observed[bin(glm::dot(d, axis), phi)] += 1;
     }
+    // 1 - cos runs over each bin as x1 - (x1 - x0) w^2, w in (0, 1): a density growing as
+    // 1 / sqrt(cos - cos_max) at the silhouette (sampling by area, which the contract allows)
+    // integrates as well as the cone's constant one.
     double total = 0;
-    for (int i = 0; i < kCos * kSub; ++i)
-        for (int j = 0; j < kPhi * kSub; ++j) {
-            const double c = 1 - (1 - cos_max) * (i + 0.5) / (kCos * kSub);
-            const double phi = 2 * kPi * (j + 0.5) / (kPhi * kSub);
-            const double s = std::sqrt(1 - c * c);
-            const Vec3 d =
-                frame.to_world(Vec3(Real(s * std::cos(phi)), Real(s * std::sin(phi)), Real(c)));
-            const double solid_angle = (1 - cos_max) / (kCos * kSub) * 2 * kPi / (kPhi * kSub);
-            const double mass = sphere_pdf(light, from, d) * solid_angle;
-            expected[bin(c, phi)] += kSamples * mass;
-            total += mass;
-        }
+    for (int i = 0; i < kCos; ++i)
+        for (int k = 0; k < kSub; ++k)
+            for (int j = 0; j < kPhi * kSub; ++j) {
+                const double w = (k + 0.5) / kSub;
+                const double c = 1 - (1 - cos_max) * (i + 1 - w * w) / kCos;
+                const double phi = 2 * kPi * (j + 0.5) / (kPhi * kSub);
+                const double s = std::sqrt(1 - c * c);
+                const Vec3 d =
+                    frame.to_world(Vec3(Real(s * std::cos(phi)), Real(s * std::sin(phi)), Real(c)));
+                const double solid_angle =
+                    (1 - cos_max) / kCos * (2 * w / kSub) * 2 * kPi / (kPhi * kSub);
+                const double mass = sphere_pdf(light, from, d) * solid_angle;
+                expected[bin(c, phi)] += kSamples * mass;
+                total += mass;
+            }
     EXPECT_NEAR(total, 1, 2e-3) << "sphere_pdf does not integrate to 1 over the visible cap";
     stats::expect_chi_square(observed, expected, "sample_sphere");
     EXPECT_EQ(sphere_pdf(light, from, -axis), 0) << "a direction away from the sphere";
