@@ -6,9 +6,12 @@
 // The scenes are listed from the tree, so a scene added to stages 01-08 is checked too; one the
 // GPU port could not draw in its own mode would be listed in kGpuLimits with the reason, checked
 // to fail with that reason, and compared in a mode the port has instead.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -127,6 +130,35 @@ INSTANTIATE_TEST_SUITE_P(Ungraded, UberConformance,
                          case_name);
 
 // The two headless contexts run the student's shaders to the same image.
+// Blinn-Phong's clamp, which no scene reaches (N.V > 0 and N.L > 0 give N.H > 0): vertex
+// normals leaning 80 degrees away from a viewer 60 degrees off the quad's axis, lit from the
+// front, so N.L > 0 and N.H < 0.
+RT_TEST_SUITE(GpuShade, "direct-light-and-shadows");
+
+TEST_F(GpuShade, SpecularClampedWhereTheHalfVectorLeansAway) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("rt-stage09-lean-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "lean.obj") << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                       "vn 0.98481 0 0.17365\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
+    const PreparedScene scene = prepare_scene(parse_scene(R"({
+  "camera": {"eye": [-3.4641, 0, 2], "look_at": [0, 0, 0], "fov": 40},
+  "image": {"width": 64, "height": 64},
+  "render": {"mode": "shaded", "shadows": false},
+  "ambient_light": [0.1, 0.1, 0.1],
+  "materials": [{"name": "shiny", "ambient": [1, 1, 1], "diffuse": [0.5, 0.5, 0.5],
+                 "specular": [1, 1, 1], "shininess": 3}],
+  "surfaces": [{"type": "mesh", "file": "lean.obj", "material": "shiny"}],
+  "lights": [{"type": "directional", "direction": [0, -0.6, -0.8], "intensity": [1, 1, 1]}]
+})",
+                                                          "lean.json", dir));
+    fs::remove_all(dir);
+    expect_gpu_matches_cpu(scene, RenderMode::Shaded,
+                           "vertex normals leaning away from the viewer, lit from the front "
+                           "(N.L > 0, N.H < 0): the specular term is k_s max(0, N.H)^n_s; clamp "
+                           "N.H at 0 before pow(), whose negative base is undefined in GLSL");
+}
+
 RT_TEST_SUITE(GpuContexts, "what-the-tests-check");
 
 TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
