@@ -112,6 +112,12 @@ done
 [[ $signatures -gt 0 ]] || fail "found no function signatures in the student files"
 ok "${#STUDENT_FILES[@]} student files: $signatures signature lines kept, every region has an RT_NOT_IMPLEMENTED stub"
 if [[ -n "$TEXT_ONLY" ]]; then
+    # The starter tree configures as a grading workspace configures its copy (`rt-grade .`):
+    # an instructor's build without viewer or window, with what the release left out missing.
+    cmake -S "$STARTER" -B "$TMP/workspace-configure" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+        -DRT_INSTRUCTOR=ON -DRT_VIEWER=OFF -DRT_GL_WINDOW=OFF -DRT_CCACHE=OFF > "$TMP/configure.log" 2>&1 \
+        || { tail -20 "$TMP/configure.log"; fail "the starter tree does not configure as rt-grade . configures it"; }
+    ok "the starter tree configures as a grading workspace does (RT_INSTRUCTOR=ON)"
     echo "total $((SECONDS - start)) s (--text-only: the build and the ladder are Release.StarterTreeLadder's)"
     exit 0
 fi
