@@ -159,6 +159,29 @@ TEST_F(GpuShade, SpecularClampedWhereTheHalfVectorLeansAway) {
                            "N.H at 0 before pow(), whose negative base is undefined in GLSL");
 }
 
+// The camera alone, named: the ray through the top row's middle, decoded from the directions
+// view (display value 0.5 (d + 1)), makes half the vertical field of view with -w.
+RT_TEST_SUITE(GpuCamera, "camera-rays");
+
+TEST_F(GpuCamera, VerticalFieldOfViewAsOnTheCpu) {
+    const PreparedScene scene = small_scene("01-camera-rays/scenes/perspective_directions.json");
+    const auto degrees = [&](const Image& image) {
+        const Color c = image.pixels[std::size_t(image.width / 2)];  // row 0: the top
+        const Vec3 d(2 * linear_to_srgb(c.r) - 1, 2 * linear_to_srgb(c.g) - 1,
+                     2 * linear_to_srgb(c.b) - 1);
+        const Real cosine =
+            std::clamp(glm::dot(glm::normalize(d), -scene.camera.w), Real(-1), Real(1));
+        return double(glm::degrees(std::acos(cosine)));
+    };
+    const double gpu = degrees(render_gpu(scene, RenderMode::Directions));
+    const double cpu = degrees(render(scene, RenderMode::Directions));
+    EXPECT_NEAR(gpu, cpu, 1.0)
+        << "the camera ray through the middle of the top row makes " << gpu
+        << " degrees with the view direction -w, the CPU's " << cpu
+        << ": half the vertical field of view (" << scene.camera.vertical_fov_degrees
+        << " degrees), half_height = tan(radians(fov) / 2); GLSL's tan takes radians";
+}
+
 RT_TEST_SUITE(GpuContexts, "what-the-tests-check");
 
 TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
