@@ -58,7 +58,10 @@ struct Bins {
     // Only the bins in use are cleared: a small node should not pay for kMaxBins.
     explicit Bins(int bins) {
         for (int axis = 0; axis < 3; ++axis)
-            for (int k = 0; k < bins; ++k) box[axis][k] = Box4::empty(), count[axis][k] = 0;
+            for (int k = 0; k < bins; ++k) {
+                box[axis][k] = Box4::empty();
+                count[axis][k] = 0;
+            }
     }
     // bin_of on three axes at once, lane by lane the same answers (clamped before converting).
     void add(const std::vector<BvhPrimitive>& prims, std::size_t begin, std::size_t end,
@@ -148,7 +151,10 @@ SahSplit sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, st
         // before used[j]) splits the primitives the same way, so only the lowest, used[j - 1] + 1,
         // is costed (a tie goes to the lower bin). A small node has few bins in use.
         int used[kMaxBins], m = 0;
-        for (int k = 0; k < bins; ++k) used[m] = k, m += binned.count[axis][k] > 0;  // no branch
+        for (int k = 0; k < bins; ++k) {
+            used[m] = k;
+            m += binned.count[axis][k] > 0;  // no branch
+        }
         // Right-hand sides (bins used[j] .. used[m - 1]), swept from the right.
         float right_area[kMaxBins];
         std::uint32_t right_count[kMaxBins];
@@ -168,7 +174,11 @@ SahSplit sah_split(const std::vector<BvhPrimitive>& prims, std::size_t begin, st
             const float cost = options.traversal_cost + (box.aabb().surface_area() * float(count) +
                                                          right_area[j] * float(right_count[j])) *
                                                             inv_area;
-            if (cost < best.cost) best.axis = axis, best.bin = used[j - 1] + 1, best.cost = cost;
+            if (cost < best.cost) {
+                best.axis = axis;
+                best.bin = used[j - 1] + 1;
+                best.cost = cost;
+            }
         }
     }
     if (best.axis >= 0) {  // the two sides' boxes and counts, from the chosen axis's bins
@@ -336,12 +346,14 @@ void build(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh&
     // as much as a level), or its primitives' when it is a leaf.
     BvhNode& root = bvh.nodes[0];
     Aabb root_bounds;
-    if (root.is_leaf())
+    if (root.is_leaf()) {
         for (const BvhPrimitive& p : prims) root_bounds.grow(p.bounds);
-    else
-        root_bounds = bvh.nodes[root.first].bounds(),
+    } else {
+        root_bounds = bvh.nodes[root.first].bounds();
         root_bounds.grow(bvh.nodes[root.first + 1].bounds());
-    root.min = root_bounds.min, root.max = root_bounds.max;
+    }
+    root.min = root_bounds.min;
+    root.max = root_bounds.max;
 
     // The jobs, largest first, each into a vector of its own (its root at local index 0).
     std::vector<std::size_t> order(jobs.size());
@@ -360,8 +372,10 @@ void build(std::vector<BvhPrimitive> prims, const BvhBuildOptions& options, Bvh&
     // Each subtree after the nodes above them, in the order the jobs were found.
     std::vector<std::uint32_t> offset(jobs.size());
     std::size_t total = bvh.nodes.size();
-    for (std::size_t i = 0; i < jobs.size(); ++i)
-        offset[i] = std::uint32_t(total), total += sub[i].size() - 1;
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+        offset[i] = std::uint32_t(total);
+        total += sub[i].size() - 1;
+    }
     bvh.nodes.resize(total);
     parallel_for(jobs.size(), threads,
                  [&](std::size_t i) { place_subtree(sub[i], jobs[i].node, offset[i], bvh.nodes); });
@@ -372,7 +386,10 @@ bool nearest(const PreparedScene& scene, const Bvh& bvh, const Ray& ray, Interva
              Hit& hit) {
     bool found = false;
     const auto test = [&](auto id) {  // a hit shrinks the range: what follows must be nearer
-        if (intersect_primitive(scene, id, ray, t_range, hit)) found = true, t_range.max = hit.t;
+        if (intersect_primitive(scene, id, ray, t_range, hit)) {
+            found = true;
+            t_range.max = hit.t;
+        }
     };
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
         test(Scene::primitive_id(Scene::Kind::Plane, i));
