@@ -32,7 +32,7 @@ rt::ObjMesh load(const fs::path& file, rt::Vec3 scale = rt::Vec3(1),
 }
 
 // The ObjError message loading `file` gives, or "" when it loads.
-std::string error_of(const fs::path& file) {
+std::string obj_error_of(const fs::path& file) {
     try {
         load(file);
     } catch (const rt::ObjError& e) {
@@ -84,7 +84,7 @@ TEST(ObjLoader, DamagedFilesGiveOneLineErrorsNamingFileAndLine) {
     EXPECT_GE(damages.size(), 10u);
     for (const Damage& damage : damages) {
         SCOPED_TRACE(damage.file);
-        std::string message = error_of(kBadObjs / damage.file);
+        std::string message = obj_error_of(kBadObjs / damage.file);
         ASSERT_NE(message, "") << "loaded without an error";
         std::string start = "mesh \"" + damage.file + "\"" +
                             (damage.line > 0 ? " line " + std::to_string(damage.line) : "") + ": ";
@@ -166,8 +166,8 @@ TEST(ObjLoader, IndicesIntoAbsentUvAndNormalListsAreDroppedWithAWarning) {
         << mesh.warnings[1];
     // With one "vt" line the same index 2 is out of range: that stays an error.
     const auto bad = dir.write("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n");
-    EXPECT_NE(error_of(bad).find("texture coordinate index 2 out of range"), std::string::npos)
-        << error_of(bad);
+    EXPECT_NE(obj_error_of(bad).find("texture coordinate index 2 out of range"), std::string::npos)
+        << obj_error_of(bad);
 }
 
 TEST(ObjLoader, CornersWithoutNormalsGetTheZeroSentinel) {
@@ -338,7 +338,7 @@ TEST(ObjLoader, MalformedLibrariesAreReported) {
     dir.write("m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
     auto mtl_error = [&](const std::string& mtl) {
         dir.write("lib.mtl", mtl);
-        return error_of(dir.path() / "m.obj");
+        return obj_error_of(dir.path() / "m.obj");
     };
     const std::pair<const char*, const char*> cases[] = {
         {"newmtl a\nKd 0.5\n", "mesh \"m.obj\": \"lib.mtl\" line 2: \"Kd\" has 1 number, not 3"},
