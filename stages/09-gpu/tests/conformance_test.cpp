@@ -12,11 +12,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "image/compare.h"
+#include "image/image.h"
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
@@ -129,19 +131,26 @@ INSTANTIATE_TEST_SUITE_P(Ungraded, UberConformance,
                                            "08-environment/scenes/glass.json"),
                          case_name);
 
-// The two headless contexts run the student's shaders to the same image.
+// A scene made for one test: its text, and the files it names, written by `write_files` into a
+// folder of its own (removed once the scene is loaded).
+PreparedScene made_scene(const std::string& name, const std::string& text,
+                         const std::function<void(const fs::path& dir)>& write_files = {}) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("rt-stage09-" + name + "-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    if (write_files) write_files(dir);
+    PreparedScene scene = prepare_scene(parse_scene(text, name + ".json", dir));
+    fs::remove_all(dir);
+    return scene;
+}
+
 // Blinn-Phong's clamp, which no scene reaches (N.V > 0 and N.L > 0 give N.H > 0): vertex
 // normals leaning 80 degrees away from a viewer 60 degrees off the quad's axis, lit from the
 // front, so N.L > 0 and N.H < 0.
 RT_TEST_SUITE(GpuShade, "direct-light-and-shadows");
 
 TEST_F(GpuShade, SpecularClampedWhereTheHalfVectorLeansAway) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage09-lean-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "lean.obj") << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-                                       "vn 0.98481 0 0.17365\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
-    const PreparedScene scene = prepare_scene(parse_scene(R"({
+    const PreparedScene scene = made_scene("lean", R"({
   "camera": {"eye": [-3.4641, 0, 2], "look_at": [0, 0, 0], "fov": 40},
   "image": {"width": 64, "height": 64},
   "render": {"mode": "shaded", "shadows": false},
@@ -151,12 +160,131 @@ TEST_F(GpuShade, SpecularClampedWhereTheHalfVectorLeansAway) {
   "surfaces": [{"type": "mesh", "file": "lean.obj", "material": "shiny"}],
   "lights": [{"type": "directional", "direction": [0, -0.6, -0.8], "intensity": [1, 1, 1]}]
 })",
-                                                          "lean.json", dir));
-    fs::remove_all(dir);
+                                           [](const fs::path& dir) {
+                                               std::ofstream(dir / "lean.obj")
+                                                   << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                                      "vn 0.98481 0 0.17365\n"
+                                                      "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
+                                           });
     expect_gpu_matches_cpu(scene, RenderMode::Shaded,
                            "vertex normals leaning away from the viewer, lit from the front "
                            "(N.L > 0, N.H < 0): the specular term is k_s max(0, N.H)^n_s; clamp "
                            "N.H at 0 before pow(), whose negative base is undefined in GLSL");
+}
+
+// A point light between a floor and a ceiling: the ceiling lies beyond the light, seen from the
+// floor, and must cast no shadow on it.
+TEST_F(GpuShade, PointLightShadowRayStopsAtTheLight) {
+    const PreparedScene scene = made_scene("beyond", R"({
+  "camera": {"eye": [0, 1.5, 4], "look_at": [0, 0, 0], "fov": 60},
+  "image": {"width": 48, "height": 36},
+  "render": {"mode": "shaded", "max_depth": 0, "shadows": true},
+  "ambient_light": [0.1, 0.1, 0.1],
+  "materials": [{"name": "chalk", "ambient": [0.5, 0.5, 0.5], "diffuse": [0.8, 0.8, 0.8]}],
+  "surfaces": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "chalk"},
+               {"type": "box", "min": [-6, 3, -6], "max": [6, 3.2, 6], "material": "chalk"}],
+  "lights": [{"type": "point", "position": [0, 2, 0], "intensity": [8, 8, 8]}]
+})");
+    expect_gpu_matches_cpu(scene, RenderMode::Shaded,
+                           "a point light under a ceiling, seen from the floor: the shadow ray "
+                           "of a point light ends at the light (its t_range stops at the "
+                           "distance to the light), so the ceiling beyond the light casts no "
+                           "shadow");
+}
+
+// Fresnel's weights alone: a glass ball in front of a bright wall, on a dark background. The
+// wall seen through the ball gets the refraction's weight 1 - R; the reflection sees the dark.
+RT_TEST_SUITE(GpuRecursion, "reflection-and-refraction");
+
+TEST_F(GpuRecursion, SchlickWeightsAsOnTheCpu) {
+    const PreparedScene scene = made_scene("schlick", R"({
+  "camera": {"eye": [0, 0, 4], "look_at": [0, 0, 0], "fov": 40},
+  "image": {"width": 48, "height": 48},
+  "render": {"mode": "shaded", "max_depth": 3, "shadows": false, "fresnel": true},
+  "background": [0.02, 0.02, 0.02],
+  "ambient_light": [0.2, 0.2, 0.2],
+  "materials": [
+    {"name": "glass", "diffuse": [0, 0, 0], "transmissive": [0.9, 0.9, 0.9], "ior": 1.5},
+    {"name": "wall", "ambient": [1, 0.9, 0.6], "diffuse": [0.8, 0.7, 0.5]}
+  ],
+  "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "glass"},
+               {"type": "box", "min": [-3, -3, -3], "max": [3, 3, -2.8], "material": "wall"}],
+  "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": [0.8, 0.8, 0.8]}]
+})");
+    expect_gpu_matches_cpu(scene, RenderMode::Shaded,
+                           "a glass ball (ior 1.5) before a bright wall, Fresnel on: Schlick's "
+                           "R = R0 + (1 - R0)(1 - cos)^5 with R0 = ((n1 - n2) / (n1 + n2))^2, "
+                           "squared, so never negative; the reflection gets R, the refraction "
+                           "1 - R");
+}
+
+// Three quads one behind the other in one mesh, listed near to far: the nearest hit through the
+// tree is the near quad's, whatever the order the leaves and their primitives are tested in.
+RT_TEST_SUITE(GpuBvh, "bvh-traversal");
+
+TEST_F(GpuBvh, NearestHitOfQuadsOneBehindTheOther) {
+    const PreparedScene scene = made_scene("layers", R"({
+  "camera": {"eye": [0.4, 0.3, 4], "look_at": [0, 0, 0], "fov": 40},
+  "image": {"width": 48, "height": 48},
+  "render": {"mode": "primitive", "accelerator": "bvh"},
+  "materials": [{"name": "chalk", "diffuse": [0.8, 0.8, 0.8]}],
+  "surfaces": [{"type": "mesh", "file": "layers.obj", "material": "chalk"}]
+})",
+                                           [](const fs::path& dir) {
+                                               std::ofstream obj(dir / "layers.obj");
+                                               for (const char* z : {"0", "-0.5", "-1"})
+                                                   obj << "v -1 -1 " << z << "\nv 1 -1 " << z
+                                                       << "\nv 1 1 " << z << "\nv -1 1 " << z
+                                                       << "\n";
+                                               obj << "f 1 2 3\nf 1 3 4\nf 5 6 7\nf 5 7 8\n"
+                                                      "f 9 10 11\nf 9 11 12\n";
+                                           });
+    expect_gpu_matches_cpu(scene, RenderMode::PrimitiveId,
+                           "three quads one behind the other, each pixel's primitive: the "
+                           "nearest hit through the BVH shrinks t_range.max to each hit it "
+                           "finds, so a primitive or subtree tested later counts only when it "
+                           "is nearer");
+}
+
+// The environment lookup alone, on a lat-long image whose red is u and whose green is v: a
+// wrong longitude or a wrong turn changes every pixel's colour.
+RT_TEST_SUITE(GpuEnvironment, "environment-maps");
+
+PreparedScene uv_sky(double rotate_y) {
+    return made_scene("uv_sky",
+                      R"({
+  "camera": {"eye": [0, 0, 0], "look_at": [1, 0.3, 0.4], "fov": 90},
+  "image": {"width": 48, "height": 32},
+  "render": {"mode": "shaded", "max_depth": 0},
+  "environment": {"latlong": "uv.png", "rotate_y": )" +
+                          std::to_string(rotate_y) + R"(}
+})",
+                      [](const fs::path& dir) {
+                          Image8 uv{64, 32, std::vector<std::uint8_t>(64 * 32 * 3)};
+                          for (int y = 0; y < uv.height; ++y)
+                              for (int x = 0; x < uv.width; ++x) {
+                                  std::uint8_t* p = uv.at(x, y);
+                                  p[0] = std::uint8_t(255 * x / (uv.width - 1));
+                                  p[1] = std::uint8_t(255 * y / (uv.height - 1));
+                                  p[2] = 80;
+                              }
+                          write_image8(uv, dir / "uv.png");
+                      });
+}
+
+TEST_F(GpuEnvironment, LatLongLookupSeenFromInside) {
+    expect_gpu_matches_cpu(uv_sky(0), RenderMode::Shaded,
+                           "a lat-long sky whose red is u and green v, rotate_y 0: the "
+                           "longitude seen from inside, u = atan(-d.x, d.z) / (2 pi) + 0.5, and "
+                           "the latitude v = acos(d.y) / pi");
+}
+
+TEST_F(GpuEnvironment, RotateYTurnsTheSky) {
+    expect_gpu_matches_cpu(uv_sky(90), RenderMode::Shaded,
+                           "the same sky with rotate_y 90 (if LatLongLookupSeenFromInside "
+                           "passes, the lookup is right and the turn is not): the environment "
+                           "turns by +rotate_y about +y, so the lookup turns the direction by "
+                           "-rotate_y first");
 }
 
 // The camera alone, named: the ray through the top row's middle, decoded from the directions
@@ -182,6 +310,7 @@ TEST_F(GpuCamera, VerticalFieldOfViewAsOnTheCpu) {
         << " degrees), half_height = tan(radians(fov) / 2); GLSL's tan takes radians";
 }
 
+// The two headless contexts run the student's shaders to the same image.
 RT_TEST_SUITE(GpuContexts, "what-the-tests-check");
 
 TEST_F(GpuContexts, EglAndOsMesaRenderTheSameImage) {
