@@ -60,7 +60,9 @@ float gamma_bound(int n) {
 
 void triangle_vertices(int triangle, out vec3 a, out vec3 b, out vec3 c) {
     const uvec4 v = triangles[triangle].vertices_material;
-    a = positions[v.x].xyz, b = positions[v.y].xyz, c = positions[v.z].xyz;
+    a = positions[v.x].xyz;
+    b = positions[v.y].xyz;
+    c = positions[v.z].xyz;
 }
 
 // geometry/offset.cpp's surface_point, line for line.

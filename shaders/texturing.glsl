@@ -10,7 +10,9 @@ void triangle_vertex_uvs(int triangle, out vec2 a, out vec2 b, out vec2 c) {
 #ifdef HAS_VERTEX_UVS
     if (!scene_has(kFeatureVertexUvs)) return;
     const uvec4 v = triangles[triangle].vertices_material;
-    a = uvs[v.x], b = uvs[v.y], c = uvs[v.z];
+    a = uvs[v.x];
+    b = uvs[v.y];
+    c = uvs[v.z];
 #endif
 }
 

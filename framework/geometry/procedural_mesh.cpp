@@ -68,16 +68,20 @@ void sin_cos(double x, double& s, double& c) {
     long quadrant = static_cast<long>(k) & 3;
     switch (quadrant) {
         case 0:
-            s = sr, c = cr;
+            s = sr;
+            c = cr;
             break;
         case 1:
-            s = cr, c = -sr;
+            s = cr;
+            c = -sr;
             break;
         case 2:
-            s = -sr, c = -cr;
+            s = -sr;
+            c = -cr;
             break;
         default:
-            s = -cr, c = sr;
+            s = -cr;
+            c = sr;
             break;
     }
 }

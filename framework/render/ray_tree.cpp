@@ -135,7 +135,8 @@ bool clip_2d(Vec2& a, Vec2& b, Vec2 lo, Vec2 hi) {
         if (t0 > t1) return false;
     }
     const Vec2 start = a + t0 * d, end = a + t1 * d;
-    a = start, b = end;
+    a = start;
+    b = end;
     return true;
 }
 

@@ -61,7 +61,10 @@ std::optional<std::string> closest(const std::string& word,
     std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
     for (const std::string& option : options) {
         std::size_t d = edit_distance(word, option);
-        if (d < best_distance) best = option, best_distance = d;
+        if (d < best_distance) {
+            best = option;
+            best_distance = d;
+        }
     }
     return best;
 }

@@ -26,6 +26,16 @@ struct MtlKeys {
     bool shininess = false, ior = false, dissolve = false;
 };
 
+// The rule a value of the key `word` (taking `count` numbers) breaks, or "" when it keeps it:
+// colours and Ns are never negative, d and Tr are fractions, illum is a model number.
+std::string broken_value_rule(const std::string& word, std::size_t count, double value) {
+    if ((count == 3 || word == "Ns") && !(value >= 0)) return ">= 0";
+    if ((word == "d" || word == "Tr") && !(value >= 0 && value <= 1)) return "between 0 and 1";
+    if (word == "illum" && !(value >= 0 && value <= 10 && value == std::floor(value)))
+        return "a whole number 0..10";
+    return "";
+}
+
 // Checks an MTL file line by line (tinyobjloader reads malformed numbers as 0 without a word)
 // and returns the keys each material gives.
 std::map<std::string, MtlKeys> check_mtl_text(const std::string& text, const std::string& obj_name,
@@ -89,15 +99,8 @@ std::map<std::string, MtlKeys> check_mtl_text(const std::string& text, const std
                              shown(word) + " value " + shown(v) +
                                  (n == Number::NotFinite ? " is not finite" : " is not a number"),
                              "write \"" + form + "\" with ordinary numbers");
-                bool ok = true;
-                std::string rule;
-                if (key.count == 3 || word == "Ns") ok = value >= 0, rule = ">= 0";
-                if (word == "d" || word == "Tr")
-                    ok = value >= 0 && value <= 1, rule = "between 0 and 1";
-                if (word == "illum")
-                    ok = value >= 0 && value <= 10 && value == std::floor(value),
-                    rule = "a whole number 0..10";
-                if (!ok)
+                if (const std::string rule = broken_value_rule(word, key.count, value);
+                    !rule.empty())
                     complain(line, shown(word) + " must be " + rule + ", got " + shown(v),
                              "fix the value");
             }

@@ -120,7 +120,9 @@ void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2
         return;
     }
     const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;
-    a = scene.uvs[v[0]], b = scene.uvs[v[1]], c = scene.uvs[v[2]];
+    a = scene.uvs[v[0]];
+    b = scene.uvs[v[1]];
+    c = scene.uvs[v[2]];
 }
 
 namespace {

@@ -134,7 +134,8 @@ void SceneSections::read_environment_images(const json* latlong, const json* cub
             fail_value(pointer, "cube face " + quote(name) + " is " + dims + ", not square",
                        "make every face square (the same width and height)");
         if (f == 0) {
-            size = face.width, first = dims;
+            size = face.width;
+            first = dims;
         } else if (face.width != size) {
             fail_value(pointer,
                        "cube face " + quote(name) + " is " + dims + " but \"px\" is " + first,

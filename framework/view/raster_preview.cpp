@@ -209,7 +209,8 @@ RasterPreview::RasterPreview(const PreparedScene& scene) {
     }
     glBindVertexArray(0);
 
-    width_ = scene.image.width, height_ = scene.image.height;
+    width_ = scene.image.width;
+    height_ = scene.image.height;
     glGenTextures(1, &color_);
     glBindTexture(GL_TEXTURE_2D, color_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE,

@@ -125,17 +125,29 @@ bool intersect_box(const Ray& ray, const Box& box, Interval t_range, Hit& hit) {
         Real t0 = (box.min[i] - o[i]) / d[i];
         Real t1 = (box.max[i] - o[i]) / d[i];
         if (t0 > t1) std::swap(t0, t1);
-        if (t0 > t_near) t_near = t0, near_axis = i;
-        if (t1 < t_far) t_far = t1, far_axis = i;
+        if (t0 > t_near) {
+            t_near = t0;
+            near_axis = i;
+        }
+        if (t1 < t_far) {
+            t_far = t1;
+            far_axis = i;
+        }
     }
     if (t_near > t_far) return false;
     Real t;
     int axis;
     Real sign;  // the outward normal is sign * e_axis
     if (t_range.contains(t_near)) {
-        t = t_near, axis = near_axis, sign = d[axis] > 0 ? -1 : 1;  // entered through this face
+        // entered through this face
+        t = t_near;
+        axis = near_axis;
+        sign = d[axis] > 0 ? -1 : 1;
     } else if (t_range.contains(t_far)) {
-        t = t_far, axis = far_axis, sign = d[axis] > 0 ? 1 : -1;  // leaving through this face
+        // leaving through this face
+        t = t_far;
+        axis = far_axis;
+        sign = d[axis] > 0 ? 1 : -1;
     } else {
         return false;
     }

@@ -38,15 +38,21 @@ CubeFaceUv cube_face_uv(const Vec3& direction) {
     if (ax >= ay && ax >= az) {  // ties: x before y before z
         const bool positive = direction.x > 0;
         r.face = positive ? 0 : 1;
-        sc = positive ? -direction.z : direction.z, tc = -direction.y, ma = ax;
+        sc = positive ? -direction.z : direction.z;
+        tc = -direction.y;
+        ma = ax;
     } else if (ay >= az) {
         const bool positive = direction.y > 0;
         r.face = positive ? 2 : 3;
-        sc = direction.x, tc = positive ? direction.z : -direction.z, ma = ay;
+        sc = direction.x;
+        tc = positive ? direction.z : -direction.z;
+        ma = ay;
     } else {
         const bool positive = direction.z > 0;
         r.face = positive ? 4 : 5;
-        sc = positive ? direction.x : -direction.x, tc = -direction.y, ma = az;
+        sc = positive ? direction.x : -direction.x;
+        tc = -direction.y;
+        ma = az;
     }
     const auto coordinate = [ma](Real c) { return std::clamp((c / ma + 1) / 2, Real(0), Real(1)); };
     r.uv = Vec2(coordinate(sc), coordinate(tc));

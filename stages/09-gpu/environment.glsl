@@ -31,15 +31,21 @@ CubeFaceUv cube_face_uv(vec3 direction) {
     if (a.x >= a.y && a.x >= a.z) {  // ties: x before y before z
         const bool positive = direction.x > 0.0;
         r.face = positive ? 0 : 1;
-        sc = positive ? -direction.z : direction.z, tc = -direction.y, ma = a.x;
+        sc = positive ? -direction.z : direction.z;
+        tc = -direction.y;
+        ma = a.x;
     } else if (a.y >= a.z) {
         const bool positive = direction.y > 0.0;
         r.face = positive ? 2 : 3;
-        sc = direction.x, tc = positive ? direction.z : -direction.z, ma = a.y;
+        sc = direction.x;
+        tc = positive ? direction.z : -direction.z;
+        ma = a.y;
     } else {
         const bool positive = direction.z > 0.0;
         r.face = positive ? 4 : 5;
-        sc = positive ? direction.x : -direction.x, tc = -direction.y, ma = a.z;
+        sc = positive ? direction.x : -direction.x;
+        tc = -direction.y;
+        ma = a.z;
     }
     r.uv = clamp((vec2(sc, tc) / ma + 1.0) / 2.0, 0.0, 1.0);
     return r;

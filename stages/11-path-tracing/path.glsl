@@ -114,7 +114,8 @@ vec3 path_radiance(Ray camera_ray) {
         const BsdfSample s = sample_bsdf(material, wo, u_lobe, rng_next2());
         if (s.weight == vec3(0)) break;
         throughput *= s.weight;
-        full_weight = s.delta, bounce_pdf = s.pdf;
+        full_weight = s.delta;
+        bounce_pdf = s.pdf;
         const vec3 direction = to_world(frame, s.wi);
         ray = spawn_ray(at, dot(direction, at.normal) > 0.0 ? at.normal : -at.normal, direction);
         if (depth >= 3) {  // Russian roulette, unbiased by the division

@@ -259,17 +259,29 @@ glm::vec3 shade(const SceneT<T>& s, const V3<T>& o, const V3<T>& d, TriFn<T> tri
     bool found = false;
     for (const auto& x : s.spheres) {
         const Result<T> r = sphere_rtg<T>(o, d, x.c, x.r, T(0), tmax);
-        if (r.hit) tmax = r.t, n = (o + r.t * d - x.c) / x.r, found = true;
+        if (r.hit) {
+            tmax = r.t;
+            n = (o + r.t * d - x.c) / x.r;
+            found = true;
+        }
     }
     for (const auto& x : s.planes) {
         const T den = glm::dot(x.n, d);
         if (den == 0) continue;
         const T t = glm::dot(x.n, x.p - o) / den;
-        if (T(0) < t && t < tmax) tmax = t, n = x.n, found = true;
+        if (T(0) < t && t < tmax) {
+            tmax = t;
+            n = x.n;
+            found = true;
+        }
     }
     for (const auto& x : s.tris) {
         const Result<T> r = tri(o, d, x.a, x.b, x.c, T(0), tmax);
-        if (r.hit) tmax = r.t, n = glm::normalize(glm::cross(x.b - x.a, x.c - x.a)), found = true;
+        if (r.hit) {
+            tmax = r.t;
+            n = glm::normalize(glm::cross(x.b - x.a, x.c - x.a));
+            found = true;
+        }
     }
     for (const auto& x : s.boxes) {
         T t0 = 0, t1 = tmax;

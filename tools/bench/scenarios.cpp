@@ -149,7 +149,10 @@ bool mesh_ray(Rng& rng, const MeshData& m, int mesh_index, Target kind, MeshCase
     const bool exact = kind == Target::ExactEdge || kind == Target::ExactVertex;
     if (kind == Target::Surface) {
         double bu = rng.uniform(0, 1), bv = rng.uniform(0, 1);
-        if (bu + bv > 1) bu = 1 - bu, bv = 1 - bv;
+        if (bu + bv > 1) {
+            bu = 1 - bu;
+            bv = 1 - bv;
+        }
         target = u + bu * (v - u) + bv * (w - u);
         faces = {f};
     } else if (kind == Target::NearEdge || kind == Target::ExactEdge) {

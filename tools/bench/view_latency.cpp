@@ -71,7 +71,10 @@ bool run_view_latency(const ViewLatencyConfig& config, std::ostream& out) {
                     out << "rt-bench: error: the renderer refused: " << frame->error << "\n";
                     return false;
                 }
-                if (first_ms < 0) first_ms = ms_since(start), first_block = frame->block;
+                if (first_ms < 0) {
+                    first_ms = ms_since(start);
+                    first_block = frame->block;
+                }
                 if (frame->refined()) {
                     full_ms = ms_since(start);
                     return true;

@@ -75,7 +75,11 @@ TEST_F(SahSplitCost, CostIsTheMinimumOverAllBinBoundaries) {
         for (int axis = 0; axis < 3; ++axis)
             for (int k = 1; k < options.bins; ++k) {
                 const float cost = reference_cost(prims, axis, k, options);
-                if (cost < best) best = cost, best_axis = axis, best_bin = k;
+                if (cost < best) {
+                    best = cost;
+                    best_axis = axis;
+                    best_bin = k;
+                }
             }
         ASSERT_EQ(split.axis, best_axis) << "trial " << trial;
         EXPECT_EQ(split.bin, best_bin) << "trial " << trial;
