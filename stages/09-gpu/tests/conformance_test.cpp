@@ -62,6 +62,19 @@ PreparedScene small_scene(const std::string& relative) {
     return prepare_scene(std::move(scene), {.width = 64, .height = height});
 }
 
+// How to render the scene of a failure at its own size: a scene file of the tree with `rt render`;
+// a scene made by a test (made_scene below) has its text in this file.
+std::string how_to_see_whole(const PreparedScene& scene, RenderMode mode,
+                             const GpuRenderOptions& options) {
+    const fs::path file = fs::path(scene.source).lexically_relative(::rt::testing::source_dir());
+    if (file.empty() || *file.begin() == "..")
+        return "the scene is made by the test: its text is in "
+               "stages/09-gpu/tests/conformance_test.cpp";
+    return "the scene whole: build/bin/rt render " + file.string() + " --mode " + to_string(mode) +
+           " --gpu" + (options.uber ? " --uber" : "") +
+           " -o gpu.png, then without --gpu for the CPU's";
+}
+
 // The GPU image of `scene` in `mode` against the CPU's, under the metric above. A failure keeps
 // both images and their difference, and says how to see the scene whole.
 void expect_gpu_matches_cpu(const PreparedScene& scene, RenderMode mode, const std::string& what,
@@ -78,11 +91,8 @@ void expect_gpu_matches_cpu(const PreparedScene& scene, RenderMode mode, const s
                                                   {"CPU", name + ".cpu.png", &cpu}};
     if (r.size_matches) kept.push_back({"difference", name + ".diff.png", &r.heat_map});
     ADD_FAILURE() << what << " (" << to_string(mode) << ", GPU against CPU): " << r.summary()
-                  << ::rt::testing::keep_failure_images("09-gpu", kept)
-                  << "\n  the scene whole: build/bin/rt render "
-                  << fs::path(scene.source).lexically_relative(::rt::testing::source_dir()).string()
-                  << " --mode " << to_string(mode) << " --gpu" << (options.uber ? " --uber" : "")
-                  << " -o gpu.png, then without --gpu for the CPU's";
+                  << ::rt::testing::keep_failure_images("09-gpu", kept) << "\n  "
+                  << how_to_see_whole(scene, mode, options);
 }
 
 TEST_P(Conformance, GpuMatchesCpu) {
@@ -251,7 +261,7 @@ TEST_F(GpuBvh, NearestHitOfQuadsOneBehindTheOther) {
 RT_TEST_SUITE(GpuEnvironment, "environment-maps");
 
 PreparedScene uv_sky(double rotate_y) {
-    return made_scene("uv_sky",
+    return made_scene(rotate_y == 0 ? "uv_sky" : "uv_sky_turned",
                       R"({
   "camera": {"eye": [0, 0, 0], "look_at": [1, 0.3, 0.4], "fov": 90},
   "image": {"width": 48, "height": 32},
