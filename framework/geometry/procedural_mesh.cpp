@@ -244,8 +244,10 @@ TriangleMesh make_torus(int rings, int sides, Real major_radius, Real minor_radi
         sin_cos(kTwoPi * i / rings, sin_theta[std::size_t(i)], cos_theta[std::size_t(i)]);
     for (int j = 0; j < sides; ++j)
         sin_cos(kTwoPi * j / sides, sin_phi[std::size_t(j)], cos_phi[std::size_t(j)]);
-    cos_theta[std::size_t(rings)] = cos_theta[0], sin_theta[std::size_t(rings)] = sin_theta[0];
-    cos_phi[std::size_t(sides)] = cos_phi[0], sin_phi[std::size_t(sides)] = sin_phi[0];
+    cos_theta[std::size_t(rings)] = cos_theta[0];
+    sin_theta[std::size_t(rings)] = sin_theta[0];
+    cos_phi[std::size_t(sides)] = cos_phi[0];
+    sin_phi[std::size_t(sides)] = sin_phi[0];
 
     TriangleMesh mesh;
     const std::size_t count = (std::size_t(rings) + 1) * columns;
@@ -288,7 +290,8 @@ class HeightField {
             double s, c;
             sin_cos(random.between(0, kTwoPi), s, c);
             double frequency = random.between(2, 7);
-            w.kx = c * frequency, w.kz = s * frequency;
+            w.kx = c * frequency;
+            w.kz = s * frequency;
             w.phase = random.between(0, kTwoPi);
             w.weight = random.between(0.3, 1);
         }
@@ -411,14 +414,18 @@ ProceduralResolution procedural_resolution(std::string_view shape, std::size_t m
     ProceduralResolution r;
     if (shape == "icosphere") {
         std::size_t triangles = 20;
-        while (triangles < n) triangles *= 4, ++r.a;
+        while (triangles < n) {
+            triangles *= 4;
+            ++r.a;
+        }
         r.triangles = triangles;
     } else if (shape == "torus") {
         // About twice as many rings as sides (the tube is thinner than the ring), then the fewest
         // rings that reach n.
         std::size_t sides = std::max<std::size_t>(3, ceil_sqrt(ceil_div(n, 4)));
         std::size_t rings = std::max<std::size_t>(3, ceil_div(n, 2 * sides));
-        r.a = int(rings), r.b = int(sides);
+        r.a = int(rings);
+        r.b = int(sides);
         r.triangles = 2 * rings * sides;
     } else if (shape == "terrain") {
         // Square-ish cells: cells_z from the square root, then the fewest columns that reach n.
