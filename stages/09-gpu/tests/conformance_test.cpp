@@ -6,8 +6,6 @@
 // The scenes are listed from the tree, so a scene added to stages 01-08 is checked too; one the
 // GPU port could not draw in its own mode would be listed in kGpuLimits with the reason, checked
 // to fail with that reason, and compared in a mode the port has instead.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -25,6 +23,7 @@
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
+#include "tests/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -145,13 +144,9 @@ INSTANTIATE_TEST_SUITE_P(Ungraded, UberConformance,
 // folder of its own (removed once the scene is loaded).
 PreparedScene made_scene(const std::string& name, const std::string& text,
                          const std::function<void(const fs::path& dir)>& write_files = {}) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage09-" + name + "-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    if (write_files) write_files(dir);
-    PreparedScene scene = prepare_scene(parse_scene(text, name + ".json", dir));
-    fs::remove_all(dir);
-    return scene;
+    const ::rt::testing::TempDir dir("stage09-" + name);
+    if (write_files) write_files(dir.path());
+    return prepare_scene(parse_scene(text, name + ".json", dir.path()));
 }
 
 // Blinn-Phong's clamp, which no scene reaches (N.V > 0 and N.L > 0 give N.H > 0): vertex
