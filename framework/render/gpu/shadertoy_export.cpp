@@ -10,6 +10,7 @@
 
 #include "core/source_dir.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/shader_constants.h"
 #include "render/gpu/gpu_render.h"
 #include "render/render.h"
 

@@ -1,5 +1,6 @@
 #include "render/gpu/web_arrays.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstring>
