@@ -38,7 +38,8 @@ endfunction()
 # program made of every source of the FROM targets, compiled with the sanitizers at -O0 (as in the
 # debug preset; GCC 12 at -O1 warns of std::regex falsely) and line tables, with the
 # FROM targets' include folders and definitions, and linked with what they link (the FROM targets
-# themselves excepted) and LINK. Each file compiles alone: the GL context files must.
+# themselves excepted) and LINK. The files of a FROM target built without unity batches (the GL
+# contexts: their headers clash) compile alone here too; the others in batches.
 function(rt_sanitized_twin name kind)
   cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "FROM;LINK")
   if(kind STREQUAL "MODULE")
@@ -50,6 +51,10 @@ function(rt_sanitized_twin name kind)
   foreach(target ${arg_FROM})
     rt_absolute_sources(sources ${target})
     target_sources(${name} PRIVATE ${sources})
+    get_target_property(unity ${target} UNITY_BUILD)
+    if(NOT unity)
+      set_source_files_properties(${sources} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+    endif()
     target_include_directories(${name} PRIVATE $<TARGET_PROPERTY:${target},INCLUDE_DIRECTORIES>)
     target_compile_definitions(${name} PRIVATE $<TARGET_PROPERTY:${target},COMPILE_DEFINITIONS>)
     get_target_property(linked ${target} LINK_LIBRARIES)
@@ -61,7 +66,6 @@ function(rt_sanitized_twin name kind)
   target_link_libraries(${name} PRIVATE ${libraries})
   target_compile_options(${name} PRIVATE ${RT_SANITIZE_FLAGS} -O0 -g1)
   target_link_options(${name} PRIVATE ${RT_SANITIZE_FLAGS})
-  set_target_properties(${name} PROPERTIES UNITY_BUILD OFF)
 endfunction()
 
 # rt_sanitized_tests(<program> FILTER <gtest filter> PREFIX <prefix>): the program's tests that the
