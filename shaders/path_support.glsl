@@ -78,7 +78,8 @@ AreaLightHit nearest_area_light(Ray ray, Interval t_range) {
         const float t =
             rectangle ? area_rectangle_t(light, ray) : area_sphere_t(light, ray, t_range);
         if (!(t > t_range.min && t < t_range.max && t < hit.t)) continue;
-        hit.light = i, hit.t = t;
+        hit.light = i;
+        hit.t = t;
         const bool lit_side =
             !rectangle || dot(cross(light.edge_u.xyz, light.edge_v.xyz), ray.direction) < 0.0;
         hit.radiance = lit_side ? light.radiance.rgb : vec3(0);

@@ -41,7 +41,9 @@ PlaneFrame plane_frame(vec3 normal) {
 // render/texturing.cpp's noise_gradient: the same integer hash, so the same noise as the CPU.
 vec3 noise_gradient(int x, int y, int z) {
     uint h = uint(x) * 73856093u ^ uint(y) * 19349663u ^ uint(z) * 83492791u;
-    h ^= h >> 13, h *= 0x5bd1e995u, h ^= h >> 15;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
     const float k = 0.70710678118654752;  // 1 / sqrt(2)
     const vec3 directions[12] = vec3[12](vec3(1, 1, 0), vec3(-1, 1, 0), vec3(1, -1, 0),
                                          vec3(-1, -1, 0), vec3(1, 0, 1), vec3(-1, 0, 1),

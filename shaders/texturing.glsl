@@ -6,7 +6,9 @@
 #ifdef HAS_MAPS
 // The vertex uvs of a triangle; (0, 0), (1, 0), (0, 1) when the scene has none.
 void triangle_vertex_uvs(int triangle, out vec2 a, out vec2 b, out vec2 c) {
-    a = vec2(0, 0), b = vec2(1, 0), c = vec2(0, 1);
+    a = vec2(0, 0);
+    b = vec2(1, 0);
+    c = vec2(0, 1);
 #ifdef HAS_VERTEX_UVS
     if (!scene_has(kFeatureVertexUvs)) return;
     const uvec4 v = triangles[triangle].vertices_material;

@@ -50,7 +50,10 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
             break;
 #endif
     }
-    if (found) hit.primitive = id, hit.material = material;
+    if (found) {
+        hit.primitive = id;
+        hit.material = material;
+    }
     return found;
 }
 
@@ -306,12 +309,16 @@ vec3 trace(Ray ray) {
         note_ray(top, f.ray, branch);
         start_frame(f);
         color[top] = f.color;
-        next[top] = 0, end[top] = 0;
+        next[top] = 0;
+        end[top] = 0;
         if (f.recurse) {
             const SecondaryRay a = f.branches.reflected, b = f.branches.refracted;
-            origin[2 * top] = a.ray.origin, direction[2 * top] = a.ray.direction;
-            origin[2 * top + 1] = b.ray.origin, direction[2 * top + 1] = b.ray.direction;
-            weight[2 * top] = a.weight, weight[2 * top + 1] = b.weight;
+            origin[2 * top] = a.ray.origin;
+            direction[2 * top] = a.ray.direction;
+            origin[2 * top + 1] = b.ray.origin;
+            direction[2 * top + 1] = b.ray.direction;
+            weight[2 * top] = a.weight;
+            weight[2 * top + 1] = b.weight;
             next[top] = a.valid ? 0 : 1;  // an invalid branch is skipped
             end[top] = b.valid ? 2 : 1;
         }
@@ -337,7 +344,9 @@ vec3 primitive_color(int id) {
     int rank = primitive_index(id);
     for (int k = 0; k < kind; ++k) rank += primitive_counts[k];
     uint h = uint(rank + 1) * 2654435761u;
-    h ^= h >> 15, h *= 2246822519u, h ^= h >> 13;
+    h ^= h >> 15;
+    h *= 2246822519u;
+    h ^= h >> 13;
     return vec3(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.0 * 0.8 +
            0.2;
 }

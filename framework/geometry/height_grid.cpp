@@ -34,7 +34,9 @@ TriangleMesh make_height_grid(std::size_t columns, std::size_t rows,
     std::vector<D3> sums(points.size(), D3(0));
     for (const auto& [a, b, c] : mesh.triangles) {
         const D3 n = glm::cross(points[b] - points[a], points[c] - points[a]);
-        sums[a] += n, sums[b] += n, sums[c] += n;
+        sums[a] += n;
+        sums[b] += n;
+        sums[c] += n;
     }
     mesh.vertices.reserve(points.size());
     mesh.normals.reserve(points.size());

@@ -431,7 +431,8 @@ ProceduralResolution procedural_resolution(std::string_view shape, std::size_t m
         // Square-ish cells: cells_z from the square root, then the fewest columns that reach n.
         std::size_t cells_z = std::max<std::size_t>(1, ceil_sqrt(ceil_div(n, 2)));
         std::size_t cells_x = ceil_div(n, 2 * cells_z);
-        r.a = int(cells_x), r.b = int(cells_z);
+        r.a = int(cells_x);
+        r.b = int(cells_z);
         r.triangles = 2 * cells_x * cells_z;
     } else {
         r.a = int(n);

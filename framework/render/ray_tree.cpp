@@ -202,7 +202,8 @@ std::string material_name(const PreparedScene& scene, int m) {
 
 PixelTree debug_pixel(const PreparedScene& scene, int x, int y) {
     PixelTree tree;
-    tree.x = x, tree.y = y;
+    tree.x = x;
+    tree.y = y;
     tree.color = shade_pixel(scene, x, y, &tree.root);
     return tree;
 }

@@ -96,8 +96,12 @@ PixelResult render_pixel(const PreparedScene& scene, RenderMode mode, int x, int
 // [nearest, farthest] hit, a deterministic reduction over all pixels.
 void map_depth(const std::vector<Real>& depth, Image& image) {
     Real near = kInfinity, far = 0;
-    for (Real d : depth)
-        if (d >= 0) near = std::min(near, d), far = std::max(far, d);
+    for (Real d : depth) {
+        if (d >= 0) {
+            near = std::min(near, d);
+            far = std::max(far, d);
+        }
+    }
     const Real span = far > near ? far - near : Real(1);
     for (std::size_t i = 0; i < depth.size(); ++i) {
         if (depth[i] < 0 || image.pixels[i] == kStubColor) continue;

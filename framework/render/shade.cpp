@@ -301,13 +301,17 @@ class RayTreeRecorder : public TraceObserver {
     void begin_ray(RayNode::Kind kind, int depth, const Ray& ray, const Color& ray_weight,
                    const Color& weight) override {
         RayNode* node = open_.empty() ? &root_ : &open_.back()->children.emplace_back();
-        node->kind = kind, node->depth = depth, node->ray = ray;
-        node->ray_weight = ray_weight, node->weight = weight;
+        node->kind = kind;
+        node->depth = depth;
+        node->ray = ray;
+        node->ray_weight = ray_weight;
+        node->weight = weight;
         open_.push_back(node);
     }
     void miss(const Color& background) override {
         RayNode& n = *open_.back();
-        n.local = background, n.contribution = n.weight * background;
+        n.local = background;
+        n.contribution = n.weight * background;
     }
     void shadow(const SurfacePoint& at, std::size_t light, const LightSample& sample,
                 const Color& transmittance) override {
@@ -315,17 +319,23 @@ class RayTreeRecorder : public TraceObserver {
         ShadowRecord record;
         record.light = light;
         const ShadowRay shadow = shadow_ray(at, sample);
-        record.ray = shadow.ray, record.t_range = shadow.t_range;
+        record.ray = shadow.ray;
+        record.t_range = shadow.t_range;
         record.transmittance = transmittance;
         Hit blocker;
-        if (nearest_hit(scene_, shadow.ray, shadow.t_range, blocker))
-            record.blocked_by = blocker.primitive, record.blocked_t = blocker.t;
+        if (nearest_hit(scene_, shadow.ray, shadow.t_range, blocker)) {
+            record.blocked_by = blocker.primitive;
+            record.blocked_t = blocker.t;
+        }
         open_.back()->shadows.push_back(record);
     }
     void hit(const Hit& hit, const SurfacePoint& at, const Color& local) override {
         RayNode& n = *open_.back();
-        n.hit = true, n.hit_record = hit, n.surface = at;
-        n.local = local, n.contribution = n.weight * local;
+        n.hit = true;
+        n.hit_record = hit;
+        n.surface = at;
+        n.local = local;
+        n.contribution = n.weight * local;
     }
     void end_ray() override { open_.pop_back(); }
 
@@ -344,7 +354,9 @@ Color trace(const PreparedScene& scene, const Ray& ray, int depth, const Color& 
     // Once per thread: constructing 65 frames per pixel would cost more than most pixels do.
     static thread_local Frame stack[kMaxTraceDepth + 1];
     int top = 0;
-    stack[0].ray = ray, stack[0].depth = depth, stack[0].weight = weight;
+    stack[0].ray = ray;
+    stack[0].depth = depth;
+    stack[0].weight = weight;
     if (observer) observer->begin_ray(RayNode::Kind::Camera, depth, ray, Color(1), weight);
     start_frame(scene, stack[0], observer, rays, stream);
     for (;;) {
@@ -354,7 +366,9 @@ Color trace(const PreparedScene& scene, const Ray& ray, int depth, const Color& 
             // Descend into the next branch, as a recursive call would.
             const SecondaryRay& s = branch(f, f.next);
             Frame& child = stack[++top];
-            child.ray = s.ray, child.depth = f.depth + 1, child.weight = f.weight * s.weight;
+            child.ray = s.ray;
+            child.depth = f.depth + 1;
+            child.weight = f.weight * s.weight;
             if (observer)
                 observer->begin_ray(
                     f.next == 0 ? RayNode::Kind::Reflection : RayNode::Kind::Refraction,

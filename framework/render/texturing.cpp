@@ -23,7 +23,9 @@ Vec3 noise_gradient(int x, int y, int z) {
     // gradients on every machine and in GLSL.
     std::uint32_t h =
         std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(z) * 83492791u;
-    h ^= h >> 13, h *= 0x5bd1e995u, h ^= h >> 15;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
     static const Real k = Real(0.70710678118654752);  // 1 / sqrt(2)
     static const Vec3 directions[12] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
                                         {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},

@@ -40,7 +40,8 @@ AreaLightHit nearest_area_light(const Scene& scene, const Ray& ray, Interval t_r
         const Real t = light.kind == AreaLightKind::Rectangle ? rectangle_t(light, ray)
                                                               : sphere_t(light, ray, t_range);
         if (!(t > t_range.min && t < t_range.max && t < hit.t)) continue;
-        hit.light = int(i), hit.t = t;
+        hit.light = int(i);
+        hit.t = t;
         const bool lit_side = light.kind == AreaLightKind::Sphere ||
                               glm::dot(glm::cross(light.edge_u, light.edge_v), ray.direction) < 0;
         hit.radiance = lit_side ? light.radiance : Color(0);

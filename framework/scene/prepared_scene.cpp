@@ -72,17 +72,25 @@ std::string Features::describe() const {
         if (!s.empty() && s.back() != ' ') s += ' ';
         s += name;
     };
-    add(spheres, "spheres"), add(planes, "planes"), add(triangles, "triangles"),
-        add(boxes, "boxes");
+    add(spheres, "spheres");
+    add(planes, "planes");
+    add(triangles, "triangles");
+    add(boxes, "boxes");
     s += " |";
-    add(ambient, "ambient"), add(diffuse, "diffuse"), add(specular, "specular");
-    add(emissive, "emissive"), add(reflection, "reflection"), add(refraction, "refraction");
+    add(ambient, "ambient");
+    add(diffuse, "diffuse");
+    add(specular, "specular");
+    add(emissive, "emissive");
+    add(reflection, "reflection");
+    add(refraction, "refraction");
     s += " |";
-    add(point_lights, "point"), add(directional_lights, "directional");
+    add(point_lights, "point");
+    add(directional_lights, "directional");
     add(shadows, "shadows");
     if (textures || normal_maps) {
         s += " |";
-        add(textures, "textures"), add(normal_maps, "normal-maps");
+        add(textures, "textures");
+        add(normal_maps, "normal-maps");
         std::string kinds;  // e.g. " (images checkers)"
         for (auto [on, name] : {std::pair{image_textures, "images"},
                                 {checker_textures, "checkers"},
@@ -93,10 +101,14 @@ std::string Features::describe() const {
     if (environment) s += " | environment";
     if (sampled()) {
         s += " | sampled:";
-        add(antialiasing, "antialiasing"), add(area_lights, "area-lights");
-        add(depth_of_field, "depth-of-field"), add(motion_blur, "motion-blur");
-        add(glossy, "glossy"), add(ambient_occlusion, "ambient-occlusion");
-        add(indirect_diffuse, "indirect-diffuse"), add(fog, "fog");
+        add(antialiasing, "antialiasing");
+        add(area_lights, "area-lights");
+        add(depth_of_field, "depth-of-field");
+        add(motion_blur, "motion-blur");
+        add(glossy, "glossy");
+        add(ambient_occlusion, "ambient-occlusion");
+        add(indirect_diffuse, "indirect-diffuse");
+        add(fog, "fog");
         add(path_tracing, "path-tracing");
     }
     return s;

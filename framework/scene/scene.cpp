@@ -116,7 +116,9 @@ Vec3 shading_normal(const Scene& scene, std::size_t triangle, Vec2 barycentric_u
 
 void triangle_vertex_uvs(const Scene& scene, std::size_t triangle, Vec2& a, Vec2& b, Vec2& c) {
     if (scene.uvs.empty()) {
-        a = Vec2(0, 0), b = Vec2(1, 0), c = Vec2(0, 1);
+        a = Vec2(0, 0);
+        b = Vec2(1, 0);
+        c = Vec2(0, 1);
         return;
     }
     const std::array<std::uint32_t, 3>& v = scene.triangles[triangle].v;

@@ -102,8 +102,10 @@ void SceneReader::check_keys(const json& object, const std::string& pointer,
     for (const auto& item : object.items()) {
         if (std::find(known.begin(), known.end(), item.key()) != known.end()) continue;
         std::size_t offset = positions_->key_offset(JsonPositions::child(pointer, item.key()));
-        if (!first_unknown || offset < first_offset)
-            first_unknown = item.key(), first_offset = offset;
+        if (!first_unknown || offset < first_offset) {
+            first_unknown = item.key();
+            first_offset = offset;
+        }
     }
     if (first_unknown)
         fail_key(JsonPositions::child(pointer, *first_unknown),

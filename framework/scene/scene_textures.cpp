@@ -161,8 +161,10 @@ TextureSlot SceneSections::mtl_texture_slot(const ObjTextureMap& map, bool data,
     }
     TextureSlot slot;
     slot.texture = index;
-    slot.scale[0] = map.scale[0], slot.scale[1] = map.scale[1];
-    slot.offset[0] = map.offset[0], slot.offset[1] = map.offset[1];
+    slot.scale[0] = map.scale[0];
+    slot.scale[1] = map.scale[1];
+    slot.offset[0] = map.offset[0];
+    slot.offset[1] = map.offset[1];
     return slot;
 }
 

@@ -187,7 +187,8 @@ void SceneSections::place_surface(const glm::dmat4& m, const GeometryMark& mark,
         Box& b = scene_.boxes.back();
         if (keeps_axes(m)) {
             const Vec3 p = transform_point(m, b.min), q = transform_point(m, b.max);
-            b.min = glm::min(p, q), b.max = glm::max(p, q);
+            b.min = glm::min(p, q);
+            b.max = glm::max(p, q);
             check(b.min), check(b.max);
         } else {
             Scene shape;

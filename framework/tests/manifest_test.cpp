@@ -59,7 +59,8 @@ TEST(CourseManifest, EveryGradedSceneGetsItsGradingJsonThresholds) {
             EXPECT_EQ(got.neighbourhood, want.neighbourhood);
             EXPECT_EQ(got.block, want.block);
             EXPECT_EQ(scene.thresholds.fail_percent, want.fail_percent);
-            ++scenes, blocks += got.block > 0;
+            ++scenes;
+            blocks += got.block > 0;
         }
     }
     EXPECT_GT(scenes, 40);

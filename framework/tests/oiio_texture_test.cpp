@@ -68,7 +68,8 @@ double mean_deviation(const Image& image, int y0, int y1, float grey, const Colo
         for (int x = 0; x < image.width; ++x) {
             const Color& c = image.at(x, y);
             if (std::abs(c.r - sky.r) < 1e-4f && std::abs(c.b - sky.b) < 1e-4f) continue;
-            sum += std::abs(c.g - grey), ++count;
+            sum += std::abs(c.g - grey);
+            ++count;
         }
     return count ? sum / count : 1e9;
 }

@@ -156,7 +156,8 @@ TEST(ProceduralMesh, TerrainIsBoundedAndFacesUp) {
         for (const rt::Vec3& p : mesh.vertices) {
             ASSERT_TRUE(p.x >= -1 && p.x <= 1 && p.z >= -1 && p.z <= 1);
             ASSERT_TRUE(p.y >= 0 && p.y <= rt::Real(0.4)) << p.y;
-            low = std::min(low, p.y), high = std::max(high, p.y);
+            low = std::min(low, p.y);
+            high = std::max(high, p.y);
         }
         EXPECT_GT(high - low, rt::Real(0.1)) << "a terrain, not a flat plane";
         for (std::size_t i = 0; i < mesh.triangles.size(); ++i)

@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 // A 2 x 1 PNG: stored values (64, 128, 255) and (0, 0, 0).
 void write_two_texel_png(const fs::path& file) {
     Image8 image;
-    image.width = 2, image.height = 1;
+    image.width = 2;
+    image.height = 1;
     image.data = {64, 128, 255, 0, 0, 0};
     write_image8(image, file);
 }
@@ -210,7 +211,8 @@ TEST(TextureLoading, AGreyNormalMapIsRefused) {
 TEST(Heightfield, OneVertexPerPixelFromTheStoredGrey) {
     TempDir dir("heightfield");
     Image8 image;
-    image.width = 3, image.height = 2;
+    image.width = 3;
+    image.height = 2;
     image.data = {0, 0, 0, 255, 255, 255, 0, 0, 0, 51, 51, 51, 51, 51, 51, 51, 51, 51};
     write_image8(image, dir.path() / "h.png");
     const fs::path scene = dir.write("s.json", R"({
@@ -235,7 +237,8 @@ TEST(Heightfield, OneVertexPerPixelFromTheStoredGrey) {
 TEST(Heightfield, TooSmallOrMissingImagesAreOneLineErrors) {
     TempDir dir("heightfield-bad");
     Image8 tiny;
-    tiny.width = 1, tiny.height = 1;
+    tiny.width = 1;
+    tiny.height = 1;
     tiny.data = {9, 9, 9};
     write_image8(tiny, dir.path() / "tiny.png");
     for (const char* file : {"tiny.png", "none.png"}) {

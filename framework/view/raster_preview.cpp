@@ -124,10 +124,18 @@ class MeshBuilder {
 // The scene's extent, for plane sizes and the depth range.
 Real scene_radius(const PreparedScene& scene, Vec3& center) {
     Vec3 lo(kInfinity), hi(-kInfinity);
-    const auto grow = [&](const Vec3& p) { lo = glm::min(lo, p), hi = glm::max(hi, p); };
-    for (const Sphere& s : scene.spheres)
-        grow(s.center - Vec3(s.radius)), grow(s.center + Vec3(s.radius));
-    for (const Box& b : scene.boxes) grow(b.min), grow(b.max);
+    const auto grow = [&](const Vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    };
+    for (const Sphere& s : scene.spheres) {
+        grow(s.center - Vec3(s.radius));
+        grow(s.center + Vec3(s.radius));
+    }
+    for (const Box& b : scene.boxes) {
+        grow(b.min);
+        grow(b.max);
+    }
     for (const Vec3& v : scene.vertices) grow(v);
     for (const Plane& p : scene.planes) grow(p.point);
     grow(scene.camera.eye);

@@ -158,7 +158,11 @@ void read_runs(const std::string& output,
         std::size_t a = member_of(m[1]), b = member_of(m[4]);
         SimilarityRun r{std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[5]), std::stoi(m[6]),
                         std::stoi(m[7])};
-        if (a > b) std::swap(a, b), std::swap(r.a_first, r.b_first), std::swap(r.a_last, r.b_last);
+        if (a > b) {
+            std::swap(a, b);
+            std::swap(r.a_first, r.b_first);
+            std::swap(r.a_last, r.b_last);
+        }
         const auto p = pairs.find({a, b});
         if (p != pairs.end()) p->second.runs.push_back(r);
     }

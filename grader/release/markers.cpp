@@ -102,8 +102,10 @@ class MarkerScanner {
             error(number, "second " + quote(kStub) + " in the region opened at line " +
                               std::to_string(begin_line_) + " (first at line " +
                               std::to_string(stub_line_) + "); keep only one");
-        else
-            state_ = State::Stub, stub_line_ = number;
+        else {
+            state_ = State::Stub;
+            stub_line_ = number;
+        }
     }
 
     void end(int number) {

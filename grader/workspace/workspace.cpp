@@ -132,8 +132,10 @@ void strip_workspace_roots(const Workspace& w, const fs::path& scratch,
         for (const auto& s : graded) {
             if (s.number != number) continue;
             const std::string from = dir.string() + "/", to = s.folder + "/";
-            for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p))
-                text.replace(p, from.size(), to), p += to.size();
+            for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p)) {
+                text.replace(p, from.size(), to);
+                p += to.size();
+            }
         }
     for (const auto& root :
          {w.src.string() + "/", w.build.string() + "/", scratch.string() + "/"}) {

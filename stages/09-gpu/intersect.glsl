@@ -26,7 +26,8 @@ bool intersect_sphere(Ray ray, vec4 center_radius, Interval t_range, inout Hit h
     float t1 = q != 0.0 ? c / q : t0;
     if (t0 > t1) {
         const float swap = t0;
-        t0 = t1, t1 = swap;
+        t0 = t1;
+        t1 = swap;
     }
     float t = t0;
     if (!contains(t_range, t)) {
@@ -137,15 +138,18 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
 #ifdef HAS_SPHERES
     for (int i = 0; i < primitive_counts.x; ++i)
         if (intersect_sphere(ray, spheres[i].center_radius, t_range, hit)) {
-            found = true, t_range.max = hit.t;
-            hit.primitive = primitive_id(kSphere, i), hit.material = spheres[i].material.x;
+            found = true;
+            t_range.max = hit.t;
+            hit.primitive = primitive_id(kSphere, i);
+            hit.material = spheres[i].material.x;
         }
 #endif
 #ifdef HAS_PLANES
     for (int i = 0; i < primitive_counts.y; ++i)
         if (intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz, t_range,
                             hit)) {
-            found = true, t_range.max = hit.t;
+            found = true;
+            t_range.max = hit.t;
             hit.primitive = primitive_id(kPlane, i);
             hit.material = floatBitsToInt(planes[i].point_material.w);
         }
@@ -155,7 +159,8 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
         vec3 a, b, c;
         triangle_vertices(i, a, b, c);
         if (intersect_triangle(ray, a, b, c, t_range, hit)) {
-            found = true, t_range.max = hit.t;
+            found = true;
+            t_range.max = hit.t;
             hit.primitive = primitive_id(kTriangle, i);
             hit.material = int(triangles[i].vertices_material.w);
         }
@@ -164,7 +169,8 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
 #ifdef HAS_BOXES
     for (int i = 0; i < primitive_counts.w; ++i)
         if (intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit)) {
-            found = true, t_range.max = hit.t;
+            found = true;
+            t_range.max = hit.t;
             hit.primitive = primitive_id(kBox, i);
             hit.material = floatBitsToInt(boxes[i].min_material.w);
         }

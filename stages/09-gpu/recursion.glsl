@@ -63,7 +63,8 @@ struct SecondaryRays {
 // weight from refraction to reflection), origins from offset_ray_origin; zero weight: not valid.
 SecondaryRays secondary_rays(Ray incoming, SurfacePoint at, Material material, bool use_fresnel) {
     SecondaryRays result;
-    result.reflected.valid = false, result.refracted.valid = false;
+    result.reflected.valid = false;
+    result.refracted.valid = false;
     result.total_internal_reflection = false;
     // BEGIN SOLUTION
     const vec3 d = normalize(incoming.direction);

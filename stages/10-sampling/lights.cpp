@@ -208,7 +208,10 @@ FogEvent sample_fog(const Medium& medium, const Ray& ray, Real t_max, Real u) {
     const Interval inside = medium_interval(medium, ray, Interval{0, t_max});
     if (!(inside.min < inside.max)) return event;
     const Real t = inside.min + sample_free_flight(medium.density, u) / glm::length(ray.direction);
-    if (t < inside.max) event.scattered = true, event.t = t;
+    if (t < inside.max) {
+        event.scattered = true;
+        event.t = t;
+    }
     return event;
     // STUB
     // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#optional-fog");

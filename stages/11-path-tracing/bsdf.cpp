@@ -127,10 +127,12 @@ BsdfSample sample_dielectric(const Material& m, const Vec3& wo, Real u_lobe) {
     Vec3 refracted;
     const Vec3 normal(0, 0, entering ? 1 : -1);
     if (u_lobe < reflectance || !refract(-wo, normal, n1 / n2, refracted)) {
-        s.wi = Vec3(-wo.x, -wo.y, wo.z), s.weight = Color(1);
+        s.wi = Vec3(-wo.x, -wo.y, wo.z);
+        s.weight = Color(1);
         return s;
     }
-    s.wi = refracted, s.weight = m.transmissive;
+    s.wi = refracted;
+    s.weight = m.transmissive;
     return s;
 }
 

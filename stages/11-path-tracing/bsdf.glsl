@@ -107,10 +107,12 @@ BsdfSample sample_dielectric(Material m, vec3 wo, float u_lobe) {
     vec3 refracted = vec3(0);
     const vec3 normal = vec3(0, 0, entering ? 1.0 : -1.0);
     if (u_lobe < reflectance || !refract_direction(-wo, normal, n1 / n2, refracted)) {
-        s.wi = vec3(-wo.x, -wo.y, wo.z), s.weight = vec3(1);
+        s.wi = vec3(-wo.x, -wo.y, wo.z);
+        s.weight = vec3(1);
         return s;
     }
-    s.wi = refracted, s.weight = m.transmissive_ior.rgb;
+    s.wi = refracted;
+    s.weight = m.transmissive_ior.rgb;
     return s;
 }
 // STUB

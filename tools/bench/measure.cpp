@@ -294,12 +294,18 @@ glm::vec3 shade(const SceneT<T>& s, const V3<T>& o, const V3<T>& d, TriFn<T> tri
             }
             T a = (x.lo[i] - o[i]) / d[i], b = (x.hi[i] - o[i]) / d[i];
             if (a > b) std::swap(a, b);
-            if (a > t0) t0 = a, axis = i;
+            if (a > t0) {
+                t0 = a;
+                axis = i;
+            }
             if (b < t1) t1 = b;
             miss = t0 > t1;
         }
         if (miss || axis < 0 || !(t0 < tmax)) continue;
-        tmax = t0, n = V3<T>(0), n[axis] = 1, found = true;
+        tmax = t0;
+        n = V3<T>(0);
+        n[axis] = 1;
+        found = true;
     }
     if (!found) return glm::vec3(0);
     if (glm::dot(n, d) > 0) n = -n;
@@ -364,7 +370,10 @@ MeshVerdict judge_mesh(const std::vector<PairTruth>& truth, const std::vector<ch
         bool on_edge = false;
         for (std::size_t i = 0; i < truth.size(); ++i) {
             if (truth[i].facing != side) continue;
-            if (truth[i].hit) exact_count++, on_edge = on_edge || truth[i].region > 0;
+            if (truth[i].hit) {
+                exact_count++;
+                on_edge = on_edge || truth[i].region > 0;
+            }
             if (reported[i]) reported_count++;
         }
         if (exact_count > 1) on_edge = true;

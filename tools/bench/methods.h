@@ -131,10 +131,13 @@ Result<T> watertight(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>
     const T Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
     T U, V, W;
     if constexpr (Fused) {
-        U = std::fma(Cx, By, -(Cy * Bx)), V = std::fma(Ax, Cy, -(Ay * Cx)),
+        U = std::fma(Cx, By, -(Cy * Bx));
+        V = std::fma(Ax, Cy, -(Ay * Cx));
         W = std::fma(Bx, Ay, -(By * Ax));
     } else {
-        U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
+        U = Cx * By - Cy * Bx;
+        V = Ax * Cy - Ay * Cx;
+        W = Bx * Ay - By * Ax;
     }
     if (U == 0 || V == 0 || W == 0) {
         U = detail::difference_of_products_exact_sign(Cx, By, Cy, Bx);
@@ -147,7 +150,10 @@ Result<T> watertight(const V3<T>& o, const V3<T>& d, const V3<T>& a, const V3<T>
     const T Az = Sz * A[kz], Bz = Sz * B[kz], Cz = Sz * C[kz];
     T Tn = U * Az + V * Bz + W * Cz;
     T det_abs = det;
-    if (det < 0) det_abs = -det, Tn = -Tn;
+    if (det < 0) {
+        det_abs = -det;
+        Tn = -Tn;
+    }
     if (!(Tn > tmin * det_abs) || !(Tn < tmax * det_abs)) return r;
     const T t = Tn * (T(1) / det_abs);
     if (!(tmin < t && t < tmax)) return r;

@@ -158,7 +158,8 @@ Color strategy_radiance(const PreparedScene& scene, const Ray& camera_ray, Sampl
         const BsdfSample s = sample_bsdf(material, wo, u_lobe, stream.next2());
         if (s.weight == Color(0)) break;
         throughput *= s.weight;
-        full_weight = s.delta, bounce_pdf = s.pdf;
+        full_weight = s.delta;
+        bounce_pdf = s.pdf;
         const Vec3 direction = frame.to_world(s.wi);
         ray = spawn_ray(at, glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal, direction);
         if (depth >= 3) {
@@ -177,14 +178,16 @@ MisSeries measure_mis_strategies(const std::function<void(const std::string&)>& 
     series.reference = "reference_images/11-path-tracing/veach_mis.png";
     series.threads = resolve_thread_count(0);
     const PreparedScene scene = prepare_scene(load_scene(source_dir() / series.scene));
-    series.width = scene.image.width, series.height = scene.image.height;
+    series.width = scene.image.width;
+    series.height = scene.image.height;
     const Image8 reference = read_image8(source_dir() / series.reference);
     // The reference is the scene's seed at 2048 samples: another seed keeps the noise apart.
     const std::uint64_t seed = scene.sampling.seed + 1000;
     for (LightStrategy strategy : {LightStrategy::Nee, LightStrategy::Bsdf, LightStrategy::Mis}) {
         for (int spp = 1; spp <= 256; spp *= 4) {
             MisPoint p;
-            p.strategy = strategy_name(strategy), p.spp = spp;
+            p.strategy = strategy_name(strategy);
+            p.spp = spp;
             const auto start = std::chrono::steady_clock::now();
             const Image8 image = render_strategy(scene, strategy, spp, seed);
             p.ms =

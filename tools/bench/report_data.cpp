@@ -17,7 +17,11 @@ double rmse_slope(const std::vector<SamplingPoint>& points, const std::string& s
     for (const SamplingPoint& p : points) {
         if (p.scene != scene || !(p.rmse > 0)) continue;
         const double x = std::log(double(p.spp)), y = std::log(p.rmse);
-        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+        n += 1;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
     }
     return n < 2 ? 0 : (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
@@ -104,7 +108,9 @@ ReportCounts parse_report(const std::string& md) {
         if ((section == "triangle" || section == "sphere") && c.size() >= 11) {
             Row row;
             row.family = section;
-            row.scenario = c[0], row.method = c[1], row.precision = c[2];
+            row.scenario = c[0];
+            row.method = c[1];
+            row.precision = c[2];
             row.counts.cases = leading(c[4]);
             row.counts.false_miss = leading(c[5]);
             row.counts.false_hit = leading(c[6]);
@@ -113,9 +119,14 @@ ReportCounts parse_report(const std::string& md) {
             out.rows.push_back(row);
         } else if (section == "self" && c.size() >= 8) {
             SelfRow s;
-            s.strategy = c[0], s.precision = c[1], s.scale = std::stod(c[2]);
-            s.rays = leading(c[3]), s.self_hits = leading(c[4]), s.occluder_rays = leading(c[5]);
-            s.missed_gap_1e2 = leading(c[6]), s.missed_gap_1e4 = leading(c[7]);
+            s.strategy = c[0];
+            s.precision = c[1];
+            s.scale = std::stod(c[2]);
+            s.rays = leading(c[3]);
+            s.self_hits = leading(c[4]);
+            s.occluder_rays = leading(c[5]);
+            s.missed_gap_1e2 = leading(c[6]);
+            s.missed_gap_1e4 = leading(c[7]);
             out.self.push_back(s);
         }
     }

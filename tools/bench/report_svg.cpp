@@ -66,19 +66,37 @@ struct PlotPoint {
     std::string color;
 };
 
+// The ranges of two log axes: whole decades around the points, which are first clamped to
+// y_floor and x >= 1e-3 (a log axis has no zero).
+struct LogRanges {
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+};
+
+LogRanges log_ranges(std::vector<PlotPoint>& pts, double y_floor) {
+    for (auto& p : pts) {
+        p.y = std::max(p.y, y_floor);
+        p.x = std::max(p.x, 1e-3);
+    }
+    LogRanges r;
+    for (const auto& p : pts) {
+        r.x0 = std::min(r.x0, p.x);
+        r.x1 = std::max(r.x1, p.x);
+        r.y0 = std::min(r.y0, p.y);
+        r.y1 = std::max(r.y1, p.y);
+    }
+    r.x0 = std::pow(10, std::floor(std::log10(r.x0)));
+    r.x1 = std::pow(10, std::ceil(std::log10(r.x1)));
+    r.y0 = std::pow(10, std::floor(std::log10(r.y0)));
+    r.y1 = std::pow(10, std::ceil(std::log10(r.y1)));
+    if (r.x1 <= r.x0) r.x1 = r.x0 * 10;
+    if (r.y1 <= r.y0) r.y1 = r.y0 * 10;
+    return r;
+}
+
 std::string svg_plot(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                      std::vector<PlotPoint> pts, double y_floor, const std::string& note) {
     const double W = 640, H = 400, L = 70, R = 20, T = 40, B = 55;
-    for (auto& p : pts) p.y = std::max(p.y, y_floor), p.x = std::max(p.x, 1e-3);  // log axes
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (const auto& p : pts) {
-        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    }
-    x0 = std::pow(10, std::floor(std::log10(x0))), x1 = std::pow(10, std::ceil(std::log10(x1)));
-    y0 = std::pow(10, std::floor(std::log10(y0))), y1 = std::pow(10, std::ceil(std::log10(y1)));
-    if (x1 <= x0) x1 = x0 * 10;
-    if (y1 <= y0) y1 = y0 * 10;
+    const auto [x0, x1, y0, y1] = log_ranges(pts, y_floor);
     auto X = [&](double x) {
         return L +
                (W - L - R) * (std::log10(x) - std::log10(x0)) / (std::log10(x1) - std::log10(x0));

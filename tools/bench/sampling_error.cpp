@@ -43,10 +43,13 @@ double rmse8(const Image8& a, const Image8& b) {
 SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
                                       const std::function<void(const std::string&)>& progress) {
     SamplingSeries series;
-    series.width = width, series.height = height, series.reference_spp = reference_spp;
+    series.width = width;
+    series.height = height;
+    series.reference_spp = reference_spp;
     series.threads = resolve_thread_count(0);
     CompareOptions grader;  // stage 10's grading.json
-    grader.block = 8, grader.tolerance = 6;
+    grader.block = 8;
+    grader.tolerance = 6;
     for (const char* name : kScenes) {
         PreparedScene scene = prepare_scene(load_scene(source_dir() / "stages" / "10-sampling" /
                                                        "scenes" / (std::string(name) + ".json")),
@@ -56,7 +59,8 @@ SamplingSeries measure_sampling_error(int width, int height, int reference_spp,
         const Image8 reference = render_with(scene, reference_spp, seed + 1000, nullptr);
         for (int spp = 1; spp <= 256; spp *= 4) {
             SamplingPoint p;
-            p.scene = name, p.spp = spp;
+            p.scene = name;
+            p.spp = spp;
             const Image8 image = render_with(scene, spp, seed, &p.ms);
             p.rmse = rmse8(image, reference);
             p.block_percent = compare_images(image, reference, grader).failing_percent;

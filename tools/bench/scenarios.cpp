@@ -226,7 +226,10 @@ void make_mesh_scenario(Scenario& s, Rng& rng, int n, const std::vector<Target>&
     while (int(s.rays.size()) < n) {
         const int mi = rng.integer(0, kMeshes - 1);
         MeshCase c;
-        if (mesh_ray(rng, s.meshes[mi], mi, kinds[i % kinds.size()], c)) s.rays.push_back(c), ++i;
+        if (mesh_ray(rng, s.meshes[mi], mi, kinds[i % kinds.size()], c)) {
+            s.rays.push_back(c);
+            ++i;
+        }
     }
 }
 

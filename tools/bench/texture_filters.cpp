@@ -26,7 +26,9 @@ struct Texels {
     int w = 0, h = 0;
     std::vector<Color> linear;
     const Color& at(int i, int j) const {
-        i = ((i % w) + w) % w, j = ((j % h) + h) % h;  // repeat
+        // repeat
+        i = ((i % w) + w) % w;
+        j = ((j % h) + h) % h;
         return linear[std::size_t(j) * w + i];
     }
 };
@@ -59,10 +61,14 @@ struct View {
         const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         for (int k = 0; k < 3; ++k) f[k] = d[k] / n;
         // right = normalize(f x (0, 1, 0)), up = r x f
-        r[0] = -f[2], r[1] = 0, r[2] = f[0];
+        r[0] = -f[2];
+        r[1] = 0;
+        r[2] = f[0];
         const double rn = std::sqrt(r[0] * r[0] + r[2] * r[2]);
-        r[0] /= rn, r[2] /= rn;
-        u[0] = r[1] * f[2] - r[2] * f[1], u[1] = r[2] * f[0] - r[0] * f[2];
+        r[0] /= rn;
+        r[2] /= rn;
+        u[0] = r[1] * f[2] - r[2] * f[1];
+        u[1] = r[2] * f[0] - r[0] * f[2];
         u[2] = r[0] * f[1] - r[1] * f[0];
     }
     // Texture coordinates where the ray through image point (px, py) meets the floor; false
@@ -75,7 +81,8 @@ struct View {
         for (int k = 0; k < 3; ++k) d[k] = f[k] + x * r[k] + y * u[k];
         if (d[1] >= 0) return false;
         const double hit = (-1 - eye[1]) / d[1];
-        s = (eye[0] + hit * d[0]) * 0.25, t = (eye[2] + hit * d[2]) * 0.25;
+        s = (eye[0] + hit * d[0]) * 0.25;
+        t = (eye[2] + hit * d[2]) * 0.25;
         return true;
     }
 };
@@ -124,8 +131,14 @@ struct Scorer {
                     continue;
                 }
                 // A neighbour above the horizon gives no footprint in its direction.
-                if (!view.uv(x + 1.5, y + 0.5, s1, t1)) s1 = s, t1 = t;
-                if (!view.uv(x + 0.5, y + 1.5, s2, t2)) s2 = s, t2 = t;
+                if (!view.uv(x + 1.5, y + 0.5, s1, t1)) {
+                    s1 = s;
+                    t1 = t;
+                }
+                if (!view.uv(x + 0.5, y + 1.5, s2, t2)) {
+                    s2 = s;
+                    t2 = t;
+                }
                 image[std::size_t(y) * width + x] = lookup(s, t, s1 - s, t1 - t, s2 - s, t2 - t);
             }
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();

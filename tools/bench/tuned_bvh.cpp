@@ -416,7 +416,10 @@ bool nearest(const PreparedScene& scene, const Bvh& bvh, const Ray& ray, Interva
             const bool hit_near = slab_test(*near, slab_ray, t_range, t_near);
             const bool hit_far = slab_test(*far, slab_ray, t_range, t_far);
             if (hit_near && hit_far) {  // the nearer first (the left on a tie), the other waits
-                if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
+                if (t_far < t_near) {
+                    std::swap(near, far);
+                    std::swap(t_near, t_far);
+                }
                 stack[top++] = {std::uint32_t(far - nodes.data()), t_far};
             }
             node = hit_near ? near : hit_far ? far : nullptr;

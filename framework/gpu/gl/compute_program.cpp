@@ -62,7 +62,8 @@ std::string draw_fragment_shader(const GlApi& gl, const std::string& fragment, i
     gl.AttachShader(program, vertex);
     gl.AttachShader(program, pixel);
     gl.LinkProgram(program);
-    gl.DeleteShader(vertex), gl.DeleteShader(pixel);
+    gl.DeleteShader(vertex);
+    gl.DeleteShader(pixel);
     GLint ok = 0;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {

@@ -126,7 +126,8 @@ void read_gpu_probe(const std::vector<glm::vec4>& output, std::size_t pixel_coun
 GpuPixelProbe debug_pixel_gpu(const PreparedScene& scene, RenderMode mode, int x, int y,
                               const GpuRenderOptions& options) {
     GpuPixelProbe probe;
-    probe.x = x, probe.y = y;
+    probe.x = x;
+    probe.y = y;
     GpuRenderer renderer(options);
     renderer.render(scene, mode, nullptr, &probe);
     return probe;

@@ -59,7 +59,8 @@ std::string glslang_errors(const std::string& wrapped, const ShadertoyExport& sh
     std::ifstream in(log);
     std::ostringstream text;
     text << in.rdbuf();
-    fs::remove(file), fs::remove(log);
+    fs::remove(file);
+    fs::remove(log);
     if (status == 0) return "";
     std::string errors = text.str();  // without the line naming the wrapped file, which is gone
     if (errors.starts_with(file.string() + "\n")) errors.erase(0, file.string().size() + 1);

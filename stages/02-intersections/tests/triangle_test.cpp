@@ -63,7 +63,10 @@ TEST_F(Triangle, BarycentricsReproduceThePoint) {
     for (int i = 0; i < 500; ++i) {
         const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
         Real beta0 = w(rng), gamma0 = w(rng);
-        if (beta0 + gamma0 > Real(0.95)) beta0 *= Real(0.5), gamma0 *= Real(0.5);
+        if (beta0 + gamma0 > Real(0.95)) {
+            beta0 *= Real(0.5);
+            gamma0 *= Real(0.5);
+        }
         const Vec3 target = (1 - beta0 - gamma0) * a + beta0 * b + gamma0 * c;
         const Vec3 origin(u(rng), u(rng), 4);
         const Ray aimed{origin, target - origin};

@@ -30,21 +30,26 @@ void expect_color_near(const Color& actual, const Color& expected, const std::st
 
 Light point_light(Vec3 position, Color intensity, Vec3 attenuation = Vec3(1, 0, 1)) {
     Light l;
-    l.kind = LightKind::Point, l.position = position, l.intensity = intensity,
+    l.kind = LightKind::Point;
+    l.position = position;
+    l.intensity = intensity;
     l.attenuation = attenuation;
     return l;
 }
 
 Light directional_light(Vec3 direction, Color intensity) {
     Light l;
-    l.kind = LightKind::Directional, l.direction = glm::normalize(direction),
+    l.kind = LightKind::Directional;
+    l.direction = glm::normalize(direction);
     l.intensity = intensity;
     return l;
 }
 
 Material material(Color kd, Color ks, float shininess) {
     Material m;
-    m.diffuse = kd, m.specular = ks, m.shininess = shininess;
+    m.diffuse = kd;
+    m.specular = ks;
+    m.shininess = shininess;
     return m;
 }
 
@@ -139,7 +144,8 @@ TEST_F(DirectLight, EmissiveAndAmbient) {
     PreparedScene scene;
     scene.ambient_light = Color(0.5f, 0.25f, 1);
     Material m;
-    m.emissive = Color(0.1f, 0.2f, 0.3f), m.ambient = Color(0.2f);
+    m.emissive = Color(0.1f, 0.2f, 0.3f);
+    m.ambient = Color(0.2f);
     expect_color_near(direct_light(scene, m, Vec3(0), Vec3(0, 1, 0), Vec3(0, 1, 0)),
                       Color(0.2f, 0.25f, 0.5f), "no lights: k_e + k_a I_a");
 }
@@ -171,7 +177,8 @@ PreparedScene one_sphere(const Light& light) {
     scene.max_depth = 0;
     scene.ambient_light = Color(0.2f);
     Material m = material(Color(0.6f, 0.4f, 0.2f), Color(0.5f), 20);
-    m.ambient = Color(0.25f), m.emissive = Color(0.01f, 0.02f, 0.03f);
+    m.ambient = Color(0.25f);
+    m.emissive = Color(0.01f, 0.02f, 0.03f);
     scene.materials = {m};
     scene.spheres = {Sphere{Vec3(0), 1, 0}};
     scene.lights = {light};

@@ -21,13 +21,16 @@ RT_TEST_SUITE(Transmittance, "coloured-shadows-through-glass");
 
 Light point_light(Vec3 position) {
     Light l;
-    l.kind = LightKind::Point, l.position = position, l.intensity = Color(10);
+    l.kind = LightKind::Point;
+    l.position = position;
+    l.intensity = Color(10);
     return l;
 }
 
 Light directional_light(Vec3 direction, Color intensity = Color(1)) {
     Light l;
-    l.kind = LightKind::Directional, l.direction = glm::normalize(direction),
+    l.kind = LightKind::Directional;
+    l.direction = glm::normalize(direction);
     l.intensity = intensity;
     return l;
 }

@@ -102,7 +102,9 @@ SurfacePoint flat_point(Vec3 normal, bool front_face) {
 
 Material mirror_glass(Color k_r, Color k_t, float ior) {
     Material m;
-    m.reflective = k_r, m.transmissive = k_t, m.ior = ior;
+    m.reflective = k_r;
+    m.transmissive = k_t;
+    m.ior = ior;
     return m;
 }
 
@@ -237,7 +239,9 @@ TEST_F(Secondary, FresnelWeights) {
 TEST_F(Recursion, DepthLimitRespected) {
     PreparedScene scene;
     Material m;
-    m.diffuse = Color(0), m.emissive = Color(0.1f, 0.2f, 0.4f), m.reflective = Color(0.5f);
+    m.diffuse = Color(0);
+    m.emissive = Color(0.1f, 0.2f, 0.4f);
+    m.reflective = Color(0.5f);
     scene.materials = {m};
     scene.planes = {Plane{Vec3(0), Vec3(0, 0, 1), 0}, Plane{Vec3(0, 0, 2), Vec3(0, 0, -1), 0}};
     refresh_features(scene);

@@ -28,14 +28,20 @@ BvhPrimitive box_primitive(Vec3f lo, Vec3f hi, std::uint32_t id) {
 float reference_cost(const std::vector<BvhPrimitive>& prims, int axis, int k,
                      const BvhBuildOptions& o) {
     Aabb all, centroids, left, right;
-    for (const auto& p : prims) all.grow(p.bounds), centroids.grow(p.centroid);
+    for (const auto& p : prims) {
+        all.grow(p.bounds);
+        centroids.grow(p.centroid);
+    }
     std::uint32_t n_left = 0, n_right = 0;
     const float scale = float(o.bins) / (centroids.max[axis] - centroids.min[axis]);
     for (const auto& p : prims) {
-        if (bin_of(p.centroid[axis], centroids.min[axis], scale, o.bins) < k)
-            left.grow(p.bounds), ++n_left;
-        else
-            right.grow(p.bounds), ++n_right;
+        if (bin_of(p.centroid[axis], centroids.min[axis], scale, o.bins) < k) {
+            left.grow(p.bounds);
+            ++n_left;
+        } else {
+            right.grow(p.bounds);
+            ++n_right;
+        }
     }
     if (n_left == 0 || n_right == 0) return std::numeric_limits<float>::infinity();
     return o.traversal_cost +
@@ -153,9 +159,12 @@ TEST_F(BvhBuild, TreesOverProceduralMeshesAreValid) {
     expect_valid_tree(scene_from_mesh(make_terrain(30, 30, 4)), {}, "terrain");
     expect_valid_tree(scene_from_mesh(make_triangle_soup(2000, 9)), {}, "soup");
     BvhBuildOptions options;
-    options.max_leaf_size = 1, options.bins = 2;
+    options.max_leaf_size = 1;
+    options.bins = 2;
     expect_valid_tree(scene_from_mesh(make_torus(30, 12)), options, "torus, 2 bins, leaves of 1");
-    options.max_leaf_size = 16, options.bins = 64, options.traversal_cost = 4;
+    options.max_leaf_size = 16;
+    options.bins = 64;
+    options.traversal_cost = 4;
     expect_valid_tree(scene_from_mesh(make_icosphere(2)), options,
                       "icosphere, 64 bins, leaves of 16");
 }

@@ -248,7 +248,8 @@ TEST_F(AnyHit, StopsEarlierThanNearest) {
         Hit hit;
         bvh_intersect_any(scene, ray, Interval{0, kInfinity}, &a);
         bvh_intersect_nearest(scene, ray, Interval{0, kInfinity}, hit, &n);
-        any_tests += a.primitives_tested, nearest_tests += n.primitives_tested;
+        any_tests += a.primitives_tested;
+        nearest_tests += n.primitives_tested;
     }
     EXPECT_LT(any_tests, nearest_tests) << "any-hit should stop at the first hit it finds";
 }

@@ -81,7 +81,8 @@ TEST_F(Noise, ContinuousBoundedAndNotConstant) {
         EXPECT_LE(std::abs(n), 1) << "at sample " << i;
         // A tiny step changes the value a little: no jumps at cell borders.
         EXPECT_NEAR(gradient_noise(p + Vec3(1e-3f, 0, 0)), n, 1e-2) << "jump near sample " << i;
-        lowest = std::min(lowest, n), highest = std::max(highest, n);
+        lowest = std::min(lowest, n);
+        highest = std::max(highest, n);
     }
     EXPECT_GT(highest - lowest, 0.5f) << "noise over 400 points should vary";
 }
@@ -93,7 +94,8 @@ TEST_F(Marble, BetweenItsColorsAndVaried) {
         EXPECT_NEAR(c.r + c.b, 1, 1e-5) << "a mix of a and b at sample " << i;
         EXPECT_GE(c.r, -1e-6f);
         EXPECT_GE(c.b, -1e-6f);
-        reds += c.r, blues += c.b;
+        reds += c.r;
+        blues += c.b;
     }
     EXPECT_GT(reds, 20) << "veins of both colours";
     EXPECT_GT(blues, 20) << "veins of both colours";

@@ -113,7 +113,8 @@ TEST_F(TriangleTexcoord, TheTexturingStepUsesVertexUvsNotBarycentrics) {
     hit.primitive = Scene::primitive_id(Scene::Kind::Triangle, 0);
     hit.uv = Vec2(0.25f, 0.5f);
     SurfacePoint at;
-    at.point = Vec3(0.25f, 0.5f, 0), at.normal = Vec3(0, 0, 1);
+    at.point = Vec3(0.25f, 0.5f, 0);
+    at.normal = Vec3(0, 0, 1);
     expect_uv(surface_texcoord(scene, hit, at), Vec2(0.625f, 0.75f), "vertex uvs interpolated");
     scene.uvs.clear();  // no uvs anywhere: corners (0, 0), (1, 0), (0, 1)
     expect_uv(surface_texcoord(scene, hit, at), Vec2(0.25f, 0.5f), "default corners");

@@ -48,7 +48,8 @@ TEST(GpuDebugPixel, LeavesTheImageAsItWas) {
     GpuRenderer renderer;
     const Image plain = renderer.render(scene, RenderMode::Shaded);
     GpuPixelProbe probe;
-    probe.x = 100, probe.y = 80;
+    probe.x = 100;
+    probe.y = 80;
     const Image probed = renderer.render(scene, RenderMode::Shaded, nullptr, &probe);
     EXPECT_EQ(probed.pixels, plain.pixels);
     EXPECT_GT(probe.made, 0);
@@ -93,7 +94,8 @@ TEST(GpuDebugPixel, StudentValuesNameTheirFileAndLine) {
     GpuRenderOptions options;
     options.student_dir = copy.dir();
     PreparedScene scene = whitted();
-    scene.image.width = 40, scene.image.height = 30;
+    scene.image.width = 40;
+    scene.image.height = 30;
     const GpuPixelProbe probe = debug_pixel_gpu(scene, RenderMode::Shaded, 7, 3, options);
     const std::string text = gpu_pixel_text(scene, probe);
     const std::string where = "rt_debug at " + (copy.dir() / "camera.glsl").string() + ":" +

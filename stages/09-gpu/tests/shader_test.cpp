@@ -192,7 +192,8 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
             const int status = std::system(
                 ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
             EXPECT_EQ(status, 0) << students << ":\n" << map_compile_log(read(log), shader.files);
-            fs::remove(file), fs::remove(log);
+            fs::remove(file);
+            fs::remove(log);
         }
 }
 
@@ -433,7 +434,8 @@ TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
     const int status = std::system(
         ("glslangValidator '" + file.string() + "' > '" + log.string() + "' 2>&1").c_str());
     EXPECT_EQ(status, 0) << read(log);
-    fs::remove(file), fs::remove(log);
+    fs::remove(file);
+    fs::remove(log);
 }
 
 }  // namespace

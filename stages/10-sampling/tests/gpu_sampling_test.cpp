@@ -101,7 +101,8 @@ RT_TEST_SUITE(GpuSampledRuns, "optional-the-gpu");
 // depend on its pixel and index only) and on either headless context; no stub reached.
 TEST_F(GpuSampledRuns, DeterministicForAnyBatchSize) {
     PreparedScene scene = gpu_sampling_scene("soft_shadows");
-    scene.image.width = 32, scene.image.height = 24;
+    scene.image.width = 32;
+    scene.image.height = 24;
     ::rt::testing::expect_gpu_deterministic(scene);
 }
 

@@ -22,21 +22,28 @@ using stats::kSamples;
 
 SurfacePoint point_at(const Vec3& p, const Vec3& normal) {
     SurfacePoint at;
-    at.point = p, at.normal = glm::normalize(normal), at.error = Vec3(0);
+    at.point = p;
+    at.normal = glm::normalize(normal);
+    at.error = Vec3(0);
     return at;
 }
 
 AreaLight rectangle(Vec3 corner, Vec3 edge_u, Vec3 edge_v, Color radiance = Color(1)) {
     AreaLight l;
     l.kind = AreaLightKind::Rectangle;
-    l.corner = corner, l.edge_u = edge_u, l.edge_v = edge_v, l.radiance = radiance;
+    l.corner = corner;
+    l.edge_u = edge_u;
+    l.edge_v = edge_v;
+    l.radiance = radiance;
     return l;
 }
 
 AreaLight sphere_light(Vec3 center, Real radius, Color radiance = Color(1)) {
     AreaLight l;
     l.kind = AreaLightKind::Sphere;
-    l.center = center, l.radius = radius, l.radiance = radiance;
+    l.center = center;
+    l.radius = radius;
+    l.radiance = radiance;
     return l;
 }
 
@@ -153,7 +160,8 @@ TEST_F(AreaSampling, SphereSamplesFollowTheirPdf) {
 std::vector<double> estimates(const PreparedScene& scene, const SurfacePoint& at,
                               const AreaLight& light, std::uint64_t seed) {
     Material white;
-    white.diffuse = Color(1), white.specular = Color(0);
+    white.diffuse = Color(1);
+    white.specular = Color(0);
     stats::Uniform random(seed);
     const auto colors = testing::call_for<&area_light_estimate>(kSamples, [&](int) {
         return std::tuple(std::cref(scene), white, at, at.normal, at.normal, light, random.next2());

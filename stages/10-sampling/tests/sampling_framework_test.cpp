@@ -108,7 +108,10 @@ TEST(SamplingScenes, FogReachesTheSceneAndFeatures) {
 // The framework's medium_interval: the part of a range inside the fog's box.
 TEST(SamplingScenes, MediumIntervalClipsToTheBox) {
     Medium box;
-    box.density = 1, box.bounded = true, box.min = Vec3(-1, -1, -1), box.max = Vec3(1, 1, 1);
+    box.density = 1;
+    box.bounded = true;
+    box.min = Vec3(-1, -1, -1);
+    box.max = Vec3(1, 1, 1);
     const Ray ray{Vec3(-3, 0, 0), Vec3(2, 0, 0)};
     Interval in = medium_interval(box, ray, Interval{});
     EXPECT_FLOAT_EQ(in.min, 1);

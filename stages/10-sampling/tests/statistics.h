@@ -83,7 +83,8 @@ inline void expect_chi_square(const std::vector<double>& observed,
             continue;
         }
         if (expected[i] < 5) {
-            pooled_observed += observed[i], pooled_expected += expected[i];
+            pooled_observed += observed[i];
+            pooled_expected += expected[i];
             continue;
         }
         chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
@@ -110,14 +111,17 @@ inline void expect_same_distribution(const std::vector<double>& a, const std::ve
     int bins = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
         if (a[i] + b[i] < 10) {
-            pool_a += a[i], pool_b += b[i];
+            pool_a += a[i];
+            pool_b += b[i];
             continue;
         }
         chi2 += (a[i] - b[i]) * (a[i] - b[i]) / (a[i] + b[i]);
         ++bins;
     }
-    if (pool_a + pool_b > 0)
-        chi2 += (pool_a - pool_b) * (pool_a - pool_b) / (pool_a + pool_b), ++bins;
+    if (pool_a + pool_b > 0) {
+        chi2 += (pool_a - pool_b) * (pool_a - pool_b) / (pool_a + pool_b);
+        ++bins;
+    }
     ASSERT_GT(bins, 1) << what;
     const double p = gamma_q((bins - 1) / 2.0, chi2 / 2.0);
     EXPECT_GE(p, kChiSquareAlpha) << what << ": the samples do not follow the reference "

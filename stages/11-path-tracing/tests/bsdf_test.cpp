@@ -33,7 +33,9 @@ Material diffuse(Color kd) {
 
 Material glossy(Color f0, float roughness, Color kd = Color(0)) {
     Material m;
-    m.diffuse = kd, m.specular = f0, m.roughness = roughness;
+    m.diffuse = kd;
+    m.specular = f0;
+    m.roughness = roughness;
     return m;
 }
 
@@ -278,7 +280,8 @@ RT_TEST_SUITE(DeltaLobes, "3-the-bsdf-of-a-material");
 
 TEST_F(DeltaLobes, MirrorReflectsAboutTheNormal) {
     Material mirror;
-    mirror.diffuse = Color(0), mirror.reflective = Color(0.9f);
+    mirror.diffuse = Color(0);
+    mirror.reflective = Color(0.9f);
     const Vec3 wo = direction(0.7);
     const BsdfSample s = sample_bsdf(mirror, wo, 0.5f, Vec2(0.3f, 0.6f));
     EXPECT_TRUE(s.delta) << "a roughness-0 specular lobe is a perfect mirror (a delta lobe)";
@@ -291,7 +294,9 @@ TEST_F(DeltaLobes, MirrorReflectsAboutTheNormal) {
 
 TEST_F(DeltaLobes, GlassReflectsWithTheFresnelProbability) {
     Material glass;
-    glass.diffuse = Color(0), glass.transmissive = Color(1), glass.ior = 1.5f;
+    glass.diffuse = Color(0);
+    glass.transmissive = Color(1);
+    glass.ior = 1.5f;
     for (double theta : {0.3, 1.2}) {
         for (double sign : {1.0, -1.0}) {  // entering, leaving
             const Vec3 wo = direction(theta) * Real(sign);

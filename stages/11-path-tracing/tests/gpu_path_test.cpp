@@ -75,7 +75,8 @@ RT_TEST_SUITE(GpuPathRuns, "optional-the-gpu");
 // depend on its pixel and index only) and on either headless context; no stub reached.
 TEST_F(GpuPathRuns, DeterministicForAnyBatchSize) {
     PreparedScene scene = path_scene("cornell_box");
-    scene.image.width = 32, scene.image.height = 32;
+    scene.image.width = 32;
+    scene.image.height = 32;
     scene.sampling.samples_per_pixel = 12;
     ::rt::testing::expect_gpu_deterministic(scene);
 }

@@ -59,10 +59,14 @@ TEST(PathScenes, CanonicalFormOrdersTheNewKeys) {
 TEST(AreaLightHits, NearestLightInFrontOfTheSurface) {
     Scene scene;
     AreaLight rectangle;  // y = 2, lit downwards (cross(edge_u, edge_v) = -y)
-    rectangle.corner = Vec3(-1, 2, -1), rectangle.edge_u = Vec3(2, 0, 0);
-    rectangle.edge_v = Vec3(0, 0, 2), rectangle.radiance = Color(3);
+    rectangle.corner = Vec3(-1, 2, -1);
+    rectangle.edge_u = Vec3(2, 0, 0);
+    rectangle.edge_v = Vec3(0, 0, 2);
+    rectangle.radiance = Color(3);
     AreaLight sphere;
-    sphere.kind = AreaLightKind::Sphere, sphere.center = Vec3(0, 5, 0), sphere.radius = 1;
+    sphere.kind = AreaLightKind::Sphere;
+    sphere.center = Vec3(0, 5, 0);
+    sphere.radius = 1;
     sphere.radiance = Color(7);
     scene.area_lights = {rectangle, sphere};
     const Ray up{Vec3(0, 0, 0), Vec3(0, 1, 0)};

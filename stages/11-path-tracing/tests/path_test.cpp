@@ -41,7 +41,8 @@ TEST_F(Mis, WeightsSumToOne) {
 PreparedScene furnace(float albedo, float emitted) {
     PreparedScene scene;
     Material wall;
-    wall.diffuse = Color(albedo), wall.emissive = Color(emitted);
+    wall.diffuse = Color(albedo);
+    wall.emissive = Color(emitted);
     scene.add_material(wall);
     scene.spheres.push_back(Sphere{Vec3(0), 1, 0});
     scene.max_depth = 64;
@@ -100,7 +101,9 @@ TEST_F(Furnace, SphereLightInsideAWhiteSphereMatchesTheClosedForm) {
     // bounces: counted by both without MIS weights, the wall is too bright.
     PreparedScene scene = furnace(0.5f, 0);
     AreaLight light;
-    light.kind = AreaLightKind::Sphere, light.center = Vec3(0), light.radius = 0.3f;
+    light.kind = AreaLightKind::Sphere;
+    light.center = Vec3(0);
+    light.radius = 0.3f;
     light.radiance = Color(10);
     scene.area_lights.push_back(light);
     refresh_features(scene);
@@ -299,12 +302,17 @@ TEST_F(DirectLight, NextEventEstimationLightsTheFloorAndSkipsAMirror) {
     Material floor, mirror;
     floor.diffuse = Color(0.6f);
     floor.specular = Color(0);
-    mirror.diffuse = Color(0), mirror.reflective = Color(1), mirror.roughness = 0;
+    mirror.diffuse = Color(0);
+    mirror.reflective = Color(1);
+    mirror.roughness = 0;
     scene.add_material(floor);
     scene.planes.push_back(Plane{Vec3(0), Vec3(0, 1, 0), 0});
     AreaLight light;
-    light.corner = Vec3(-0.5f, 2, -0.5f), light.edge_u = Vec3(1, 0, 0);
-    light.edge_v = Vec3(0, 0, 1), light.radiance = Color(5);  // lit side faces down
+    light.corner = Vec3(-0.5f, 2, -0.5f);
+    light.edge_u = Vec3(1, 0, 0);
+    // lit side faces down
+    light.edge_v = Vec3(0, 0, 1);
+    light.radiance = Color(5);
     scene.area_lights.push_back(light);
     scene.sampling.integrator = Integrator::Path;
     refresh_features(scene);
