@@ -10,8 +10,8 @@
 #include "core/source_dir.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/scene_loader.h"
-#include "scene_text.h"
 #include "temp_dir.h"
+#include "testing/scene_text.h"
 
 namespace fs = std::filesystem;
 

@@ -10,8 +10,8 @@
 #include "scene/prepared_scene.h"
 #include "scene/scene_format.h"
 #include "scene/transform.h"
-#include "scene_text.h"
 #include "temp_dir.h"
+#include "testing/scene_text.h"
 
 namespace rt {
 namespace {

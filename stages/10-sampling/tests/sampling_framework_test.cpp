@@ -16,7 +16,6 @@
 namespace rt {
 namespace {
 
-using testing::error_of;
 using testing::scene_of;
 
 TEST(SamplingScenes, KeysReachTheScene) {

@@ -14,7 +14,6 @@
 namespace rt {
 namespace {
 
-using testing::error_of;
 using testing::scene_of;
 
 TEST(PathScenes, KeysReachTheSceneAndFeatures) {
