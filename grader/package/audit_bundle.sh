@@ -44,25 +44,23 @@ declare -A allowed
 for soname in $allowed_sonames; do allowed[$soname]=1; done
 # Each tool reads every file in one run (a process per file took 15 s per audit here). With
 # several files, readelf heads each file's part with "File: PATH"; with one it does not.
-heads='BEGIN { file = first } /^File: / { file = substr($0, 7); part = 0 }'
+heads='BEGIN { file = first } /^File: / { file = substr($0, 7) }'
 
-# 1: the versions each program and library needs from the C and C++ libraries.
 if [ ${#elfs[@]} -gt 0 ]; then
+  # 1: the versions each program and library needs from the C and C++ libraries.
   while IFS=$'\t' read -r f version max; do
     finding "${f#"$bundle"/} needs $version, newer than Ubuntu 22.04's $max: ship a build without it, or leave it out of the bundle"
   done < <(readelf -V -W "${elfs[@]}" 2>/dev/null |
     awk -v first="${elfs[0]}" -v glibc="$max_glibc" -v glibcxx="$max_glibcxx" -v cxxabi="$max_cxxabi" "$after $heads"'
-      /Version needs section/ { part = 1 }
-      part && match($0, /Name: (GLIBC|GLIBCXX|CXXABI)_[0-9.]+/) {
+      /^File: / { needs = 0 }
+      /Version needs section/ { needs = 1 }
+      needs && match($0, /Name: (GLIBC|GLIBCXX|CXXABI)_[0-9.]+/) {
         name = substr($0, RSTART + 6, RLENGTH - 6)
         if (seen[file, name]++) next
         base = name; sub(/_.*/, "", base); v = substr(name, length(base) + 2)
         max = base == "GLIBC" ? glibc : base == "GLIBCXX" ? glibcxx : cxxabi
         if (after(v, max)) print file "\t" name "\t" base "_" max }')
-fi
-
-# 2: the libraries each needs, in the bundle or provided by a package of the target list.
-if [ ${#elfs[@]} -gt 0 ]; then
+  # 2: the libraries each needs, in the bundle or provided by a package of the target list.
   while IFS=$'\t' read -r f needed; do
     [ -e "$bundle/cache/runtime/lib/$needed" ] && continue
     [ -n "${allowed[$needed]:-}" ] && continue
