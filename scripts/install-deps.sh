@@ -25,6 +25,7 @@ packages=(
   chromium                            # Gallery.IndexPage: the gallery page in a headless browser
   libembree-dev                       # rt-bench: Embree 3, the BVH benchmark's yardstick (optional)
   zip unzip                           # rt-grade: .zip submissions, the Gradescope package
+  patchelf                            # rt-grade package: the bundle finds its libraries by $ORIGIN
   util-linux procps                   # rt-grade's tests: setpriv/pgrep checks of the sandbox
   libseccomp-dev                      # rt-grade: the seccomp filter of its container mode
   jq openimageio-tools                # rt-grade's tests: grading.json lists, 8-bit images without sRGB

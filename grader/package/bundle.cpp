@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "util.h"
 
@@ -349,6 +350,18 @@ std::vector<TargetPackage> read_target_packages(const fs::path& source) {
         packages.push_back(std::move(p));
     }
     return packages;
+}
+
+void require_packaging_tools() {
+    // Each program with the Debian package that installs it (scripts/install-deps.sh lists all).
+    const std::vector<std::pair<std::string, std::string>> tools = {
+        {"patchelf", "patchelf"}, {"readelf", "binutils"}, {"nm", "binutils"}, {"ldd", "libc-bin"},
+        {"dpkg", "dpkg"},         {"zip", "zip"},          {"tar", "tar"}};
+    for (const auto& [program, package] : tools) {
+        if (run_trusted("command -v " + program + " > /dev/null") == 0) continue;
+        throw std::runtime_error(program + " is not installed (Debian package " + package +
+                                 "): run scripts/install-deps.sh, or apt-get install " + package);
+    }
 }
 
 bool write_bundle(const BundleRequest& r, std::ostream& log, std::ostream& err) {

@@ -40,6 +40,10 @@ struct BundleRequest {
     std::vector<TargetPackage> packages;  // target_packages.txt
 };
 
+// Throws, naming the program and its Debian package, when a program that packaging runs is not
+// on PATH (patchelf, readelf, nm, ldd, dpkg, zip, tar): before minutes of workspace are spent.
+void require_packaging_tools();
+
 // Writes the bundle, saying what it ships in `log`; false (and why, in `err`) when a step fails.
 bool write_bundle(const BundleRequest& request, std::ostream& log, std::ostream& err);
 

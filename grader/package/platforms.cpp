@@ -182,6 +182,7 @@ int run_package(const PackageRequest& r, std::ostream& log, std::ostream& err) {
     const fs::path bundle = stage / "rt-grade";
     int code = 1;
     try {
+        require_packaging_tools();
         const std::vector<StageSpec> graded = graded_stages(r);
         if (!prepare_workspace(r.grade, err)) throw std::runtime_error("no grading workspace");
         BundleRequest b{r.grade.source, workspace_paths(r.grade),
