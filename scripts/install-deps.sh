@@ -33,6 +33,7 @@ packages=(
   libyaml-cpp-dev                     # rt-grade batch: Gradescope exports' submission_metadata.yml
   hyperfine                           # tools/bench_startup.sh, tools/bench_povray.sh: timings
   povray                              # tools/bench_povray.sh: POV-Ray 3.7, the renderer's yardstick
+  slurm-wlm munge                     # Grader.Slurm.class: rt-grade batch --slurm on a one-machine cluster
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

@@ -47,15 +47,21 @@ std::string unzip_complaint(const std::string& output, const fs::path& dir = {})
     return line.empty() ? "unzip could not extract it" : line;
 }
 
+fs::path make_temporary_folder() {
+    char tmpl[] = "/tmp/rt-grade-export-XXXXXX";
+    if (!mkdtemp(tmpl)) throw std::runtime_error("cannot make a temporary folder in /tmp");
+    return tmpl;
+}
+
 // A zipped export, unpacked one submission at a time: a submission whose entries unzip cannot
 // write (a symbolic link followed by a file written through it, a truncated or encrypted entry)
 // is refused alone, with unzip's reason in `refused` under its folder's name, and left empty;
 // the other submissions are unpacked and graded. A zip that cannot be listed, or whose own
 // files (the metadata) cannot be extracted, is refused whole.
-fs::path unpack(const fs::path& zip, std::map<std::string, std::string>& refused) {
-    char tmpl[] = "/tmp/rt-grade-export-XXXXXX";
-    if (!mkdtemp(tmpl)) throw std::runtime_error("cannot make a temporary folder in /tmp");
-    const fs::path dir = tmpl;
+fs::path unpack(const fs::path& zip, const fs::path& into,
+                std::map<std::string, std::string>& refused) {
+    const fs::path dir = into.empty() ? make_temporary_folder() : into;
+    fs::create_directories(dir);
     const std::string archive = shell_quote(zip.string());
     std::string listing;
     if (run_trusted("unzip -Z1 " + archive, &listing) != 0)
@@ -96,12 +102,14 @@ fs::path unpack(const fs::path& zip, std::map<std::string, std::string>& refused
 
 }  // namespace
 
-BatchInput batch_input(const fs::path& dir, bool latest_only) {
+BatchInput batch_input(const fs::path& dir, bool latest_only, const fs::path& unpack_into) {
     BatchInput in;
     fs::path folder = dir;
     std::map<std::string, std::string> refused;
-    if (fs::is_regular_file(dir) && dir.extension() == ".zip")
-        folder = in.unpacked = unpack(dir, refused);
+    if (fs::is_regular_file(dir) && dir.extension() == ".zip") {
+        folder = unpack(dir, unpack_into, refused);
+        if (unpack_into.empty()) in.unpacked = folder;
+    }
     if (!fs::is_directory(folder))
         throw std::runtime_error(dir.string() +
                                  ": not a folder of submissions nor a Gradescope export's .zip");
@@ -117,6 +125,7 @@ BatchInput batch_input(const fs::path& dir, bool latest_only) {
         for (const auto& e : fs::directory_iterator(folder)) {
             if (!e.is_directory() && e.path().extension() != ".zip") continue;
             std::string name = e.path().filename().string();
+            if (name.starts_with(".")) continue;  // hidden: a tool's folder, not a submission
             if (name.ends_with(".zip")) name.resize(name.size() - 4);
             in.entries.push_back({e.path(), clean_output(name), {}, {}});
         }

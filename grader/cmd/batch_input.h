@@ -26,10 +26,12 @@ struct BatchInput {
     std::filesystem::path unpacked;  // a zipped export's temporary folder (removed by the caller)
 };
 
-// The entries of `dir` (a folder, or an export's .zip, unpacked to a temporary folder), sorted;
-// of an export, its submissions (`latest_only`: the newest of each student). Throws
-// std::runtime_error with a one-line reason when it cannot be read.
-BatchInput batch_input(const std::filesystem::path& dir, bool latest_only);
+// The entries of `dir` (a folder, or an export's .zip, unpacked into `unpack_into`, else a
+// temporary folder), sorted; of an export, its submissions (`latest_only`: the newest of each
+// student). A folder's hidden entries (".name") are not submissions. Throws std::runtime_error
+// with a one-line reason when it cannot be read.
+BatchInput batch_input(const std::filesystem::path& dir, bool latest_only,
+                       const std::filesystem::path& unpack_into = {});
 
 // The CSV columns an export adds after the submission's name, and after its new score.
 std::string export_header();

@@ -120,7 +120,9 @@ ClassResults read_class_results(const fs::path& out, std::ostream& log) {
     std::vector<std::string> names;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(out, ec))
-        if (e.is_directory()) names.push_back(e.path().filename().string());
+        // A hidden folder is a tool's (a Slurm batch's .slurm), not a submission's.
+        if (e.is_directory() && !e.path().filename().string().starts_with("."))
+            names.push_back(e.path().filename().string());
     if (ec) throw std::runtime_error("cannot list " + out.string() + " (" + ec.message() + ")");
     std::sort(names.begin(), names.end());
     for (const auto& name : names) {

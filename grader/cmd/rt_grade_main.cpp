@@ -16,6 +16,7 @@
 #include "cmd/compare.h"
 #include "cmd/dashboard.h"
 #include "cmd/similarity.h"
+#include "cmd/slurm.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
 #include "grading/grade.h"
@@ -159,6 +160,7 @@ struct BatchArgs {
     std::string dir, out = "grades";
     int jobs = 1;
     bool latest = false;
+    bool slurm = false, slurm_no_submit = false;
 };
 
 CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
@@ -175,7 +177,43 @@ CLI::App* add_batch_command(CLI::App& app, BatchArgs& a) {
     batch_cmd->add_option("--out", a.out, "where scores.csv and the reports go");
     batch_cmd->add_option("--jobs", a.jobs, "submissions graded at a time")
         ->check(CLI::Range(1, 64));
+    batch_cmd->add_flag("--slurm", a.slurm,
+                        "grade on a Slurm cluster: a job array of one task per submission and a "
+                        "collector job (OUT on shared storage; docs/grading.md)");
+    batch_cmd->add_flag("--slurm-no-submit", a.slurm_no_submit,
+                        "with --slurm: write OUT/.slurm's scripts and say how to submit them");
     return batch_cmd;
+}
+
+// The two commands of a Slurm batch's jobs (cmd/slurm.h); not for typing by hand.
+struct SlurmArgs {
+    std::string out;
+    long index = -1;
+};
+
+CLI::App* add_slurm_commands(CLI::App& app, SlurmArgs& a, CLI::App*& collect) {
+    CLI::App* task = app.add_subcommand(
+        "slurm-task", "One task of `batch --slurm`: grade line INDEX of OUT/.slurm/manifest.json");
+    task->add_option("out", a.out, "the batch's --out folder")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    task->add_option("index", a.index, "the manifest line (0 is the first)")->required();
+    collect = app.add_subcommand("slurm-collect",
+                                 "The collector of `batch --slurm`: scores.csv and the dashboard");
+    collect->add_option("out", a.out, "the batch's --out folder")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    return task;
+}
+
+int run_batch_command(const BatchArgs& b, const rt::grader::GradeOptions& grade) {
+    if (b.slurm_no_submit && !b.slurm) {
+        std::cerr << "rt-grade: error: --slurm-no-submit goes with --slurm\n";
+        return 2;
+    }
+    if (!b.slurm) return rt::grader::run_batch(grade, b.dir, b.out, b.jobs, b.latest, std::cout);
+    return rt::grader::run_slurm_batch(grade, {b.dir, b.out, b.latest, !b.slurm_no_submit},
+                                       std::cout);
 }
 
 struct DashboardArgs {
@@ -374,6 +412,9 @@ int main(int argc, char** argv) {
     CLI::App* similarity_cmd = add_similarity_command(app, similarity);
     DashboardArgs dashboard;
     CLI::App* dashboard_cmd = add_dashboard_command(app, dashboard);
+    SlurmArgs slurm;
+    CLI::App* slurm_collect_cmd = nullptr;
+    CLI::App* slurm_task_cmd = add_slurm_commands(app, slurm, slurm_collect_cmd);
     // Grading options (--stages, --source, ...) also work after a subcommand's name.
     for (CLI::App* sub :
          {prepare_cmd, batch_cmd, package_cmd, compare_cmd, similarity_cmd, dashboard_cmd})
@@ -390,9 +431,9 @@ int main(int argc, char** argv) {
             return rt::grader::run_release(release.release, std::cout, std::cerr);
         }
         if (*prepare_cmd) return rt::grader::prepare_workspace(grade, std::cerr) ? 0 : 1;
-        if (*batch_cmd)
-            return rt::grader::run_batch(grade, batch.dir, batch.out, batch.jobs, batch.latest,
-                                         std::cout);
+        if (*batch_cmd) return run_batch_command(batch, grade);
+        if (*slurm_task_cmd) return rt::grader::run_slurm_task(slurm.out, slurm.index, std::cout);
+        if (*slurm_collect_cmd) return rt::grader::run_slurm_collect(slurm.out, std::cout);
         if (*dashboard_cmd) return run_dashboard(dashboard, grade.source);
         if (*compare_cmd) {
             compare.source = grade.source;
