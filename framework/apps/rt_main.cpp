@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/bvh_cost.h"
 #include "apps/cli_parse.h"
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
@@ -334,6 +335,22 @@ int main(int argc, char** argv) {
     CLI::App* web_cmd = add_export_web_command(app, web);
     FmtArgs fmt;
     CLI::App* fmt_cmd = add_fmt_command(app, fmt);
+    // The leaderboard's traversal cost (apps/bvh_cost.h), run by rt-grade.
+    std::string tree_scene, tree_file;
+    auto* dump_cmd =
+        app.add_subcommand("bvh-dump", "write the BVH a scene's build makes (rt-grade)");
+    dump_cmd->add_option("scene", tree_scene, "scene file (.json)")->required();
+    dump_cmd->add_option("-o,--output", tree_file, "the tree file to write")->required();
+    auto* cost_cmd = app.add_subcommand(
+        "bvh-cost", "node visits and primitive tests per primary ray through a BVH (rt-grade)");
+    cost_cmd->add_option("scene", tree_scene, "scene file (.json)")->required();
+    cost_cmd->add_option("--tree", tree_file, "a tree from rt bvh-dump (default: this rt's own)");
+    int cost_width = 0;
+    int cost_height = 0;
+    cost_cmd->add_option("--width", cost_width, "rays across (default: the scene's image width)")
+        ->check(CLI::Range(1, 4096));
+    cost_cmd->add_option("--height", cost_height, "rays down (default: the scene's image height)")
+        ->check(CLI::Range(1, 4096));
     if (const auto stop =
             parse_command_line(app, argc, argv, "rt", "`rt --help` or `rt render --help`"))
         return *stop;
@@ -350,6 +367,8 @@ int main(int argc, char** argv) {
         if (*view_cmd) return run_view_command(view_args);
         if (*gl_cmd) return run_gl_context_info(gl.window ? "window" : gl.kind);
         if (*fmt_cmd) return run_fmt(fmt.files, fmt.check);
+        if (*dump_cmd) return run_bvh_dump(tree_scene, tree_file);
+        if (*cost_cmd) return run_bvh_cost(tree_scene, tree_file, cost_width, cost_height);
         if (*export_cmd)
             return run_export_shadertoy(
                 exporting.scene, exporting.output,

@@ -168,6 +168,11 @@ StageSpec load_stage_spec(const fs::path& source, const fs::path& folder) {
                 throw std::runtime_error(
                     file.string() + ": \"leaderboard\": scene \"" + s.leaderboard_scene +
                     "\" is not one of the graded \"scenes\"; name one of them");
+            const std::string rank_by = g["leaderboard"].value("rank_by", "speed");
+            if (rank_by != "speed" && rank_by != "traversal_cost")
+                throw std::runtime_error(file.string() + ": \"leaderboard\": \"rank_by\": \"" +
+                                         rank_by + "\" is not \"speed\" or \"traversal_cost\"");
+            s.leaderboard_traversal_cost = rank_by == "traversal_cost";
         }
         return s;
     } catch (const json::exception& e) {

@@ -65,6 +65,10 @@ struct StageSpec {
     // "leaderboard": {"scene": NAME}: Gradescope's leaderboard times the student's renderer on
     // this graded scene against the reference's, in the same grading (never part of the score).
     std::string leaderboard_scene;
+    // "rank_by": "traversal_cost" (stage 06): ranked by node visits plus 10 x primitive tests per
+    // primary ray through the student's tree, counted by the reference (apps/bvh_cost.h), the
+    // same on every machine; "speed" (the default): by the time ratio.
+    bool leaderboard_traversal_cost = false;
 
     const SceneSpec* scene(const std::string& name) const;  // nullptr when not graded
     // The thresholds the grader compares scene `name` with: its own, or image_defaults.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -252,9 +253,50 @@ class Runner {
             mine_setup = std::min(mine_setup, s.seconds);
         }
         const auto ms = [](double seconds) { return std::round(seconds * 1e4) / 10; };
-        return {{"Speed (reference = 1)", std::round(reference / mine * 100) / 100, false},
-                {"Render ms", ms(mine), true},
-                {"Load and build ms", ms(mine_setup), true}};
+        std::vector<LeaderboardEntry> board = {
+            {"Speed (reference = 1)", std::round(reference / mine * 100) / 100, false},
+            {"Render ms", ms(mine), true},
+            {"Load and build ms", ms(mine_setup), true}};
+        if (!task.stage->leaderboard_traversal_cost) return board;
+        // Ranked by the first column: the traversal cost, which no timing noise reorders.
+        const auto cost = traversal_cost(bin, task, dir);
+        if (!cost) return {};
+        board.insert(board.begin(), {"Traversal cost per ray", *cost, true});
+        return board;
+    }
+
+    // The traversal cost of the student's tree on `task`'s scene (apps/bvh_cost.h): the
+    // student's `rt bvh-dump` writes the tree, and the reference's `rt bvh-cost` checks it against
+    // its own primitives and counts its own traversal through it. Nothing when either run fails
+    // or the tree is not a valid BVH of the scene.
+    std::optional<double> traversal_cost(const fs::path& bin, const GradeTask& task,
+                                         const fs::path& dir) {
+        const fs::path scene =
+            g_.w.src / task.scene->folder / "scenes" / (task.scene->name + ".json");
+        const fs::path dump_out = child_dir(dir / "bvh-dump-out");
+        RunSpec dump = base_spec(bin / "rt", dump_out, trusted_dir(dir / "bvh-dump-trusted"));
+        dump.argv = {(bin / "rt").string(), "bvh-dump", scene.string(), "-o",
+                     (dump_out / "tree.bin").string()};
+        set_time_limits(dump.limits, task.stage->render_seconds);
+        const fs::path tree = trusted_dir(dir / "bvh-tree") / "tree.bin";
+        std::string why;
+        const RunResult dumped = run_sandboxed(dump);
+        g_.survivors += dumped.survivors;
+        if (!dumped.ok() || !copy_out(dump_out, "tree.bin", tree, 256u << 20, why))
+            return std::nullopt;
+        const fs::path cost_out = child_dir(dir / "bvh-cost-out");
+        RunSpec cost = base_spec(g_.reference_rt, cost_out, trusted_dir(dir / "bvh-cost-trusted"));
+        cost.binds.push_back({tree, {}, false});
+        cost.argv = {g_.reference_rt.string(), "bvh-cost", scene.string(), "--tree", tree.string()};
+        set_time_limits(cost.limits, task.stage->render_seconds);
+        const RunResult counted = run_sandboxed(cost);
+        g_.survivors += counted.survivors;
+        double per_ray = 0;
+        const auto at = counted.output.find("traversal cost ");
+        if (!counted.ok() || at == std::string::npos ||
+            std::sscanf(counted.output.c_str() + at, "traversal cost %lf", &per_ray) != 1)
+            return std::nullopt;
+        return std::round(per_ray * 100) / 100;
     }
 
   private:

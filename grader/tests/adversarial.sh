@@ -134,7 +134,8 @@ fi
 case $case in
   reference)  # the instructor's own files: full marks in every stage
     solution_all; stages=$all_stages; limit=()
-    checks=(--full-marks --not-contains "not run" --has-leaderboard)
+    checks=(--full-marks --not-contains "not run" --has-leaderboard
+            --leaderboard-first "Traversal cost per ray")
     for n in ${all_stages//,/ }; do checks+=(--has-tag "$(stage_tag "$n")"); done ;;
   starter)  # the released starter tree: 0 points, and the report names every stub's section
     "$bin/rt-grade" release --source "$src" --out "$work/starter" > /dev/null || exit 1

@@ -4,7 +4,7 @@
 //   results_check FILE [--score-min X] [--score-max X] [--max-score X] [--contains TEXT]...
 //                      [--not-contains TEXT]... [--test-failed NAME]... [--test-passed NAME]...
 //                      [--full-marks] [--has-tag TAG]... [--full-marks-tag TAG]...
-//                      [--has-leaderboard] [--no-leaderboard]
+//                      [--has-leaderboard] [--no-leaderboard] [--leaderboard-first NAME]
 // Exits 0 when everything holds; prints each violation otherwise.
 #include <nlohmann/json.hpp>
 
@@ -202,6 +202,12 @@ int main(int argc, char** argv) {
             const bool has = r.contains("leaderboard") && !r["leaderboard"].empty();
             if (has != (flag == "--has-leaderboard"))
                 fail(has ? "a leaderboard is written" : "no leaderboard is written");
+        } else if (flag == "--leaderboard-first") {
+            const std::string name = next();
+            const json board = r.value("leaderboard", json::array());
+            if (board.empty() || !board[0].is_object() || board[0].value("name", "") != name ||
+                !board[0].contains("value") || !board[0]["value"].is_number())
+                fail("the leaderboard's first column is not a number named " + name);
         } else if (flag == "--has-tag") {
             const std::string tag = next();
             bool seen = false;
