@@ -24,6 +24,7 @@ mkdir -p "$work"
 source "$src/grader/tests/slurm_local.sh"
 source "$src/grader/tests/disguise.sh"
 trap 'slurm_stop; [ -n "$keep" ] || rm -rf "$work"' EXIT
+trap 'exit 1' INT TERM  # so that EXIT's trap stops the daemons
 s1=stages/01-camera-rays
 ref=$src/$s1/camera_rays.cpp
 

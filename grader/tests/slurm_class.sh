@@ -14,6 +14,7 @@ source "$(dirname "$0")/disguise.sh"
 source "$(dirname "$0")/cohort_lib.sh"
 source "$(dirname "$0")/slurm_local.sh"
 trap 'slurm_stop; rm -rf "$work"' EXIT
+trap 'exit 1' INT TERM  # so that EXIT's trap stops the daemons
 fail() { echo "FAIL: $*"; exit 1; }
 stages=1,2 victim=5  # the manifest line whose task is cancelled
 
