@@ -189,8 +189,8 @@ std::string grade_script(const GradeOptions& base, const fs::path& out, long tas
            "#SBATCH --cpus-per-task=1\n"
            "#SBATCH --mem=" +
            kTaskMemory + "\n#SBATCH --time=" + std::to_string(minutes) +
-           "\n#SBATCH --output=" + logs + "/task-%a.log\n" + "exec " + shell_quote(rt_grade) +
-           " slurm-task " + shell_quote(out.string()) +
+           "\n#SBATCH --output=" + logs + "/job-%A-task-%a.log\n" + "exec " +
+           shell_quote(rt_grade) + " slurm-task " + shell_quote(out.string()) +
            " \"$(( ${RT_GRADE_OFFSET:-0} + SLURM_ARRAY_TASK_ID ))\"\n";
 }
 
@@ -246,6 +246,28 @@ void submit(const fs::path& out, long tasks, std::ostream& log) {
         << " once every task has ended\n";
 }
 
+// The command that reruns the tasks in `missing` and then collects again: one sbatch per array
+// they fall in (an index beyond the first MaxArraySize is its array's offset plus a task id).
+std::string rerun_command(const fs::path& out, const std::vector<long>& missing) {
+    const long chunk = std::max(1L, max_array_size());
+    const std::string script = (slurm_dir(out) / "grade.sbatch").string();
+    std::string command;
+    std::string after = "afterany";
+    for (std::size_t i = 0; i < missing.size();) {
+        const long offset = missing[i] / chunk * chunk;
+        std::string ids;
+        for (; i < missing.size() && missing[i] / chunk * chunk == offset; ++i)
+            ids += (ids.empty() ? "" : ",") + std::to_string(missing[i] - offset);
+        const std::string var = "j" + std::to_string(offset / chunk);
+        command += var + "=$(sbatch --parsable --array=" + ids +
+                   (offset > 0 ? " --export=ALL,RT_GRADE_OFFSET=" + std::to_string(offset) : "") +
+                   " " + script + ") && ";
+        after += ":$" + var;
+    }
+    return command + "sbatch --dependency=" + after + " " +
+           (slurm_dir(out) / "collect.sbatch").string();
+}
+
 }  // namespace
 
 int run_slurm_batch(const GradeOptions& base, const SlurmRequest& r, std::ostream& log) {
@@ -290,6 +312,13 @@ int run_slurm_task(const fs::path& out, long index, std::ostream& log) {
     const char* cpus = std::getenv("SLURM_CPUS_PER_TASK");
     const int jobs = std::max(1, cpus ? std::atoi(cpus) : 1);
     const BatchRow row = grade_batch_entry(m.base, entry, out, jobs, log);
+    // Cancelled (scancel, a time or memory limit: Slurm's SIGTERM) is not graded: an interrupted
+    // grading scores what ran, and its row would stand for the whole. Without a row, the
+    // collector names the task as not finished and prints the command that reruns it.
+    if (g_interrupted) {
+        log << entry.name << ": interrupted, no row written; the collector will name this task\n";
+        return 1;
+    }
     write_text_atomically(row_file(out, index), row_json(row).dump() + "\n");
     log << batch_row_line(row);
     return 0;
@@ -312,10 +341,8 @@ int run_slurm_collect(const fs::path& out, std::ostream& log) {
     if (missing.empty()) return 0;
     std::string list;
     for (const long i : missing) list += (list.empty() ? "" : ",") + std::to_string(i);
-    log << "slurm: " << missing.size() << " tasks left no row (" << list
-        << "); rerun them, then collect again:\n  id=$(sbatch --parsable --array=" << list << " "
-        << (slurm_dir(out) / "grade.sbatch").string() << ") && sbatch --dependency=afterany:$id "
-        << (slurm_dir(out) / "collect.sbatch").string() << "\n";
+    log << "slurm: " << missing.size() << " tasks left no row (manifest lines " << list
+        << "); rerun them, then collect again:\n  " << rerun_command(out, missing) << "\n";
     return 1;
 }
 

@@ -16,7 +16,12 @@ source "$(dirname "$0")/slurm_local.sh"
 trap 'slurm_stop; rm -rf "$work"' EXIT
 trap 'exit 1' INT TERM  # so that EXIT's trap stops the daemons
 fail() { echo "FAIL: $*"; exit 1; }
-stages=1,2 victim=5  # the manifest line whose task is cancelled
+stages=1,2
+# Arrays of at most 8 tasks (MaxArraySize 8): the 21 submissions go as three arrays, and the
+# cancelled task, manifest line 13 (a whole reference: seconds of grading), is task 5 of the
+# second (RT_GRADE_OFFSET=8).
+export SLURM_MAX_ARRAY_SIZE=8
+victim=13
 
 add_more() {
   submission "Mo Reyes" 113 84 130;       ref1; ref2
@@ -32,8 +37,9 @@ add_more() {
   submission "Sam Ito" 120 84 200;        ref1; ref2
 }
 
-# The ids sbatch gave, from rt-grade's lines "slurm: job ID grades ..." and "... writes ...".
-job_of() { sed -n "s/^slurm: job \([0-9]*\) $1.*/\1/p" "$work/slurm.log" | head -n 1; }
+# The ids sbatch gave, from rt-grade's lines "slurm: job ID grades ..." (the Nth array) and
+# "... writes ..." (the collector).
+job_of() { sed -n "s/^slurm: job \([0-9]*\) $1.*/\1/p" "$work/slurm.log" | sed -n "${2:-1}p"; }
 
 add_class
 add_more
@@ -50,21 +56,24 @@ start=$(date +%s)
 "$bin/rt-grade" batch "$work/export.zip" --out "$work/cluster-grades" --stages $stages --slurm \
   --source "$src" > "$work/slurm.log" 2>&1 || { cat "$work/slurm.log"; fail "rt-grade batch --slurm"; }
 cat "$work/slurm.log"
-array=$(job_of grades) collector=$(job_of writes)
-[[ -n $array && -n $collector ]] || fail "no job ids in rt-grade's output"
-slurm_wait_for "task $victim running" 300 bash -c "squeue -h -t R -j ${array}_$victim | grep -q ."
-scancel "${array}_$victim" || fail "scancel"
+array=$(job_of grades 2) collector=$(job_of writes)
+[[ -n $array && -n $collector && -n $(job_of grades 3) ]] || fail "not three arrays and a collector in rt-grade's output"
+task=$((victim - 8))
+slurm_wait_for "task $victim running" 300 bash -c "squeue -h -t R -j ${array}_$task | grep -q ."
+scancel "${array}_$task" || fail "scancel"
 slurm_wait_done "$collector" 600 || exit 1
 grades=$work/cluster-grades
 name=$(jq -r ".submissions[$victim].name" "$grades/.slurm/manifest.json")
 grep -q "^\"$name\",.*\"grader error: its Slurm task did not finish\"" "$grades/scores.csv" ||
   { cat "$grades/scores.csv"; fail "the cancelled task's row does not say it did not finish"; }
-grep -q "sbatch --parsable --array=$victim " "$grades/.slurm/logs/collect.log" ||
+rerun=$(grep -A1 "rerun them, then collect again" "$grades/.slurm/logs/collect.log" | tail -n 1)
+grep -q -- "--array=$task --export=ALL,RT_GRADE_OFFSET=8 " <<< "$rerun" ||
   { cat "$grades/.slurm/logs/collect.log"; fail "the collector does not say how to rerun task $victim"; }
 echo "ok: task $victim ($name) cancelled; the collector names it and the command that reruns it"
 
-rerun=$(sbatch --parsable --array=$victim "$grades/.slurm/grade.sbatch") || fail "sbatch the rerun"
-again=$(sbatch --parsable --dependency=afterany:$rerun "$grades/.slurm/collect.sbatch") || fail "sbatch the collector"
+# The collector's own command, as an instructor would paste it.
+again=$(eval "$rerun" | sed -n 's/^Submitted batch job \([0-9]*\)$/\1/p') || fail "the rerun command"
+[ -n "$again" ] || fail "the rerun command submitted no collector: $rerun"
 slurm_wait_done "$again" 600 || exit 1
 slurm_s=$(( $(date +%s) - start ))
 for f in scores.csv changes.csv; do

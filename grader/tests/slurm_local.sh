@@ -5,7 +5,8 @@
 # slurm-wlm and munge (scripts/install-deps.sh installs them).
 # The slurm.conf settings a course's cluster needs are the ones docs/grading.md names:
 # DefMemPerCPU (a job without --mem would take the whole node), OverMemoryKill (memory limits
-# are not enforced without it or cgroups), MaxArraySize.
+# are not enforced without it or cgroups), MaxArraySize ($SLURM_MAX_ARRAY_SIZE, default 1001:
+# a test sets it small to split a class into several arrays).
 
 slurm_pids=()
 
@@ -59,7 +60,7 @@ JobAcctGatherType=jobacct_gather/linux
 JobAcctGatherParams=OverMemoryKill
 JobAcctGatherFrequency=5
 DefMemPerCPU=1024
-MaxArraySize=1001
+MaxArraySize=${SLURM_MAX_ARRAY_SIZE:-1001}
 ReturnToService=2
 SlurmdTimeout=60
 NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
