@@ -278,7 +278,12 @@ class Runner {
         dump.argv = {(bin / "rt").string(), "bvh-dump", scene.string(), "-o",
                      (dump_out / "tree.bin").string()};
         set_time_limits(dump.limits, task.stage->render_seconds);
+        // Readable by the reference's uid (the container mode has no bind mounts, only
+        // permissions): it holds nothing but the student's own tree.
         const fs::path tree = trusted_dir(dir / "bvh-tree") / "tree.bin";
+        fs::permissions(tree.parent_path(), fs::perms::owner_all | fs::perms::group_read |
+                                                fs::perms::group_exec | fs::perms::others_read |
+                                                fs::perms::others_exec);
         std::string why;
         const RunResult dumped = run_sandboxed(dump);
         g_.survivors += dumped.survivors;
