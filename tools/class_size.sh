@@ -23,20 +23,11 @@ work=${keep:-$(mktemp -d /var/tmp/rt-class-size-XXXXXX)}
 mkdir -p "$work"
 source "$src/grader/tests/slurm_local.sh"
 source "$src/grader/tests/disguise.sh"
+source "$src/grader/tests/stub.sh"  # stub FILE: the starter version of a student file
 trap 'slurm_stop; [ -n "$keep" ] || rm -rf "$work"' EXIT
 trap 'exit 1' INT TERM  # so that EXIT's trap stops the daemons
 s1=stages/01-camera-rays
 ref=$src/$s1/camera_rays.cpp
-
-# The starter version of a student file, as `rt-grade release` writes it (the markers are spelled
-# in two pieces so that this file, which the release keeps, holds none).
-starter() {
-  awk -v begin="BEGIN SOL""UTION" -v end="END SOL""UTION" '
-    $0 ~ "^[ \t]*// " begin "[ \t]*$" {s=1; next}
-    $0 ~ "^[ \t]*// STUB[ \t]*$" {s=2; next}
-    $0 ~ "^[ \t]*// " end "[ \t]*$" {s=0; next}
-    s==1 {next} s==2 {sub(/\/\/ ?/, "")} {print}' "$1"
-}
 
 # One submission folder per student, five kinds in turn.
 make_class() {
@@ -45,7 +36,7 @@ make_class() {
     mkdir -p "$dir/student_$i"
     case $((i % 5)) in
       0) cp "$ref" "$dir/student_$i/" ;;
-      1) starter "$ref" > "$dir/student_$i/camera_rays.cpp" ;;
+      1) stub "$ref" > "$dir/student_$i/camera_rays.cpp" ;;
       2) sed 's|Vec2 pixel, ImageSize size) {|Vec2 pixel, ImageSize size) {\n    pixel -= Vec2(0.5);|' "$ref" \
            > "$dir/student_$i/camera_rays.cpp" ;;
       3) { cat "$ref"; echo 'int broken = ;'; } > "$dir/student_$i/camera_rays.cpp" ;;

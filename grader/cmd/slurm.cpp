@@ -82,7 +82,6 @@ BatchEntry entry_from(const json& j) {
 struct Manifest {
     GradeOptions base;
     BatchInput input;
-    fs::path rt_grade;
 };
 
 json manifest_json(const GradeOptions& base, const BatchInput& in) {
@@ -103,7 +102,6 @@ Manifest read_manifest(const fs::path& out) {
     try {
         const json j = json::parse(read_text(file));
         Manifest m;
-        m.rt_grade = j.at("rt_grade").get<std::string>();
         m.base.source = j.at("source").get<std::string>();
         m.base.cache = j.at("cache").get<std::string>();
         m.base.stages = j.at("stages").get<std::vector<int>>();
@@ -227,8 +225,7 @@ std::string sbatch(const std::vector<std::string>& args) {
 }
 
 // Submits the arrays (several when the class exceeds MaxArraySize) and the collector after all.
-void submit(const fs::path& out, long tasks, std::ostream& log) {
-    const long chunk = std::max(1L, max_array_size());
+void submit(const fs::path& out, long tasks, long chunk, std::ostream& log) {
     const std::string script = (slurm_dir(out) / "grade.sbatch").string();
     std::string after = "afterany";
     for (long offset = 0; offset < tasks; offset += chunk) {
@@ -285,14 +282,15 @@ int run_slurm_batch(const GradeOptions& base, const SlurmRequest& r, std::ostrea
     for (const auto& e : fs::directory_iterator(slurm_dir(out) / "rows")) fs::remove(e.path());
     const std::string rt_grade = fs::read_symlink("/proc/self/exe").string();
     const long tasks = long(in.entries.size());
+    const long chunk = std::max(1L, max_array_size());  // scontrol, asked once
     write_text_atomically(slurm_dir(out) / "manifest.json", manifest_json(base, in).dump(1) + "\n");
     write_text_atomically(slurm_dir(out) / "grade.sbatch",
-                          grade_script(base, out, std::min(tasks, max_array_size()), rt_grade));
+                          grade_script(base, out, std::min(tasks, chunk), rt_grade));
     write_text_atomically(slurm_dir(out) / "collect.sbatch", collect_script(out, rt_grade));
     log << "slurm: " << tasks << " submissions in " << (slurm_dir(out) / "manifest.json").string()
         << "\n";
     if (r.submit) {
-        submit(out, tasks, log);
+        submit(out, tasks, chunk, log);
         return 0;
     }
     log << "slurm: submit with: id=$(sbatch --parsable "

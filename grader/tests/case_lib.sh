@@ -21,15 +21,7 @@ stage_tag() { printf 'stage%02d' "$1"; }  # results.json's tag of stage N
 # as stage 10's fog) is left out of grading.json, so no graded test reaches its stubs.
 sections() { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/' | grep -v '#optional-' | sort -u; }
 
-# The starter (stub) version of a student file: what `rt-grade release` writes.
-stub() {
-  awk '/^[ \t]*\/\/ BEGIN SOLUTION[ \t]*$/ {s=1; next}
-       /^[ \t]*\/\/ STUB[ \t]*$/ {s=2; next}
-       /^[ \t]*\/\/ END SOLUTION[ \t]*$/ {s=0; next}
-       s==1 {next}
-       s==2 {sub(/\/\/ ?/, "")}
-       {print}' "$1"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/stub.sh"  # stub FILE: the starter version
 solution1() { cp "$src/$s1/camera_rays.cpp" "$sub/$s1/camera_rays.cpp"; }
 solution2() { cp "$src/$s2/intersections.cpp" "$sub/$s2/intersections.cpp"; }
 append1() { cat >> "$sub/$s1/camera_rays.cpp"; }
