@@ -59,7 +59,7 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
 
 #include "bvh.glsl"
 
-// stage_api/stage06.h's nearest_hit (shade.glsl's shadow rays use it too): the BVH when the scene has one, stage 02's loop otherwise.
+// render/nearest_hit.h's nearest_hit (shade.glsl's shadow rays use it too): the BVH when the scene has one, stage 02's loop otherwise.
 bool nearest_hit(Ray ray, Interval t_range, inout Hit hit) {
 #ifdef HAS_BVH
     if (scene_has(kFeatureBvh)) return bvh_intersect_nearest(ray, t_range, hit);

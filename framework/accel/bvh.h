@@ -93,7 +93,7 @@ std::string validate_bvh(const Bvh& bvh, const std::vector<BvhPrimitive>& input)
 int bvh_depth(const Bvh& bvh);
 
 // Counts a stub call for a query that needed the BVH that a stubbed build_bvh did not make
-// (nearest_hit, stage_api/stage06.h): the image comes out magenta, as for any other stub.
+// (nearest_hit, render/nearest_hit.h): the image comes out magenta, as for any other stub.
 void count_missing_bvh();
 
 }  // namespace rt

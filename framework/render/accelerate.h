@@ -26,7 +26,12 @@ struct AccelerationReport {
 // every query as a stub call, so the image is magenta at once, like any other stub.
 AccelerationReport build_acceleration(PreparedScene& scene, const BvhBuildOptions& options = {});
 
-// The renderer's nearest-hit query, nearest_hit, is in stage_api/stage06.h: the stage 04 and 10
-// student code traces its rays through it too.
+// True when the scene's queries go through a built BVH.
+inline bool uses_bvh(const PreparedScene& scene) {
+    return scene.accelerator == Accelerator::Bvh && scene.bvh.built();
+}
+
+// The renderer's nearest-hit query, nearest_hit, is in render/nearest_hit.h: the student code of
+// stages 04, 10 and 11 traces its rays through it too.
 
 }  // namespace rt

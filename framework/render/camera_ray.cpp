@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "render/accelerate.h"
+#include "render/nearest_hit.h"
 #include "stage_api/stage01.h"
 
 namespace rt {

@@ -10,6 +10,7 @@
 #include "core/parallel_for.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
+#include "render/nearest_hit.h"
 #include "render/progress.h"
 #include "render/shade.h"
 #include "stage_api/stage02.h"

@@ -6,6 +6,7 @@
 #include "render/accelerate.h"
 #include "render/background.h"
 #include "render/camera_ray.h"
+#include "render/nearest_hit.h"
 #include "render/sampled.h"
 #include "render/texturing.h"
 #include "stage_api/stage02.h"

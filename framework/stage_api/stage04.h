@@ -31,7 +31,7 @@ ShadowRay shadow_ray(const SurfacePoint& at, const LightSample& sample);
 // glass sphere is crossed twice); an opaque surface (k_t = 0) gives (0, 0, 0). After a
 // transparent surface move the ray's origin to offset_ray_origin from it (surface_point gives
 // its error bound; the ray keeps its direction and time), at most kMaxShadowSurfaces surfaces. Find each surface with nearest_hit
-// (stage_api/stage06.h): stage 02's intersect_nearest until a scene has a BVH, then the tree.
+// (render/nearest_hit.h): stage 02's intersect_nearest until a scene has a BVH, then the tree.
 Color light_transmittance(const PreparedScene& scene, const SurfacePoint& at,
                           const LightSample& sample);
 

@@ -103,7 +103,7 @@ Vec3 glossy_direction(const Vec3& mirror, Real fuzz, Vec2 u);
 Ray cosine_ray(const SurfacePoint& at, const Vec3& normal, Vec2 u);
 
 // One-sample ambient occlusion: 1 when the cosine_ray meets nothing (nearest_hit,
-// stage_api/stage06.h) closer than max_distance, else 0. Its average is the cosine-weighted
+// render/nearest_hit.h) closer than max_distance, else 0. Its average is the cosine-weighted
 // fraction of the hemisphere that is open; the ambient term becomes k_a I_a times it.
 Real ambient_occlusion(const PreparedScene& scene, const SurfacePoint& at, const Vec3& normal,
                        Real max_distance, Vec2 u);

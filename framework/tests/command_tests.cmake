@@ -136,13 +136,17 @@ set_tests_properties(Framework.TrustBoundary PROPERTIES LABELS "framework")
 add_test(NAME Tree.FolderCycles COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_folder_cycles.sh
                                         ${CMAKE_CURRENT_SOURCE_DIR})
 set_tests_properties(Tree.FolderCycles PROPERTIES LABELS "framework;docs")
-# The size limits (docs/architecture.md#keeping-it-readable): files within 500 lines, functions
-# within 80, and the known exceptions (cmake/size_exceptions.txt) only shrinking. The course's
-# own code only: a student's tree is not held to it.
+# The size guide (docs/architecture.md#keeping-it-readable): warnings over 500 lines a file and
+# 80 a function, a failure over twice that. The course's own code only: a student's tree is not
+# held to it. SizeCeilingFails gives the script a 1001-line file, which must fail it.
 if(RT_INSTRUCTOR)
   add_test(NAME Tree.SizeLimits COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/check_sizes.sh
                                              ${PROJECT_SOURCE_DIR})
-  set_tests_properties(Tree.SizeLimits PROPERTIES LABELS "framework;docs")
+  add_test(NAME Tree.SizeCeilingFails
+    COMMAND bash -c "dir=$(mktemp -d) && seq 1001 > \"$dir/long.cpp\" && \
+                     ! bash \"$0\" \"$dir\" && rm -r \"$dir\""
+            ${PROJECT_SOURCE_DIR}/cmake/check_sizes.sh)
+  set_tests_properties(Tree.SizeLimits Tree.SizeCeilingFails PROPERTIES LABELS "framework;docs")
 endif()
 
 # The gallery page (rt gallery's index.html): every graded scene listed, every link resolves.

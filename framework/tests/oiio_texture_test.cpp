@@ -17,6 +17,7 @@
 #include "image/oiio_loader.h"
 #include "render/accelerate.h"
 #include "render/camera_ray.h"
+#include "render/nearest_hit.h"
 #include "render/oiio_textures.h"
 #include "render/prepare.h"
 #include "render/render.h"

@@ -39,7 +39,6 @@ bool skipped_top_level(const std::string& name) {
     return !kept.count(name);
 }
 
-// Every file of the instructor's tree the workspace depends on, and a hash of them all.
 // A student file's text as the workspace builds it: the stub. The instructor's files carry
 // solution markers (the stub is derived); a starter tree's files are the student's own work, and
 // their stubs as released lie in kStarterStubs (or, failing that, the file is taken as is).
@@ -54,6 +53,7 @@ std::string stub_text(const fs::path& source, const fs::path& key, const std::st
     return fs::is_regular_file(released, ec) ? read_text(released) : text;
 }
 
+// Every file of the instructor's tree the workspace depends on, and a hash of them all.
 std::vector<fs::path> source_files(const fs::path& source, const std::set<fs::path>& student_keys,
                                    std::uint64_t& hash) {
     std::vector<fs::path> files;

@@ -13,8 +13,8 @@
 
 namespace rt {
 
-// Ray-sphere. Solve |o + t d - c|^2 = r^2, a quadratic a t^2 + 2 b t + c = 0 with
-//   a = d.d,  b = d.(o - c),  c = (o - c).(o - c) - r^2.
+// Ray-sphere with centre p and radius r. Solve |o + t d - p|^2 = r^2, a quadratic
+// a t^2 + 2 b t + c = 0 with  a = d.d,  b = d.(o - p),  c = (o - p).(o - p) - r^2.
 // Compute the roots without cancellation (handout section "A stable quadratic"), take the
 // smallest root inside t_range, and fill hit (uv as described in stage02.h).
 bool intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range, Hit& hit) {

@@ -5,6 +5,7 @@
 // You edit only this file. Tests: ctest --test-dir build -L stage04 --output-on-failure
 // The contracts are in framework/stage_api/stage04.h.
 #include "core/not_implemented.h"
+#include "render/nearest_hit.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage04.h"
 #include "stage_api/stage06.h"

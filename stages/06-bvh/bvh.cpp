@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "core/not_implemented.h"
+#include "render/nearest_hit.h"
 #include "stage_api/stage06.h"
 
 namespace rt {

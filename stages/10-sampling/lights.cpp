@@ -11,6 +11,7 @@
 
 #include "core/not_implemented.h"
 #include "geometry/onb.h"
+#include "render/nearest_hit.h"
 #include "stage_api/stage02.h"
 #include "stage_api/stage04.h"
 #include "stage_api/stage06.h"

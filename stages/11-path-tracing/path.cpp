@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/not_implemented.h"
+#include "render/nearest_hit.h"
 #include "scene/area_light_hit.h"
 #include "stage_api/stage06.h"
 #include "stage_api/stage10.h"

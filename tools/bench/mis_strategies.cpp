@@ -13,6 +13,7 @@
 #include "core/source_dir.h"
 #include "image/image.h"
 #include "render/camera_ray.h"
+#include "render/nearest_hit.h"
 #include "render/prepare.h"
 #include "render/render.h"
 #include "scene/area_light_hit.h"

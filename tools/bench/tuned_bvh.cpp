@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "core/parallel_for.h"
+#include "render/nearest_hit.h"
 
 namespace rt::bench::tuned {
 

@@ -1,5 +1,5 @@
 // Transforms and instances against hand-computed hits (docs/scene-format.md#transforms-and-
-// instances): the framework's two-level query (intersect_instance in stage_api/stage06.h) over the
+// instances): the framework's two-level query (intersect_instance in render/nearest_hit.h) over the
 // stage 02 functions and, with "accelerator": "bvh", this stage's tree at both levels. Not graded
 // (a binary of its own): it checks the framework, with the reference solution. Every test uses
 // the tree, so that in a starter tree they fail on this stage's stubs like the others.
@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/source_dir.h"
+#include "render/nearest_hit.h"
 #include "render/prepare.h"
 #include "scene/scene_loader.h"
 #include "scene/surface_point.h"
