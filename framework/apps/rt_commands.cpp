@@ -27,9 +27,28 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
 // `rt render`'s overrides of what the scene file says (the viewer's toggles among them).
 namespace {
 
-std::vector<std::string> texture_filter_names() {
-    std::vector<std::string> names;
-    for (const auto& [name, lookup] : kTextureFilterNames) names.push_back(name);
+// A check that takes one of `names` and gives its value: the option's type, not its text.
+template <typename T>
+CLI::Validator one_of(const std::vector<std::pair<std::string, T>>& names) {
+    std::string list;
+    for (const auto& [name, value] : names) list += (list.empty() ? "" : "|") + name;
+    auto check = [names, list](std::string& input) -> std::string {
+        for (const auto& [name, value] : names)
+            if (input == name) {
+                input = std::to_string(int(value));
+                return "";
+            }
+        return "\"" + input + "\" is not one of " + list;
+    };
+    return CLI::Validator(check, list, "one of");
+}
+
+const std::vector<std::pair<std::string, bool>> kOnOff = {{"on", true}, {"off", false}};
+
+std::vector<std::pair<std::string, TextureLookup>> texture_lookups() {
+    std::vector<std::pair<std::string, TextureLookup>> names;
+    for (const std::string& name : texture_lookup_names())
+        names.emplace_back(name, *parse_texture_lookup(name));
     return names;
 }
 
@@ -39,14 +58,15 @@ void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
     render_cmd
         ->add_option("--accelerator", render_args.accelerator,
                      "override the scene's accelerator: none (stage 02's loop) or bvh (stage 06)")
-        ->check(CLI::IsMember({"none", "bvh"}));
+        ->transform(one_of<Accelerator>({{"none", Accelerator::None}, {"bvh", Accelerator::Bvh}}));
     render_cmd
         ->add_option("--texture-filter", render_args.texture_filter,
                      "filter every image texture nearest or bilinear (stage 07), whatever the "
-                     "scene says; or oiio (OpenImageIO's TextureSystem, mip-mapped, trilinear) "
+                     "scene says (scene: each as the scene says); or oiio (OpenImageIO's "
+                     "TextureSystem, mip-mapped, trilinear) "
                      "or oiio-aniso (anisotropic): footprints from camera-ray differentials, "
                      "none (bilinear) for reflected and refracted rays")
-        ->check(CLI::IsMember(texture_filter_names()));
+        ->transform(one_of(texture_lookups()));
     render_cmd->add_option("--width", render_args.width, "override the image width")
         ->check(CLI::Range(1, 16384));
     render_cmd->add_option("--height", render_args.height, "override the image height")
@@ -59,7 +79,7 @@ void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
         ->check(CLI::Range(-45.0, 45.0));
     render_cmd->add_flag("-q,--quiet", render_args.quiet, "no progress bar or summary");
     render_cmd->add_option("--shadows", render_args.shadows, "override the scene's shadows")
-        ->check(CLI::IsMember({"on", "off"}));
+        ->transform(one_of(kOnOff));
     render_cmd
         ->add_option("--off", render_args.off,
                      "switch terms off as rt view's panel does (a comma list): ambient, diffuse, "
@@ -69,11 +89,11 @@ void add_render_overrides(CLI::App* render_cmd, RenderArgs& render_args) {
         ->check(
             CLI::IsMember(std::vector<std::string>(std::begin(kTermNames), std::end(kTermNames))));
     render_cmd->add_option("--fresnel", render_args.fresnel, "override the scene's fresnel")
-        ->check(CLI::IsMember({"on", "off"}));
+        ->transform(one_of(kOnOff));
     render_cmd
         ->add_option("--max-depth", render_args.max_depth,
                      "override the scene's bounces of reflected/refracted rays")
-        ->check(CLI::Range(0, 64));
+        ->check(CLI::Range(0, kMaxDepthLimit));
     render_cmd
         ->add_option("--spp", render_args.spp,
                      "override the scene's samples per pixel (stage 10: any value > 1 samples)")

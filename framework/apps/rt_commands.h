@@ -19,13 +19,6 @@
 
 namespace rt {
 
-// --texture-filter's values: the option's check and the override it becomes.
-inline const std::vector<std::pair<std::string, TextureLookup>> kTextureFilterNames = {
-    {"nearest", TextureLookup::Nearest},
-    {"bilinear", TextureLookup::Bilinear},
-    {"oiio", TextureLookup::Oiio},
-    {"oiio-aniso", TextureLookup::OiioAniso}};
-
 struct RenderArgs {
     std::string scene;
     std::string output;
@@ -35,13 +28,13 @@ struct RenderArgs {
     bool quiet = false;
     std::string debug_pixel, overlay_pixel;  // "X,Y"
     std::string debug_format = "text";
-    std::string accelerator;       // "", "none" or "bvh": overrides the scene's
-    std::string texture_filter;    // "", nearest, bilinear, oiio, oiio-aniso: for every image
+    std::optional<Accelerator> accelerator;       // overrides the scene's
+    std::optional<TextureLookup> texture_filter;  // for every image texture
     double yaw_degrees = 0;        // turns the camera about its up axis (the grader's unseen views)
-    std::string shadows;           // "", on or off: overrides the scene's (the viewer's toggle)
+    std::optional<bool> shadows;   // on or off: overrides the scene's (the viewer's toggle)
     int max_depth = -1;            // >= 0: overrides the scene's
     std::vector<std::string> off;  // --off: kTermNames switched off (the viewer's toggles)
-    std::string fresnel;           // "", on or off: overrides the scene's
+    std::optional<bool> fresnel;   // on or off: overrides the scene's
     int spp = 0;                   // > 0: overrides the scene's samples_per_pixel (stage 10)
     std::optional<std::uint64_t> seed;  // overrides the scene's seed (stage 10)
     bool gpu = false;        // stage 09: a compute shader renders it (render/gpu/gpu_render.h)

@@ -88,14 +88,12 @@ SceneOverrides overrides_of(const RenderArgs& args) {
     o.width = args.width;
     o.height = args.height;
     o.yaw_degrees = args.yaw_degrees;
-    if (!args.accelerator.empty())
-        o.accelerator = args.accelerator == "bvh" ? Accelerator::Bvh : Accelerator::None;
-    for (const auto& [name, lookup] : kTextureFilterNames)
-        if (args.texture_filter == name) o.texture_lookup = lookup;
-    if (!args.shadows.empty()) o.shadows = args.shadows == "on";
+    o.accelerator = args.accelerator;
+    o.texture_lookup = args.texture_filter;
+    o.shadows = args.shadows;
     if (args.max_depth >= 0) o.max_depth = args.max_depth;
     for (const std::string& term : args.off) *term_switch(o.terms, term) = false;
-    if (!args.fresnel.empty()) o.fresnel = args.fresnel == "on";
+    o.fresnel = args.fresnel;
     if (args.spp > 0) o.samples_per_pixel = args.spp;
     o.seed = args.seed;
     return o;

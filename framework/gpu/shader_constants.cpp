@@ -3,6 +3,7 @@
 #include <initializer_list>
 #include <utility>
 
+#include "accel/bvh.h"
 #include "gpu/gpu_scene.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
@@ -98,6 +99,13 @@ std::string shader_prelude() {
                       named("kDebugRefracted", kDebugRefracted), named("kDebugPixel", kDebugPixel),
                       named("kDebugSample", kDebugSample), named("kDebugCapacity", kDebugCapacity),
                       named("kLoopLimit", kLoopLimit)}) +
+           constants(
+               {named("kBvhMaxDepth", kBvhMaxDepth), named("kMaxDepthLimit", kMaxDepthLimit)}) +
+           constants({named("kTermAmbient", kTermAmbient), named("kTermDiffuse", kTermDiffuse),
+                      named("kTermSpecular", kTermSpecular), named("kTermEmissive", kTermEmissive),
+                      named("kTermReflection", kTermReflection),
+                      named("kTermRefraction", kTermRefraction),
+                      named("kTermEnvironment", kTermEnvironment)}) +
            bindings();
 }
 

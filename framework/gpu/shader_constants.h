@@ -28,6 +28,19 @@ enum FeatureBit : int {
 // The texture_lookup uniform: each texture's own filter, or all nearest, or all bilinear.
 enum LookupCode : int { kLookupPerTexture = 0, kLookupNearest = 1, kLookupBilinear = 2 };
 
+// rt export-web's term switches (the rt_terms_off uniform, shaders/page_terms.glsl): bit i switches
+// off the term render/prepare.h's kTermNames[i] names, as rt view's panel does.
+enum TermBit : int {
+    kTermAmbient = 1 << 0,
+    kTermDiffuse = 1 << 1,
+    kTermSpecular = 1 << 2,
+    kTermEmissive = 1 << 3,
+    kTermReflection = 1 << 4,
+    kTermRefraction = 1 << 5,
+    kTermEnvironment = 1 << 6,
+};
+constexpr int kTermCount = 7;
+
 // The output buffer (compute_io.glsl): stub flags, the pixels, --debug-pixel's notes. The packed
 // scene's bindings are gpu_scene.h's Binding.
 constexpr int kOutputBinding = 15;

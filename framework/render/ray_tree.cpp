@@ -16,22 +16,6 @@ namespace {
 
 using json = nlohmann::json;
 
-const char* kind_name(Scene::Kind kind) {
-    switch (kind) {
-        case Scene::Kind::Sphere:
-            return "sphere";
-        case Scene::Kind::Plane:
-            return "plane";
-        case Scene::Kind::Triangle:
-            return "triangle";
-        case Scene::Kind::Box:
-            return "box";
-        case Scene::Kind::Instance:
-            return "instance";
-    }
-    return "?";
-}
-
 template <typename V>
 json array3(const V& v) {
     return json::array({double(v[0]), double(v[1]), double(v[2])});
@@ -61,7 +45,7 @@ json node_json(const PreparedScene& scene, const RayNode& n) {
                     {"normal", array3(n.surface.normal)},
                     {"front_face", n.surface.front_face},
                     {"primitive", n.hit_record.primitive},
-                    {"primitive_kind", kind_name(kind)},
+                    {"primitive_kind", to_string(kind)},
                     {"material", m},
                     {"material_name", scene.material_name(m)}};
     } else {
@@ -190,7 +174,7 @@ std::string primitive_name(const PreparedScene& scene, int id) {
     if (!scene.is_primitive(id)) return "none";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(id, index);
-    return std::string(kind_name(kind)) + " " + std::to_string(index) + " (id " +
+    return std::string(to_string(kind)) + " " + std::to_string(index) + " (id " +
            std::to_string(id) + ")";
 }
 

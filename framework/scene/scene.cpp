@@ -158,4 +158,42 @@ const char* to_string(Accelerator accelerator) {
     return accelerator == Accelerator::Bvh ? "bvh" : "none";
 }
 
+const char* to_string(Scene::Kind kind) {
+    switch (kind) {
+        case Scene::Kind::Sphere:
+            return "sphere";
+        case Scene::Kind::Plane:
+            return "plane";
+        case Scene::Kind::Triangle:
+            return "triangle";
+        case Scene::Kind::Box:
+            return "box";
+        case Scene::Kind::Instance:
+            return "instance";
+    }
+    return "?";
+}
+
+namespace {
+// TextureLookup's names, in the enum's order.
+constexpr std::array<const char*, 5> kTextureLookupNames = {"scene", "nearest", "bilinear", "oiio",
+                                                            "oiio-aniso"};
+static_assert(int(TextureLookup::OiioAniso) + 1 == kTextureLookupNames.size());
+}  // namespace
+
+const char* to_string(TextureLookup lookup) {
+    const std::size_t i = std::size_t(lookup);
+    return i < kTextureLookupNames.size() ? kTextureLookupNames[i] : "?";
+}
+
+std::optional<TextureLookup> parse_texture_lookup(std::string_view name) {
+    for (std::size_t i = 0; i < kTextureLookupNames.size(); ++i)
+        if (name == kTextureLookupNames[i]) return TextureLookup(i);
+    return std::nullopt;
+}
+
+std::vector<std::string> texture_lookup_names() {
+    return {kTextureLookupNames.begin(), kTextureLookupNames.end()};
+}
+
 }  // namespace rt

@@ -302,5 +302,12 @@ std::optional<RenderMode> parse_render_mode(std::string_view name);  // nullopt:
 std::vector<std::string> render_mode_names();                        // in RenderMode's order
 std::string join_render_mode_names(const std::string& separator);  // e.g. "directions|normals|…"
 const char* to_string(Accelerator accelerator);
+// A primitive kind's name in messages, the ray tree and the viewer: "sphere", "plane", ...
+const char* to_string(Scene::Kind kind);
+// A texture lookup's name on the command line (--texture-filter) and in the viewer: "scene"
+// (each texture's own filter), "nearest", "bilinear", "oiio", "oiio-aniso" (one table, scene.cpp).
+const char* to_string(TextureLookup lookup);
+std::optional<TextureLookup> parse_texture_lookup(std::string_view name);  // nullopt: no such one
+std::vector<std::string> texture_lookup_names();                           // in the enum's order
 
 }  // namespace rt

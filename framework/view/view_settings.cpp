@@ -77,7 +77,7 @@ PreparedScene SceneSource::make(const ViewSettings& settings) {
     PreparedScene scene = bvh ? *with_bvh_ : loaded_;
     scene.mode = settings.mode;
     scene.shadows = settings.shadows;
-    scene.max_depth = std::clamp(settings.max_depth, 0, 64);
+    scene.max_depth = std::clamp(settings.max_depth, 0, kMaxDepthLimit);
     scene.texture_lookup = settings.texture_lookup;
     scene.camera = settings.camera;
     scene.fresnel = settings.fresnel;
@@ -93,8 +93,9 @@ PreparedScene SceneSource::make(const ViewSettings& settings) {
 }
 
 std::string setting_names() {
-    return "mode " + join_render_mode_names("|") +
-           ", shadows on|off, max-depth 0..64, bvh on|off, filter scene|nearest|bilinear, "
+    return "mode " + join_render_mode_names("|") + ", shadows on|off, max-depth 0.." +
+           std::to_string(kMaxDepthLimit) +
+           ", bvh on|off, filter scene|nearest|bilinear, "
            "gpu on|off, "
            "ambient|diffuse|specular|emissive|reflection|refraction|fresnel|environment on|off";
 }
@@ -124,20 +125,17 @@ std::string set_by_name(ViewSettings& s, const std::string& name, const std::str
     if (name == "max-depth") {
         char* end = nullptr;
         const long depth = std::strtol(value.c_str(), &end, 10);
-        if (value.empty() || *end != '\0' || depth < 0 || depth > 64)
-            return "max-depth takes a whole number 0..64, not \"" + value + "\"";
+        if (value.empty() || *end != '\0' || depth < 0 || depth > kMaxDepthLimit)
+            return "max-depth takes a whole number 0.." + std::to_string(kMaxDepthLimit) +
+                   ", not \"" + value + "\"";
         s.max_depth = int(depth);
         return "";
     }
     if (name == "filter") {
-        if (value == "scene")
-            s.texture_lookup = TextureLookup::PerTexture;
-        else if (value == "nearest")
-            s.texture_lookup = TextureLookup::Nearest;
-        else if (value == "bilinear")
-            s.texture_lookup = TextureLookup::Bilinear;
-        else
+        const std::optional<TextureLookup> lookup = parse_texture_lookup(value);
+        if (!lookup || int(*lookup) > int(TextureLookup::Bilinear))
             return "filter takes scene, nearest or bilinear, not \"" + value + "\"";
+        s.texture_lookup = *lookup;
         return "";
     }
     return "unknown setting \"" + name + "\"; settings: " + setting_names();

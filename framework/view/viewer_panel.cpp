@@ -12,19 +12,10 @@
 namespace rt::view {
 namespace {
 
-const char* const kFilterNames[] = {"as the scene says", "nearest", "bilinear"};
-
-const char* kind_label(RayNode::Kind kind) {
-    switch (kind) {
-        case RayNode::Kind::Camera:
-            return "camera";
-        case RayNode::Kind::Reflection:
-            return "reflect";
-        case RayNode::Kind::Refraction:
-            return "refract";
-    }
-    return "?";
-}
+// The filters the panel offers: each texture's own, or all nearest or bilinear.
+const char* const kFilterNames[] = {to_string(TextureLookup::PerTexture),
+                                    to_string(TextureLookup::Nearest),
+                                    to_string(TextureLookup::Bilinear)};
 
 // The colours draw_ray_tree uses, so the list and the overlay read alike.
 ImVec4 kind_color(RayNode::Kind kind) {
@@ -43,12 +34,9 @@ std::string what_was_hit(const PreparedScene& scene, const RayNode& n) {
     if (!n.hit) return "miss (background)";
     std::size_t index = 0;
     const Scene::Kind kind = scene.primitive_kind(n.hit_record.primitive, index);
-    static const char* const kinds[] = {"sphere", "plane", "triangle", "box", "instance", "?",
-                                        "?",      "?",     "?",        "?",   "?",        "?",
-                                        "?",      "?",     "?",        "?"};
     char text[160];
     const std::string& material = scene.material_name(n.hit_record.material);
-    std::snprintf(text, sizeof text, "%s %zu, t %.3g, %s", kinds[int(kind) & 15], index,
+    std::snprintf(text, sizeof text, "%s %zu, t %.3g, %s", to_string(kind), index,
                   double(n.hit_record.t),
                   material.empty() ? ("material #" + std::to_string(n.hit_record.material)).c_str()
                                    : ("\"" + material + "\"").c_str());
@@ -57,7 +45,7 @@ std::string what_was_hit(const PreparedScene& scene, const RayNode& n) {
 
 void ray_list(const PreparedScene& scene, const RayNode& n) {
     ImGui::PushID(&n);
-    ImGui::TextColored(kind_color(n.kind), "%*s%s d%d", n.depth * 2, "", kind_label(n.kind),
+    ImGui::TextColored(kind_color(n.kind), "%*s%s d%d", n.depth * 2, "", to_string(n.kind),
                        n.depth);
     ImGui::SameLine();
     ImGui::TextUnformatted(what_was_hit(scene, n).c_str());

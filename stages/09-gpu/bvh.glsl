@@ -1,10 +1,9 @@
 // Stage 09, BVH traversal: stage 06's queries (stages/06-bvh/bvh.cpp) in GLSL, over the nodes
 // the CPU built (bvh_nodes[], bvh_primitives[]: framework/accel/bvh.h). GLSL has no recursion
 // and no pointers: a node is its index, and the nodes still to visit wait on a fixed-size stack
-// (the builder never makes a tree deeper than kBvhMaxDepth). Planes stay outside the tree.
+// (the builder never makes a tree deeper than kBvhMaxDepth, which the framework's prelude
+// defines as accel/bvh.h does). Planes stay outside the tree.
 // Handout: stages/09-gpu/README.md#bvh-traversal.
-
-const int kBvhMaxDepth = 64;
 
 // Ray-box slab test for a node, as stage 06's intersect_node: true when the segment t_range
 // meets the box, t_entry where it enters (clamped to t_range.min). Never miss a box a primitive

@@ -2,12 +2,12 @@
 
 #include <unistd.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/base64.h"
 #include "core/source_dir.h"
+#include "core/text_file.h"
+#include "gpu/shader_constants.h"
 #include "render/camera_ray.h"
 #include "render/gpu/gpu_render.h"
 #include "render/gpu/shadertoy_export.h"
@@ -18,13 +18,13 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
+// A file the page is made of, under shaders/: its template and scripts (web/), its shader parts.
 std::string read_page_file(const std::string& name) {
-    const fs::path file = source_dir() / "shaders/web" / name;
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    if (!(in && text << in.rdbuf()))
-        throw GpuError(display_path(file) + ": cannot read the page template");
-    return text.str();
+    const fs::path file = source_dir() / "shaders" / name;
+    std::string text;
+    if (!read_text_if(file, text))
+        throw GpuError(display_path(file) + ": cannot read this part of the page");
+    return text;
 }
 
 // The CPU render as a data URL, through the framework's PNG writer (a temporary file: it writes
@@ -34,11 +34,9 @@ std::string png_data_url(const Image8& image) {
     const fs::path file =
         fs::temp_directory_path() / ("rt-export-web-" + std::to_string(getpid()) + ".png");
     write_image8(image, file);
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
+    const std::string bytes = read_text(file);
     fs::remove(file);
-    return "data:image/png;base64," + base64(bytes.str());
+    return "data:image/png;base64," + base64(bytes);
 }
 
 // A baked declaration ("\nconst bool fresnel = ...;") turned into the line `replacement`.
@@ -49,25 +47,6 @@ void to_uniform(std::string& text, const std::string& baked, const std::string& 
                        "\" to make a uniform of");
     text.replace(at + 1, text.find('\n', at + 1) - at - 1, replacement);
 }
-
-// The page's switches of rt view's terms (kTermNames, bit i the i-th): main zeroes those
-// coefficients in every material, or makes the environment none, before the pixel is traced, as
-// rt view does to the scene (render/prepare.h's switch_off_terms). The materials and the
-// environment lose their `const` for it.
-const char* const kApplyTerms =
-    "\n// rt export-web's switches (bit i: kTermNames[i] off), as rt view's panel zeroes them.\n"
-    "uniform int rt_terms_off;\n"
-    "void rt_apply_terms() {\n"
-    "    for (int i = 0; i < material_count; ++i) {\n"
-    "        if ((rt_terms_off & 1) != 0) materials[i].ambient.rgb = vec3(0.0);\n"
-    "        if ((rt_terms_off & 2) != 0) materials[i].diffuse.rgb = vec3(0.0);\n"
-    "        if ((rt_terms_off & 4) != 0) materials[i].specular_shininess.rgb = vec3(0.0);\n"
-    "        if ((rt_terms_off & 8) != 0) materials[i].emissive.rgb = vec3(0.0);\n"
-    "        if ((rt_terms_off & 16) != 0) materials[i].reflective.rgb = vec3(0.0);\n"
-    "        if ((rt_terms_off & 32) != 0) materials[i].transmissive_ior.rgb = vec3(0.0);\n"
-    "    }\n"
-    "    if ((rt_terms_off & 64) != 0) environment[0].kind_image.x = kEnvironmentNone;\n"
-    "}\n";
 
 // The export with what the page changes as uniforms of the same names: the camera (orbit, pan,
 // zoom), the mode, the bounces, Fresnel and the feature bits (shadows, refraction), and the
@@ -92,7 +71,7 @@ std::string page_shader_text(const ShadertoyExport& shader) {
     if (main_at == std::string::npos || call_at == std::string::npos)
         throw GpuError("rt: error: the Shadertoy wrapper has no main to switch terms in");
     text.insert(call_at, "    rt_apply_terms();\n");
-    text.insert(main_at, kApplyTerms);
+    text.insert(main_at, "\n" + read_page_file("page_terms.glsl"));
     return text;
 }
 
@@ -153,6 +132,8 @@ nlohmann::json page_settings(const PreparedScene& scene, RenderMode mode,
     nlohmann::json mode_names = nlohmann::json::array();
     for (RenderMode m : modes) mode_names.push_back({{"name", to_string(m)}, {"value", int(m)}});
     nlohmann::json terms = nlohmann::json::array();
+    // Bit i of the page's rt_terms_off is kTermNames[i] (gpu::TermBit, shaders/page_terms.glsl).
+    static_assert(std::size(kTermNames) == gpu::kTermCount);
     for (const char* name : kTermNames) terms.push_back(name);
     return {{"modes", mode_names},
             {"shaded", int(RenderMode::Shaded)},
@@ -281,16 +262,16 @@ std::string script_safe(std::string text, bool json) {
 
 std::string export_web_page(const PreparedScene& scene, RenderMode mode, const Image8& reference) {
     const PageShader shader = page_shader(scene, mode);
-    std::string page = read_page_file("page.html");
+    std::string page = read_page_file("web/page.html");
     const std::string title = scene.source.empty() ? "A scene" : fs::path(scene.source).stem();
     replace_once(page, "@RT_TITLE@", title);
     replace_once(page, "@RT_SHADER@", script_safe(page_shader_text(shader.shader), false));
     replace_once(page, "@RT_DATA@",
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
     replace_once(page, "@RT_SCRIPT@",
-                 read_page_file("page_camera.js") + read_page_file("page_controls.js") +
-                     read_page_file("page_samples.js") + read_page_file("page_ranges.js") +
-                     read_page_file("page.js"));
+                 read_page_file("web/page_camera.js") + read_page_file("web/page_controls.js") +
+                     read_page_file("web/page_samples.js") + read_page_file("web/page_ranges.js") +
+                     read_page_file("web/page.js"));
     return page;
 }
 
