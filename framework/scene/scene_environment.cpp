@@ -7,6 +7,29 @@
 #include "scene/message_text.h"
 #include "scene/scene_sections.h"
 
+namespace rt::schema {
+const SchemaElement kEnvironment{
+    "\"environment\"",
+    "",
+    {"Environment"},
+    {{"latlong"}, {"cube"}, {"sky"}, {"intensity"}, {"rotate_y"}, {"ambient"}}};
+const SchemaElement kSky{"\"sky\"",
+                         "",
+                         {"Environment"},
+                         {{"zenith"},
+                          {"horizon"},
+                          {"ground"},
+                          {"sun_direction"},
+                          {"sun_radius_degrees"},
+                          {"sun"},
+                          {"resolution"}}};
+const SchemaElement kCubeFaces{
+    "\"cube\"",
+    "",
+    {"Environment"},
+    {{"px", true}, {"nx", true}, {"py", true}, {"ny", true}, {"pz", true}, {"nz", true}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 namespace {
@@ -29,9 +52,7 @@ Image SceneSections::read_environment_image(const json& value, const std::string
 
 SkyParameters SceneSections::read_sky(const json& value, const std::string& pointer) {
     require_object(value, pointer, "{\"sun_direction\": [0.5, 0.6, -0.6]}");
-    check_keys(value, pointer, "\"sky\"",
-               {"zenith", "horizon", "ground", "sun_direction", "sun_radius_degrees", "sun",
-                "resolution"});
+    check_keys(value, pointer, schema::kSky);
     SkyParameters sky;
     const auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     if (const json* v = member(value, "zenith")) sky.zenith = color(*v, at("zenith"));
@@ -72,8 +93,7 @@ void SceneSections::read_environment(const json& root) {
     const std::string at = "/environment";
     const std::string example = "{\"latlong\": \"sky.exr\"}";
     require_object(*env, at, example);
-    check_keys(*env, at, "\"environment\"",
-               {"latlong", "cube", "sky", "intensity", "rotate_y", "ambient"});
+    check_keys(*env, at, schema::kEnvironment);
     const json* latlong = member(*env, "latlong");
     const json* cube = member(*env, "cube");
     const json* sky = member(*env, "sky");
@@ -120,7 +140,7 @@ void SceneSections::read_environment_images(const json* latlong, const json* cub
     require_object(*cube, cube_at,
                    "{\"px\": \"px.png\", \"nx\": \"nx.png\", \"py\": \"py.png\", \"ny\": "
                    "\"ny.png\", \"pz\": \"pz.png\", \"nz\": \"nz.png\"}");
-    check_keys(*cube, cube_at, "\"cube\"", {"px", "nx", "py", "ny", "pz", "nz"});
+    check_keys(*cube, cube_at, schema::kCubeFaces);
     int size = 0;
     std::string first;
     for (int f = 0; f < kCubeFaces; ++f) {

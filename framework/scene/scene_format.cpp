@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "scene/scene_loader.h"
+#include "scene/scene_schema.h"
 
 namespace rt {
 
@@ -23,36 +24,33 @@ namespace {
 using json = nlohmann::json;
 using Order = std::vector<std::string>;
 
-// Key orders, as the tables of docs/scene-format.md list them. Each surface and light type uses
-// a subset of one shared list, so "type" comes first and "material" last in every one of them.
-const Order kTopLevel{"camera",      "image",   "render",        "background",
-                      "environment", "fog",     "ambient_light", "textures",
-                      "materials",   "objects", "surfaces",      "lights"};
-const Order kCamera{"projection",  "eye",      "look_at",        "up",     "fov",
-                    "view_height", "aperture", "focus_distance", "shutter"};
-const Order kImage{"width", "height"};
-const Order kRender{"mode",        "max_depth",          "shadows",   "fresnel",
-                    "accelerator", "samples_per_pixel",  "seed",      "filter",
-                    "indirect",    "occlusion_distance", "integrator"};
-const Order kMaterial{"name",      "ambient",     "diffuse",      "specular",     "emissive",
-                      "shininess", "reflective",  "transmissive", "ior",          "fuzz",
-                      "roughness", "diffuse_map", "specular_map", "emissive_map", "normal_map"};
-const Order kTexture{"name",   "image", "checker",     "checker_3d",  "marble",
-                     "filter", "wrap",  "color_space", "colour_space"};
-const Order kTextureSlot{"texture", "scale", "offset"};
-const Order kProcedural{"a", "b", "scale"};
-const Order kSurface{"type",        "center",    "radius",   "velocity", "point",     "normal",
-                     "vertices",    "min",       "max",      "tiles",    "file",      "procedural",
-                     "heightfield", "triangles", "seed",     "scale",    "translate", "object",
-                     "transform",   "material",  "materials"};
-const Order kObject{"name", "surfaces"};
-const Order kRotation{"axis", "degrees"};
-const Order kEnvironment{"latlong", "cube", "intensity", "rotate_y"};
-const Order kFog{"density", "albedo", "min", "max"};
-const Order kCubeFaces{"px", "nx", "py", "ny", "pz", "nz"};
-const Order kLight{"type",   "position", "direction", "intensity", "attenuation", "corner",
-                   "edge_u", "edge_v",   "center",    "radius",    "radiance"};
-const Order kNone{};
+// How the keys of an object are ordered: by the element it is, which may depend on the object
+// itself (a surface or a light, by its "type"); nullptr when no table orders it.
+using ElementOf = const SchemaElement* (*)(const json& object);
+
+// An element's keys in its table's order (scene_schema.h); none: every key alphabetically.
+Order order_for(ElementOf element_of, const json& object) {
+    const SchemaElement* element = element_of ? element_of(object) : nullptr;
+    return element ? element->key_names() : Order{};
+}
+
+std::string type_of(const json& object) {
+    const json* type = object.contains("type") ? &object.at("type") : nullptr;
+    return type && type->is_string() ? type->get<std::string>() : "";
+}
+
+const SchemaElement* surface(const json& object) {
+    return schema::surface_of_type(type_of(object));
+}
+const SchemaElement* light(const json& object) {
+    return schema::light_of_type(type_of(object));
+}
+
+// An element whose table does not depend on the object: a function per table, made once.
+template <const SchemaElement& element>
+const SchemaElement* always(const json&) {
+    return &element;
+}
 
 // The keys of `object` in canonical order: those of `order` first, as listed, then any others
 // alphabetically (the loader refuses unknown keys, so there are none in a valid scene).
@@ -76,30 +74,36 @@ std::string number_text(const json& v) {
     return canonical_number(v.get<double>());
 }
 
-// The key order of an object nested under `key` (texture slots, procedural textures, the
-// environment's "cube" faces, a transform step's "rotate"), or of the objects in an array under
-// `key` (an object's "surfaces"). A transform step has one key, so needs no order.
-const Order& order_of_member(const std::string& key) {
-    if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0) return kTextureSlot;
-    if (key == "surfaces") return kSurface;
-    if (key == "rotate") return kRotation;
-    if (key == "checker" || key == "checker_3d" || key == "marble") return kProcedural;
-    if (key == "cube") return kCubeFaces;
-    return kNone;
+// The element of an object nested under `key` (texture slots, procedural textures, the
+// environment's sky and "cube" faces, a height field, a transform step's "rotate"), or of the
+// objects in an array under `key` (an object's "surfaces", an instance's "transform" steps).
+ElementOf element_of_member(const std::string& key) {
+    if (key.size() > 4 && key.compare(key.size() - 4, 4, "_map") == 0)
+        return always<schema::kTextureSlot>;
+    if (key == "surfaces") return surface;
+    if (key == "transform") return always<schema::kTransformStep>;
+    if (key == "rotate") return always<schema::kRotation>;
+    if (key == "checker") return always<schema::kCheckerTexture>;
+    if (key == "checker_3d") return always<schema::kChecker3dTexture>;
+    if (key == "marble") return always<schema::kMarbleTexture>;
+    if (key == "sky") return always<schema::kSky>;
+    if (key == "cube") return always<schema::kCubeFaces>;
+    if (key == "heightfield") return always<schema::kHeightField>;
+    return nullptr;
 }
 
-// A value on one line: {"a": 1, "b": [1, 2, 3]}. `order` orders the keys of `v` itself, or of
-// each object in it when `v` is an array.
-void write_inline(const json& v, const Order& order, std::string& out) {
+// A value on one line: {"a": 1, "b": [1, 2, 3]}. `element_of` orders the keys of `v` itself, or
+// of each object in it when `v` is an array.
+void write_inline(const json& v, ElementOf element_of, std::string& out) {
     switch (v.type()) {
         case json::value_t::object: {
             out += '{';
             bool first = true;
-            for (const std::string& key : ordered_keys(v, order)) {
+            for (const std::string& key : ordered_keys(v, order_for(element_of, v))) {
                 if (!first) out += ", ";
                 first = false;
                 out += string_text(key) + ": ";
-                write_inline(v.at(key), order_of_member(key), out);
+                write_inline(v.at(key), element_of_member(key), out);
             }
             out += '}';
             break;
@@ -108,7 +112,7 @@ void write_inline(const json& v, const Order& order, std::string& out) {
             out += '[';
             for (std::size_t i = 0; i < v.size(); ++i) {
                 if (i > 0) out += ", ";
-                write_inline(v[i], order, out);
+                write_inline(v[i], element_of, out);
             }
             out += ']';
             break;
@@ -128,38 +132,38 @@ void write_inline(const json& v, const Order& order, std::string& out) {
     }
 }
 
-const Order& order_of_section(const std::string& key) {
-    if (key == "camera") return kCamera;
-    if (key == "image") return kImage;
-    if (key == "render") return kRender;
-    if (key == "environment") return kEnvironment;
-    if (key == "fog") return kFog;
-    return kNone;
+ElementOf element_of_section(const std::string& key) {
+    if (key == "camera") return always<schema::kCamera>;
+    if (key == "image") return always<schema::kImage>;
+    if (key == "render") return always<schema::kRender>;
+    if (key == "environment") return always<schema::kEnvironment>;
+    if (key == "fog") return always<schema::kFog>;
+    return nullptr;
 }
 
-const Order& order_of_items(const std::string& key) {
-    if (key == "textures") return kTexture;
-    if (key == "materials") return kMaterial;
-    if (key == "objects") return kObject;
-    if (key == "surfaces") return kSurface;
-    if (key == "lights") return kLight;
-    return kNone;
+ElementOf element_of_items(const std::string& key) {
+    if (key == "textures") return always<schema::kTexture>;
+    if (key == "materials") return always<schema::kMaterial>;
+    if (key == "objects") return always<schema::kObject>;
+    if (key == "surfaces") return surface;
+    if (key == "lights") return light;
+    return nullptr;
 }
 
 std::string write_canonical(const json& root) {
     if (!root.is_object() || root.empty()) {
         std::string out;
-        write_inline(root, kNone, out);
+        write_inline(root, nullptr, out);
         return out + "\n";
     }
     std::string out = "{\n";
-    const std::vector<std::string> keys = ordered_keys(root, kTopLevel);
+    const std::vector<std::string> keys = ordered_keys(root, schema::kScene.key_names());
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::string& key = keys[k];
         const json& value = root.at(key);
         out += "  " + string_text(key) + ": ";
-        const Order& items = order_of_items(key);
-        if (&items != &kNone && value.is_array() && !value.empty()) {
+        const ElementOf items = element_of_items(key);
+        if (items && value.is_array() && !value.empty()) {
             // A list section: one item per line.
             out += "[\n";
             for (std::size_t i = 0; i < value.size(); ++i) {
@@ -169,7 +173,7 @@ std::string write_canonical(const json& root) {
             }
             out += "  ]";
         } else {
-            write_inline(value, order_of_section(key), out);
+            write_inline(value, element_of_section(key), out);
         }
         out += k + 1 < keys.size() ? ",\n" : "\n";
     }

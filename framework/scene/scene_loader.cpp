@@ -10,6 +10,25 @@
 
 namespace rt {
 
+namespace schema {
+// The top level of a scene file (docs/scene-format.md#top-level).
+const SchemaElement kScene{"the scene",
+                           "",
+                           {"Top level"},
+                           {{"camera"},
+                            {"image"},
+                            {"render"},
+                            {"background"},
+                            {"environment"},
+                            {"fog"},
+                            {"ambient_light"},
+                            {"textures"},
+                            {"materials"},
+                            {"objects"},
+                            {"surfaces"},
+                            {"lights"}}};
+}  // namespace schema
+
 namespace scene_internal {
 
 Scene SceneSections::load() {
@@ -18,9 +37,7 @@ Scene SceneSections::load() {
     if (!root.is_object())
         fail_value("", "the top level must be a JSON object, got " + describe(root),
                    "wrap the scene in { ... }");
-    check_keys(root, "", "the scene",
-               {"camera", "image", "render", "background", "environment", "fog", "ambient_light",
-                "textures", "materials", "objects", "surfaces", "lights"});
+    check_keys(root, "", schema::kScene);
     scene_.source = name_;
     read_image(root);
     read_render(root);

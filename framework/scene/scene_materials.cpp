@@ -3,6 +3,27 @@
 
 #include "scene/message_text.h"
 
+namespace rt::schema {
+const SchemaElement kMaterial{"a material",
+                              "",
+                              {"Materials", "Sampling"},
+                              {{"name"},
+                               {"ambient"},
+                               {"diffuse"},
+                               {"specular"},
+                               {"emissive"},
+                               {"shininess"},
+                               {"reflective"},
+                               {"transmissive"},
+                               {"ior"},
+                               {"fuzz"},
+                               {"roughness"},
+                               {"diffuse_map"},
+                               {"specular_map"},
+                               {"emissive_map"},
+                               {"normal_map"}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 void SceneSections::read_materials(const json& root) {
@@ -18,10 +39,7 @@ void SceneSections::read_materials(const json& root) {
 
 void SceneSections::read_material(const json& object, const std::string& pointer) {
     require_object(object, pointer, "{\"name\": \"red\", \"diffuse\": [0.8, 0.1, 0.1]}");
-    check_keys(object, pointer, "a material",
-               {"name", "ambient", "diffuse", "specular", "emissive", "shininess", "reflective",
-                "transmissive", "ior", "fuzz", "roughness", "diffuse_map", "specular_map",
-                "emissive_map", "normal_map"});
+    check_keys(object, pointer, schema::kMaterial);
     Material m;
     std::string name;
     if (const json* v = member(object, "name")) {

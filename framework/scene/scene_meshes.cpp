@@ -11,6 +11,11 @@
 #include "scene/mesh_placement.h"
 #include "scene/obj_loader.h"
 
+namespace rt::schema {
+const SchemaElement kHeightField{
+    "a height field", "", {"Height fields"}, {{"image", true}, {"height"}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 namespace fs = std::filesystem;
@@ -99,7 +104,7 @@ void SceneSections::read_heightfield_mesh(const json& h, const std::string& poin
                                           Vec3 translate, int material) {
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     require_object(h, pointer, R"({"image": "heights.png", "height": 0.3})");
-    check_keys(h, pointer, "a height field", {"image", "height"});
+    check_keys(h, pointer, schema::kHeightField);
     const std::string file =
         string(required(h, pointer, "image", "a height field", "\"heights.png\""), at("image"),
                "\"heights.png\"");

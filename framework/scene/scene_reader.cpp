@@ -113,6 +113,11 @@ void SceneReader::check_keys(const json& object, const std::string& pointer,
                  suggestion(*first_unknown, known));
 }
 
+void SceneReader::check_keys(const json& object, const std::string& pointer,
+                             const SchemaElement& element) const {
+    check_keys(object, pointer, element.what, element.key_names());
+}
+
 void SceneReader::require_object(const json& value, const std::string& pointer,
                                  const std::string& example) const {
     if (!value.is_object())

@@ -12,6 +12,7 @@
 #include "core/real.h"
 #include "scene/json_positions.h"
 #include "scene/scene.h"
+#include "scene/scene_schema.h"
 
 namespace rt::scene_internal {
 
@@ -59,6 +60,9 @@ class SceneReader {
     // ---- typed fields ----
     void check_keys(const json& object, const std::string& pointer, const std::string& what,
                     const std::vector<std::string>& known) const;
+    // The keys of `element`'s table (scene_schema.h), named in messages as element.what.
+    void check_keys(const json& object, const std::string& pointer,
+                    const SchemaElement& element) const;
     void require_object(const json& value, const std::string& pointer,
                         const std::string& example) const;
     void require_array(const json& value, const std::string& pointer,

@@ -5,6 +5,56 @@
 
 #include "scene/message_text.h"
 
+namespace rt::schema {
+const SchemaElement kImage{"\"image\"", "", {"Top level"}, {{"width"}, {"height"}}};
+const SchemaElement kRender{"\"render\"",
+                            "",
+                            {"Render", "Sampling"},
+                            {{"mode"},
+                             {"max_depth"},
+                             {"shadows"},
+                             {"fresnel"},
+                             {"accelerator"},
+                             {"samples_per_pixel"},
+                             {"seed"},
+                             {"filter"},
+                             {"indirect"},
+                             {"occlusion_distance"},
+                             {"integrator"}}};
+const SchemaElement kCamera{"\"camera\"",
+                            "",
+                            {"Camera", "Sampling"},
+                            {{"projection"},
+                             {"eye"},
+                             {"look_at"},
+                             {"up"},
+                             {"fov"},
+                             {"view_height"},
+                             {"aperture"},
+                             {"focus_distance"},
+                             {"shutter"}}};
+const SchemaElement kFog{"\"fog\"", "", {"Fog"}, {{"density", true}, {"albedo"}, {"min"}, {"max"}}};
+const SchemaElement kPointLight{
+    "a point light",
+    "point",
+    {"Lights"},
+    {{"type", true}, {"position", true}, {"intensity"}, {"attenuation"}}};
+const SchemaElement kDirectionalLight{"a directional light",
+                                      "directional",
+                                      {"Lights"},
+                                      {{"type", true}, {"direction", true}, {"intensity"}}};
+const SchemaElement kRectangleLight{
+    "a rectangle light",
+    "rectangle",
+    {"Lights", "Sampling"},
+    {{"type", true}, {"corner", true}, {"edge_u", true}, {"edge_v", true}, {"radiance"}}};
+const SchemaElement kSphereLight{
+    "a sphere light",
+    "sphere",
+    {"Lights", "Sampling"},
+    {{"type", true}, {"center", true}, {"radius", true}, {"radiance"}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 namespace {
@@ -20,7 +70,7 @@ void SceneSections::read_image(const json& root) {
     const json* image = member(root, "image");
     if (!image) return;
     require_object(*image, "/image", "{\"width\": 640, \"height\": 480}");
-    check_keys(*image, "/image", "\"image\"", {"width", "height"});
+    check_keys(*image, "/image", schema::kImage);
     auto side = [&](const char* key, int& out) {
         const json* v = member(*image, key);
         if (!v) return;
@@ -46,9 +96,7 @@ void SceneSections::read_render(const json& root) {
     const json* render = member(root, "render");
     if (!render) return;
     require_object(*render, "/render", "{\"mode\": \"shaded\", \"max_depth\": 5}");
-    check_keys(*render, "/render", "\"render\"",
-               {"mode", "max_depth", "shadows", "fresnel", "accelerator", "samples_per_pixel",
-                "seed", "filter", "indirect", "occlusion_distance", "integrator"});
+    check_keys(*render, "/render", schema::kRender);
     if (const json* v = member(*render, "mode")) {
         static const std::vector<std::string> modes = render_mode_names();
         scene_.mode = RenderMode(choice(*v, "/render/mode", modes));
@@ -123,9 +171,7 @@ void SceneSections::read_camera(const json& root) {
     const json empty = json::object();
     if (!camera) camera = &empty;
     require_object(*camera, "/camera", "{\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]}");
-    check_keys(*camera, "/camera", "\"camera\"",
-               {"projection", "eye", "look_at", "up", "fov", "view_height", "aperture",
-                "focus_distance", "shutter"});
+    check_keys(*camera, "/camera", schema::kCamera);
     if (const json* v = member(*camera, "projection"))
         projection = choice(*v, "/camera/projection", {"perspective", "orthographic"}) == 0
                          ? Projection::Perspective
@@ -216,8 +262,7 @@ void SceneSections::read_light(const json& object, const std::string& pointer) {
         return;
     }
     if (type == 0) {
-        check_keys(object, pointer, "a point light",
-                   {"type", "position", "intensity", "attenuation"});
+        check_keys(object, pointer, schema::kPointLight);
         light.kind = LightKind::Point;
         light.position = vec3(required(object, pointer, "position", "a point light", "[x, y, z]"),
                               at("position"));
@@ -229,7 +274,7 @@ void SceneSections::read_light(const json& object, const std::string& pointer) {
             light.attenuation = Vec3(a);
         }
     } else {
-        check_keys(object, pointer, "a directional light", {"type", "direction", "intensity"});
+        check_keys(object, pointer, schema::kDirectionalLight);
         light.kind = LightKind::Directional;
         light.direction = unit_direction(
             required(object, pointer, "direction", "a directional light", "[0, -1, 0]"),
@@ -246,8 +291,7 @@ void SceneSections::read_area_light(const json& object, const std::string& point
     AreaLight light;
     light.kind = kind;
     if (kind == AreaLightKind::Rectangle) {
-        check_keys(object, pointer, "a rectangle light",
-                   {"type", "corner", "edge_u", "edge_v", "radiance"});
+        check_keys(object, pointer, schema::kRectangleLight);
         const char* what = "a rectangle light";
         light.corner = vec3(required(object, pointer, "corner", what, "[x, y, z]"), at("corner"));
         light.edge_u = vec3(required(object, pointer, "edge_u", what, "[1, 0, 0]"), at("edge_u"));
@@ -261,7 +305,7 @@ void SceneSections::read_area_light(const json& object, const std::string& point
             fail_value(at("edge_v"), "\"edge_u\" and \"edge_v\" are not perpendicular",
                        "a rectangle light needs perpendicular edges");
     } else {
-        check_keys(object, pointer, "a sphere light", {"type", "center", "radius", "radiance"});
+        check_keys(object, pointer, schema::kSphereLight);
         light.center =
             vec3(required(object, pointer, "center", "a sphere light", "[x, y, z]"), at("center"));
         light.radius = real_in(
@@ -278,7 +322,7 @@ void SceneSections::read_fog(const json& root) {
     const json* fog = member(root, "fog");
     if (!fog) return;
     require_object(*fog, "/fog", "{\"density\": 0.3, \"albedo\": [0.9, 0.9, 0.9]}");
-    check_keys(*fog, "/fog", "\"fog\"", {"density", "albedo", "min", "max"});
+    check_keys(*fog, "/fog", schema::kFog);
     Medium medium;
     medium.density = real_in(
         required(*fog, "/fog", "density", "the fog", "0.3"), "/fog/density",

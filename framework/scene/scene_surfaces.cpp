@@ -6,6 +6,60 @@
 
 #include "scene/message_text.h"
 
+namespace rt::schema {
+// Each surface type's keys. rt fmt writes a surface's keys in its type's order, and the types
+// agree on the order of the keys they share ("type" first, "transform" and "material" last).
+const SchemaElement kSphere{"a sphere",
+                            "sphere",
+                            {"Surfaces", "Sampling"},
+                            {{"type", true},
+                             {"center", true},
+                             {"radius", true},
+                             {"velocity"},
+                             {"transform"},
+                             {"material"}}};
+const SchemaElement kPlane{
+    "a plane",
+    "plane",
+    {"Surfaces"},
+    {{"type", true}, {"point", true}, {"normal", true}, {"transform"}, {"material"}}};
+const SchemaElement kTriangle{"a triangle",
+                              "triangle",
+                              {"Surfaces"},
+                              {{"type", true}, {"vertices", true}, {"transform"}, {"material"}}};
+const SchemaElement kBox{
+    "a box",
+    "box",
+    {"Surfaces"},
+    {{"type", true}, {"min", true}, {"max", true}, {"transform"}, {"material"}}};
+const SchemaElement kMesh{"a mesh",
+                          "mesh",
+                          {"Surfaces"},
+                          {{"type", true},
+                           {"file"},
+                           {"procedural"},
+                           {"heightfield"},
+                           {"triangles"},
+                           {"seed"},
+                           {"scale"},
+                           {"translate"},
+                           {"transform"},
+                           {"material"}}};
+const SchemaElement kCheckerboard{"a checkerboard",
+                                  "checkerboard",
+                                  {"Surfaces"},
+                                  {{"type", true},
+                                   {"min", true},
+                                   {"max", true},
+                                   {"tiles", true},
+                                   {"transform"},
+                                   {"materials", true}}};
+const SchemaElement kInstance{"an instance",
+                              "instance",
+                              {"Surfaces", "Transforms and instances"},
+                              {{"type", true}, {"object", true}, {"transform"}, {"material"}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 namespace {
@@ -25,37 +79,29 @@ void SceneSections::read_surfaces(const json& root) {
 }
 
 void SceneSections::read_surface(const json& s, const std::string& pointer) {
-    // Each "type", the keys it takes and its reader, in the order messages list them.
+    // Each "type", its keys (scene_schema.h) and its reader, in the order messages list them.
     struct Kind {
-        const char* name;
-        std::vector<std::string> keys;
+        const SchemaElement& element;
         void (SceneSections::*read)(const json& s, const std::string& pointer);
     };
     static const Kind kinds[] = {
-        {"sphere",
-         {"type", "center", "radius", "velocity", "transform", "material"},
-         &SceneSections::read_sphere},
-        {"plane", {"type", "point", "normal", "transform", "material"}, &SceneSections::read_plane},
-        {"triangle", {"type", "vertices", "transform", "material"}, &SceneSections::read_triangle},
-        {"box", {"type", "min", "max", "transform", "material"}, &SceneSections::read_box},
-        {"mesh",
-         {"type", "file", "procedural", "heightfield", "triangles", "seed", "translate", "scale",
-          "transform", "material"},
-         &SceneSections::read_mesh},
-        {"checkerboard",
-         {"type", "min", "max", "tiles", "materials", "transform"},
-         &SceneSections::read_checkerboard},
-        {"instance", {"type", "object", "transform", "material"}, &SceneSections::read_instance},
+        {schema::kSphere, &SceneSections::read_sphere},
+        {schema::kPlane, &SceneSections::read_plane},
+        {schema::kTriangle, &SceneSections::read_triangle},
+        {schema::kBox, &SceneSections::read_box},
+        {schema::kMesh, &SceneSections::read_mesh},
+        {schema::kCheckerboard, &SceneSections::read_checkerboard},
+        {schema::kInstance, &SceneSections::read_instance},
     };
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names;
-        for (const Kind& kind : kinds) names.push_back(kind.name);
+        for (const Kind& kind : kinds) names.push_back(kind.element.type);
         return names;
     }();
     require_object(s, pointer, "{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}");
     const json& type_value = required(s, pointer, "type", "a surface", list_of(types));
     const Kind& kind = kinds[choice(type_value, JsonPositions::child(pointer, "type"), types)];
-    check_keys(s, pointer, std::string(kind.name[0] == 'i' ? "an " : "a ") + kind.name, kind.keys);
+    check_keys(s, pointer, kind.element);
     const GeometryMark mark = mark_geometry();
     (this->*kind.read)(s, pointer);
     const json* transform = member(s, "transform");

@@ -8,6 +8,27 @@
 #include "scene/message_text.h"
 #include "scene/scene_sections.h"
 
+namespace rt::schema {
+const SchemaElement kTexture{"a texture",
+                             "",
+                             {"Textures"},
+                             {{"name", true},
+                              {"image"},
+                              {"checker"},
+                              {"checker_3d"},
+                              {"marble"},
+                              {"filter"},
+                              {"wrap"},
+                              {"color_space"},
+                              {"colour_space"}}};
+const SchemaElement kTextureSlot{
+    "a texture slot", "", {"Materials"}, {{"texture", true}, {"scale"}, {"offset"}}};
+const SchemaElement kCheckerTexture{"a checker texture", "", {"Textures"}, {{"a"}, {"b"}}};
+const SchemaElement kChecker3dTexture{
+    "a checker_3d texture", "", {"Textures"}, {{"a"}, {"b"}, {"scale"}}};
+const SchemaElement kMarbleTexture{"a marble texture", "", {"Textures"}, {{"a"}, {"b"}, {"scale"}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 namespace {
 
@@ -40,9 +61,7 @@ const char* SceneSections::color_space_key(const json& object, const std::string
 
 void SceneSections::read_texture(const json& object, const std::string& pointer) {
     require_object(object, pointer, kTextureExample);
-    check_keys(object, pointer, "a texture",
-               {"name", "image", "filter", "wrap", "color_space", "colour_space", "checker",
-                "checker_3d", "marble"});
+    check_keys(object, pointer, schema::kTexture);
     auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
     const std::string name_pointer = at("name");
     const std::string name =
@@ -86,10 +105,10 @@ void SceneSections::read_texture(const json& object, const std::string& pointer)
         if (given[0] == "checker_3d") t.kind = TextureKind::Checker3D;
         if (given[0] == "marble") t.kind = TextureKind::Marble;
         require_object(p, pp, R"({"a": [1, 1, 1], "b": [0, 0, 0]})");
-        const bool sized = t.kind != TextureKind::Checker2D;
-        check_keys(p, pp, std::string("a ") + kind + " texture",
-                   sized ? std::vector<std::string>{"a", "b", "scale"}
-                         : std::vector<std::string>{"a", "b"});
+        check_keys(p, pp,
+                   t.kind == TextureKind::Checker2D   ? schema::kCheckerTexture
+                   : t.kind == TextureKind::Checker3D ? schema::kChecker3dTexture
+                                                      : schema::kMarbleTexture);
         if (const json* a = member(p, "a")) t.a = color(*a, JsonPositions::child(pp, "a"));
         if (const json* b = member(p, "b")) t.b = color(*b, JsonPositions::child(pp, "b"));
         if (const json* s = member(p, "scale"))
@@ -174,7 +193,7 @@ TextureSlot SceneSections::texture_slot(const json& value, const std::string& po
     const std::string example = R"("bricks" or {"texture": "bricks", "scale": [4, 4]})";
     std::string name_pointer = pointer;
     if (value.is_object()) {
-        check_keys(value, pointer, "a texture slot", {"texture", "scale", "offset"});
+        check_keys(value, pointer, schema::kTextureSlot);
         name_pointer = JsonPositions::child(pointer, "texture");
         name = &required(value, pointer, "texture", "the texture's name", "\"bricks\"");
         auto pair = [&](const char* key, float out[2]) {

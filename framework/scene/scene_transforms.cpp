@@ -11,6 +11,19 @@
 #include "scene/scene_sections.h"
 #include "scene/transform.h"
 
+namespace rt::schema {
+const SchemaElement kObject{
+    "an object", "", {"Transforms and instances"}, {{"name", true}, {"surfaces", true}}};
+// A step has exactly one of these keys (read_transform_step says so when it has more).
+const SchemaElement kTransformStep{
+    "a transform step",
+    "",
+    {"Transforms and instances"},
+    {{"translate"}, {"scale"}, {"rotate"}, {"euler_degrees"}, {"matrix"}}};
+const SchemaElement kRotation{
+    "a rotation", "", {"Transforms and instances"}, {{"axis", true}, {"degrees", true}}};
+}  // namespace rt::schema
+
 namespace rt::scene_internal {
 
 namespace {
@@ -70,8 +83,8 @@ glm::dmat4 SceneSections::read_matrix(const json& rows, const std::string& point
 
 glm::dmat4 SceneSections::read_transform_step(const json& step, const std::string& pointer) const {
     require_object(step, pointer, R"({"rotate": {"axis": [0, 1, 0], "degrees": 30}})");
-    const std::vector<std::string> keys{"translate", "scale", "rotate", "euler_degrees", "matrix"};
-    check_keys(step, pointer, "a transform step", keys);
+    const std::vector<std::string> keys = schema::kTransformStep.key_names();
+    check_keys(step, pointer, schema::kTransformStep);
     if (step.size() != 1)
         fail_value(pointer,
                    "a transform step has exactly one of " + list_of(keys) + ", got " +
@@ -95,7 +108,7 @@ glm::dmat4 SceneSections::read_transform_step(const json& step, const std::strin
     }
     if (key == "rotate") {
         require_object(v, at, R"({"axis": [0, 1, 0], "degrees": 30})");
-        check_keys(v, at, "a rotation", {"axis", "degrees"});
+        check_keys(v, at, schema::kRotation);
         auto inner = [&](const char* k) { return JsonPositions::child(at, k); };
         const glm::dvec3 axis =
             dvec3(required(v, at, "axis", "a rotation", "[0, 1, 0]"), inner("axis"));
@@ -247,7 +260,7 @@ void SceneSections::read_objects(const json& root) {
         auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
         const json& o = (*list)[k];
         require_object(o, pointer, R"({"name": "pawn", "surfaces": [...]})");
-        check_keys(o, pointer, "an object", {"name", "surfaces"});
+        check_keys(o, pointer, schema::kObject);
         const std::string name =
             string(required(o, pointer, "name", "an object", "\"pawn\""), at("name"), "\"pawn\"");
         if (name.empty()) fail_value(at("name"), "an object's \"name\" is empty", "name it");
