@@ -34,6 +34,8 @@ uniform int sample_count;
 // The spheres as they are at the current camera sample's time (the storage buffer holds them at
 // time 0 as spheres_at_rest): what render/sampled.cpp's per-thread scene copy is on the CPU.
 Sphere spheres[MAX_SPHERES];
+Sphere spheres_at(int i) { return spheres[i]; }
+Sphere spheres_at(uint i) { return spheres[i]; }
 #endif
 
 // RT_BINDING_OUTPUT: the stub flags (one bit per stub, the host reports each once), then the pixels.

@@ -59,10 +59,10 @@ float gamma_bound(int n) {
 }
 
 void triangle_vertices(int triangle, out vec3 a, out vec3 b, out vec3 c) {
-    const uvec4 v = triangles[triangle].vertices_material;
-    a = positions[v.x].xyz;
-    b = positions[v.y].xyz;
-    c = positions[v.z].xyz;
+    const uvec4 v = triangles_at(triangle).vertices_material;
+    a = positions_at(v.x).xyz;
+    b = positions_at(v.y).xyz;
+    c = positions_at(v.z).xyz;
 }
 
 // geometry/offset.cpp's surface_point, line for line.
@@ -73,17 +73,17 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
     switch (primitive_kind(hit.primitive)) {  // only the scene's kinds: each case costs every lane
 #ifdef HAS_SPHERES
         case kSphere: {
-            const vec3 c = spheres[i].center_radius.xyz;
+            const vec3 c = spheres_at(i).center_radius.xyz;
             const vec3 from_center = hit.point - c;
             const float len = length(from_center);
-            if (len > 0.0) sp.point = c + from_center * (spheres[i].center_radius.w / len);
+            if (len > 0.0) sp.point = c + from_center * (spheres_at(i).center_radius.w / len);
             sp.error = gamma_bound(8) * (abs(c) + abs(sp.point - c));
             break;
         }
 #endif
 #ifdef HAS_PLANES
         case kPlane: {
-            const vec3 p0 = planes[i].point_material.xyz, n = planes[i].normal.xyz;
+            const vec3 p0 = planes_at(i).point_material.xyz, n = planes_at(i).normal.xyz;
             sp.point = hit.point - n * dot(n, hit.point - p0);
             const float distance_error = gamma_bound(5) * dot(abs(n), abs(hit.point) + abs(p0));
             sp.error = abs(n) * distance_error + gamma_bound(2) * abs(sp.point);
@@ -102,7 +102,7 @@ SurfacePoint surface_point(Ray ray, Hit hit) {
 #endif
 #ifdef HAS_BOXES
         case kBox: {
-            const vec3 lo = boxes[i].min_material.xyz, hi = boxes[i].max.xyz;
+            const vec3 lo = boxes_at(i).min_material.xyz, hi = boxes_at(i).max.xyz;
             const vec3 outward = hit.front_face ? hit.normal : -hit.normal;
             // The face's axis (the first of the largest |outward|), by selects: a vector indexed
             // by a run-time axis costs llvmpipe a trip through memory for each of its 8 lanes.
@@ -145,7 +145,7 @@ vec3 offset_ray_origin(vec3 point, vec3 error, vec3 normal, vec3 direction) {
 
 // The material of index `m` (a scene built in code may lack one: the default material then).
 Material material_at(int m) {
-    if (m >= 0 && m < material_count) return materials[m];
+    if (m >= 0 && m < material_count) return materials_at(m);
     return Material(vec4(0), vec4(0.8), vec4(0, 0, 0, 32), vec4(0), vec4(0), vec4(0, 0, 0, 1.5),
                     ivec4(-1), vec4[4](vec4(1, 1, 0, 0), vec4(1, 1, 0, 0), vec4(1, 1, 0, 0),
                                        vec4(1, 1, 0, 0)));
@@ -159,8 +159,8 @@ vec3 shading_normal(int triangle, vec2 uv) {
     const float geometric_length = length(geometric);
     geometric = geometric_length > 0.0 && !isinf(geometric_length) ? geometric / geometric_length
                                                                     : vec3(0);
-    const uvec4 v = triangles[triangle].vertices_material;
-    const vec3 n0 = normals[v.x].xyz, n1 = normals[v.y].xyz, n2 = normals[v.z].xyz;
+    const uvec4 v = triangles_at(triangle).vertices_material;
+    const vec3 n0 = normals_at(v.x).xyz, n1 = normals_at(v.y).xyz, n2 = normals_at(v.z).xyz;
     if (n0 == vec3(0) || n1 == vec3(0) || n2 == vec3(0)) return geometric;
     vec3 n = (1.0 - uv.x - uv.y) * n0 + uv.x * n1 + uv.y * n2;
     const float len = length(n);

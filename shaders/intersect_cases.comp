@@ -4,6 +4,7 @@
 layout(local_size_x = 64) in;
 
 #include "scene_layout.glsl"
+#include "scene_buffers.glsl"
 #include "compute_io.glsl"
 #include "framework.glsl"
 #include "intersect.glsl"
@@ -17,9 +18,9 @@ uniform int case_count;
 void main() {
     const int i = int(gl_GlobalInvocationID.x);
     if (i >= case_count) return;
-    const vec4 origin_kind = texels[6 * i], direction = texels[6 * i + 1];
-    const vec4 t_range = texels[6 * i + 2];
-    const vec4 a = texels[6 * i + 3], b = texels[6 * i + 4], c = texels[6 * i + 5];
+    const vec4 origin_kind = texels_at(6 * i), direction = texels_at(6 * i + 1);
+    const vec4 t_range = texels_at(6 * i + 2);
+    const vec4 a = texels_at(6 * i + 3), b = texels_at(6 * i + 4), c = texels_at(6 * i + 5);
     const Ray ray = Ray(origin_kind.xyz, direction.xyz);
     const Interval range = Interval(t_range.x, t_range.y);
     Hit hit = no_hit();

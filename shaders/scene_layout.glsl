@@ -1,6 +1,6 @@
-// The packed scene's structs and storage buffers (std430). The C++ side is
-// framework/gpu/gpu_scene.h; Framework.GpuLayout.* checks the two against each other with the
-// driver's own offsets, so change both together.
+// The packed scene's structs (std430). The C++ side is framework/gpu/gpu_scene.h;
+// Framework.GpuLayout.* checks the two against each other with the driver's own offsets, so change
+// both together. Each array of them is read through an accessor, name_at(i) (scene_buffers.glsl).
 // Integers stored in a float's bits (materials, light kinds): floatBitsToInt(x).
 
 struct Sphere { vec4 center_radius; ivec4 material; };
@@ -46,29 +46,6 @@ struct Camera {
     float view_height;
 };
 
-// The compute shader reads these through texel_arrays.glsl's buffer textures instead
-// (RT_TEXEL_ARRAYS); the layout test and the layouts of gpu_scene.h are these declarations.
-#ifdef HAS_MOTION_BLUR
-layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres_at_rest[]; };
-#elif !defined(RT_TEXEL_ARRAYS)
-layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres[]; };
-#endif
-#ifndef RT_TEXEL_ARRAYS
-layout(std430, binding = RT_BINDING_PLANES) readonly buffer Planes { Plane planes[]; };
-layout(std430, binding = RT_BINDING_BOXES) readonly buffer Boxes { Box boxes[]; };
-layout(std430, binding = RT_BINDING_TRIANGLES) readonly buffer Triangles { Triangle triangles[]; };
-layout(std430, binding = RT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = RT_BINDING_NORMALS) readonly buffer Normals { vec4 normals[]; };
-layout(std430, binding = RT_BINDING_UVS) readonly buffer Uvs { vec2 uvs[]; };
-layout(std430, binding = RT_BINDING_MATERIALS) readonly buffer Materials { Material materials[]; };
-layout(std430, binding = RT_BINDING_LIGHTS) readonly buffer Lights { Light lights[]; };
-layout(std430, binding = RT_BINDING_BVH_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
-layout(std430, binding = RT_BINDING_BVH_PRIMITIVES) readonly buffer BvhPrimitives { uint bvh_primitives[]; };
-layout(std430, binding = RT_BINDING_TEXTURES) readonly buffer Textures { Texture textures[]; };
-layout(std430, binding = RT_BINDING_TEXTURE_IMAGES) readonly buffer TextureImages { TextureImage texture_images[]; };
-layout(std430, binding = RT_BINDING_TEXELS) readonly buffer Texels { vec4 texels[]; };
-layout(std430, binding = RT_BINDING_ENVIRONMENT) readonly buffer Environments { Environment environment[]; };
-#endif
 // Stage 10's data is a uniform block (std140, the same offsets as std430 here: vec4s only): the
 // compute stage has 16 storage blocks and the uber shader uses them all. Sized by the host's
 // defines; the defaults serve the layout test and shaders without sampling.

@@ -29,6 +29,8 @@ uniform int sample_count;
 #endif
 #ifdef HAS_MOTION_BLUR
 Sphere spheres[MAX_SPHERES];  // the spheres at the camera sample's time (trace.glsl's move_spheres)
+Sphere spheres_at(int i) { return spheres[i]; }
+Sphere spheres_at(uint i) { return spheres[i]; }
 #endif
 
 #include "trace.glsl"

@@ -1,11 +1,13 @@
-// The compute shader reads the scene's arrays by texel fetches from buffer textures over the very
-// storage buffers (one texture unit each, at the storage buffer's binding: gpu_render.cpp's
-// texel_views), because llvmpipe loads a storage buffer's word one invocation at a time and a
-// texel for all eight lanes at once: 1.7x the BVH scene's rate. The host rewrites `name[i]` into
-// `name_at(i)` (as rt export-web does), so the stage 09 code still reads spheres[i],
-// bvh_nodes[i] and the rest, and gets what the storage buffer's element holds. Every texel is
-// four words (RGBA32UI) but the BVH's primitive indices' (R32UI) and uvs' (RG32UI).
-#ifndef HAS_MOTION_BLUR  // then spheres[] is the invocation's moved copy (compute_io.glsl)
+// trace.comp's accessors (scene_buffers.glsl says what they are): the scene's arrays read by
+// texel fetches from buffer textures over the very storage buffers (one texture unit each, at the
+// storage buffer's binding: gpu_render.cpp's texel_views). This form is llvmpipe's: it loads a
+// storage buffer's word one invocation at a time but a texel for all eight lanes at once, which
+// measured 1.7x the BVH scene's rate (docs/performance.md, the GPU stage on llvmpipe). Every
+// texel is four words (RGBA32UI) but the BVH's primitive indices' (R32UI) and uvs' (RG32UI).
+#ifdef HAS_MOTION_BLUR
+// The spheres at time 0; spheres_at reads the invocation's moved copy (compute_io.glsl).
+layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres_at_rest[]; };
+#else
 layout(binding = RT_BINDING_SPHERES) uniform highp usamplerBuffer rt_texels_spheres;
 #endif
 layout(binding = RT_BINDING_PLANES) uniform highp usamplerBuffer rt_texels_planes;

@@ -15,13 +15,13 @@ struct TextureView {
 };
 
 TextureView texture_view(int image, bool srgb) {
-    const ivec4 t = texture_images[image].width_height_first;
+    const ivec4 t = texture_images_at(image).width_height_first;
     return TextureView(t.z, t.x, t.y, srgb);
 }
 
 // The stored (not decoded) value of texel (i, j): column i from the left, row j from the top.
 vec3 stored_texel(TextureView image, int i, int j) {
-    return texels[image.first + j * image.width + i].rgb;
+    return texels_at(image.first + j * image.width + i).rgb;
 }
 
 #ifdef HAS_MAPS

@@ -11,10 +11,10 @@ void triangle_vertex_uvs(int triangle, out vec2 a, out vec2 b, out vec2 c) {
     c = vec2(0, 1);
 #ifdef HAS_VERTEX_UVS
     if (!scene_has(kFeatureVertexUvs)) return;
-    const uvec4 v = triangles[triangle].vertices_material;
-    a = uvs[v.x];
-    b = uvs[v.y];
-    c = uvs[v.z];
+    const uvec4 v = triangles_at(triangle).vertices_material;
+    a = uvs_at(v.x);
+    b = uvs_at(v.y);
+    c = uvs_at(v.z);
 #endif
 }
 
@@ -22,11 +22,11 @@ vec2 surface_texcoord(Hit hit, SurfacePoint at) {
     const int i = primitive_index(hit.primitive);
     switch (primitive_kind(hit.primitive)) {
         case kSphere:
-            return sphere_texcoord(normalize(at.point - spheres[i].center_radius.xyz));
+            return sphere_texcoord(normalize(at.point - spheres_at(i).center_radius.xyz));
         case kPlane:
-            return plane_texcoord(planes[i].point_material.xyz, planes[i].normal.xyz, at.point);
+            return plane_texcoord(planes_at(i).point_material.xyz, planes_at(i).normal.xyz, at.point);
         case kBox:
-            return box_texcoord(boxes[i].min_material.xyz, boxes[i].max.xyz, at.point,
+            return box_texcoord(boxes_at(i).min_material.xyz, boxes_at(i).max.xyz, at.point,
                                 at.front_face ? at.normal : -at.normal);
         case kTriangle: {
             vec2 a, b, c;
@@ -50,7 +50,7 @@ vec3 surface_tangent(Hit hit, SurfacePoint at) {
             return t_length > 1e-6 ? t / t_length : vec3(1, 0, 0);  // poles: any
         }
         case kPlane:
-            return plane_frame(planes[i].normal.xyz).t;
+            return plane_frame(planes_at(i).normal.xyz).t;
         case kBox:
             return plane_frame(outward).t;
         case kTriangle: {
@@ -74,7 +74,7 @@ vec3 surface_tangent(Hit hit, SurfacePoint at) {
 
 // A slot's colour at uv (slot transform: xy scale, zw offset); 1 for a texture that is missing.
 vec3 evaluate_slot(int slot_texture, vec4 transform, vec2 uv, vec3 point) {
-    const Texture t = textures[slot_texture];
+    const Texture t = textures_at(slot_texture);
     const vec2 mapped = vec2(uv.x * transform.x + transform.z, uv.y * transform.y + transform.w);
     switch (t.kind_image_filter_wrap.x) {
 #ifdef HAS_IMAGE_TEXTURES

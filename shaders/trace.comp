@@ -18,7 +18,6 @@
 // storage buffers and uniforms of framework/render/gpu_render.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#define RT_TEXEL_ARRAYS
 #include "scene_layout.glsl"
 #include "texel_arrays.glsl"
 #include "compute_io.glsl"

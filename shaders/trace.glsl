@@ -23,15 +23,15 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
     switch (primitive_kind(id)) {
 #ifdef HAS_SPHERES
         case kSphere:
-            found = intersect_sphere(ray, spheres[i].center_radius, t_range, hit);
-            material = spheres[i].material.x;
+            found = intersect_sphere(ray, spheres_at(i).center_radius, t_range, hit);
+            material = spheres_at(i).material.x;
             break;
 #endif
 #ifdef HAS_PLANES
         case kPlane:
-            found = intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz,
+            found = intersect_plane(ray, planes_at(i).point_material.xyz, planes_at(i).normal.xyz,
                                     t_range, hit);
-            material = floatBitsToInt(planes[i].point_material.w);
+            material = floatBitsToInt(planes_at(i).point_material.w);
             break;
 #endif
 #ifdef HAS_TRIANGLES
@@ -39,14 +39,14 @@ bool intersect_primitive(int id, Ray ray, Interval t_range, inout Hit hit) {
             vec3 a, b, c;
             triangle_vertices(i, a, b, c);
             found = intersect_triangle(ray, a, b, c, t_range, hit);
-            material = int(triangles[i].vertices_material.w);
+            material = int(triangles_at(i).vertices_material.w);
             break;
         }
 #endif
 #ifdef HAS_BOXES
         case kBox:
-            found = intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit);
-            material = floatBitsToInt(boxes[i].min_material.w);
+            found = intersect_box(ray, boxes_at(i).min_material.xyz, boxes_at(i).max.xyz, t_range, hit);
+            material = floatBitsToInt(boxes_at(i).min_material.w);
             break;
 #endif
     }

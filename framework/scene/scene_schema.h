@@ -2,7 +2,7 @@
 // that element (the comment on each declaration below says where). A table lists the keys the
 // element takes, in the order `rt fmt` writes them, and which of them are required. The readers
 // refuse any other key through it (SceneReader::check_keys), `rt fmt` orders keys by it
-// (scene_format.cpp), and Scenes.SchemaMatchesDocs checks docs/scene-format.md against it, so a
+// (scene_format.cpp), and Framework.SceneSchema.* check docs/scene-format.md against it, so a
 // key is added in one table and the test names the documentation it still lacks.
 #pragma once
 

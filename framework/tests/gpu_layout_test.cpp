@@ -129,6 +129,7 @@ std::string read_file(const std::string& path) {
 std::string build_program(GLuint& program) {
     std::string source = "#version 430\n" + shader_prelude() + "layout(local_size_x = 1) in;\n" +
                          read_file(source_dir() / "shaders/scene_layout.glsl") +
+                         read_file(source_dir() / "shaders/scene_buffers.glsl") +
                          "layout(std430, binding = RT_BINDING_OUTPUT) writeonly buffer Out { vec4 "
                          "result; };\n"
                          "void main() {\n    vec4 acc = vec4(0);\n";
@@ -162,7 +163,7 @@ TEST(GpuLayout, GlslOffsetsAndStridesMatchTheCppStructs) {
     ASSERT_TRUE(gl.ok()) << gl.error();
     GLuint program = 0;
     const std::string problem = build_program(program);
-    ASSERT_EQ(problem, "") << "shaders/scene_layout.glsl does not build";
+    ASSERT_EQ(problem, "") << "shaders/scene_layout.glsl and scene_buffers.glsl do not build";
     for (const Member& m : members()) {
         const GLuint index = glGetProgramResourceIndex(program, GL_BUFFER_VARIABLE, m.name);
         ASSERT_NE(index, GL_INVALID_INDEX) << m.name << " is not an active buffer variable";

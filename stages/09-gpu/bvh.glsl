@@ -1,5 +1,5 @@
 // Stage 09, BVH traversal: stage 06's queries (stages/06-bvh/bvh.cpp) in GLSL, over the nodes
-// the CPU built (bvh_nodes[], bvh_primitives[]: framework/accel/bvh.h). GLSL has no recursion
+// the CPU built (bvh_nodes_at(i), bvh_primitives_at(k): framework/accel/bvh.h). GLSL has no recursion
 // and no pointers: a node is its index, and the nodes still to visit wait on a fixed-size stack
 // (the builder never makes a tree deeper than kBvhMaxDepth, which the framework's prelude
 // defines as accel/bvh.h does). Planes stay outside the tree.
@@ -61,7 +61,7 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     int top = 0;
     float t_root;
     bvh_nodes_visited += 1u;
-    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_root)) {
+    if (intersect_node(bvh_nodes_at(0), ray, inv_direction, t_range, t_root)) {
         stack_node[0] = 0u;
         stack_t[0] = t_root;
         top = 1;
@@ -69,10 +69,10 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     while (top > 0) {
         --top;
         if (stack_t[top] > t_range.max) continue;  // a nearer hit was found after the push
-        const BvhNode node = bvh_nodes[stack_node[top]];
+        const BvhNode node = bvh_nodes_at(stack_node[top]);
         if (node.count > 0u) {
             for (uint k = node.first; k < node.first + node.count; ++k) {
-                if (intersect_primitive(int(bvh_primitives[k]), ray, t_range, hit)) {
+                if (intersect_primitive(int(bvh_primitives_at(k)), ray, t_range, hit)) {
                     found = true;
                     t_range.max = hit.t;
                 }
@@ -85,9 +85,9 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
         const uint right = node.first + 1u;
         float t_left;
         float t_right;
-        const bool hit_left = intersect_node(bvh_nodes[left], ray, inv_direction, t_range, t_left);
+        const bool hit_left = intersect_node(bvh_nodes_at(left), ray, inv_direction, t_range, t_left);
         const bool hit_right =
-            intersect_node(bvh_nodes[right], ray, inv_direction, t_range, t_right);
+            intersect_node(bvh_nodes_at(right), ray, inv_direction, t_range, t_right);
         bvh_nodes_visited += 2u;
         if (hit_left && hit_right) {
             const bool right_nearer = t_right < t_left;
@@ -120,26 +120,26 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     uint stack[kBvhMaxDepth + 1];  // nodes whose box the ray enters, still to open
     int top = 0;
     float t_entry;
-    if (intersect_node(bvh_nodes[0], ray, inv_direction, t_range, t_entry)) {
+    if (intersect_node(bvh_nodes_at(0), ray, inv_direction, t_range, t_entry)) {
         stack[0] = 0u;
         top = 1;
     }
     while (top > 0 && !found) {
         --top;
-        const BvhNode node = bvh_nodes[stack[top]];
+        const BvhNode node = bvh_nodes_at(stack[top]);
         if (node.count > 0u) {
             for (uint k = node.first; k < node.first + node.count && !found; ++k)
-                found = intersect_primitive(int(bvh_primitives[k]), ray, t_range, scratch);
+                found = intersect_primitive(int(bvh_primitives_at(k)), ray, t_range, scratch);
             continue;
         }
         // Any order will do; the right child is opened first.
         const uint left = node.first;
         const uint right = node.first + 1u;
-        if (intersect_node(bvh_nodes[left], ray, inv_direction, t_range, t_entry)) {
+        if (intersect_node(bvh_nodes_at(left), ray, inv_direction, t_range, t_entry)) {
             stack[top] = left;
             top += 1;
         }
-        if (intersect_node(bvh_nodes[right], ray, inv_direction, t_range, t_entry)) {
+        if (intersect_node(bvh_nodes_at(right), ray, inv_direction, t_range, t_entry)) {
             stack[top] = right;
             top += 1;
         }

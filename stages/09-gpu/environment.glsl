@@ -1,6 +1,6 @@
 // Stage 09, environment maps: stage 08 (stages/08-environment/environment.cpp) in GLSL.
 // Handout: stages/09-gpu/README.md#environment-maps. Conventions:
-// docs/conventions.md#environment-maps. The environment is environment[0] (scene_layout.glsl);
+// docs/conventions.md#environment-maps. The environment is environment_at(0) (scene_layout.glsl);
 // the image lookup is your sample_bilinear (textures.glsl). Compiled only for scenes with an
 // environment (HAS_ENVIRONMENT); the framework's background() calls environment_radiance.
 
@@ -58,7 +58,7 @@ CubeFaceUv cube_face_uv(vec3 direction) {
 // Rotate, map to an image position, filter, scale. background_color when there is none.
 vec3 environment_radiance(vec3 direction) {
     // BEGIN SOLUTION
-    const Environment env = environment[0];
+    const Environment env = environment_at(0);
     if (env.kind_image.x == kEnvironmentNone) return background_color;
     // The environment turned by +rotate_y: look up the direction turned back by -rotate_y.
     const float angle = env.intensity_rotate_y.y * kPi / 180.0;

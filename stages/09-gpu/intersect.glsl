@@ -137,21 +137,21 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     bool found = false;
 #ifdef HAS_SPHERES
     for (int i = 0; i < primitive_counts.x; ++i)
-        if (intersect_sphere(ray, spheres[i].center_radius, t_range, hit)) {
+        if (intersect_sphere(ray, spheres_at(i).center_radius, t_range, hit)) {
             found = true;
             t_range.max = hit.t;
             hit.primitive = primitive_id(kSphere, i);
-            hit.material = spheres[i].material.x;
+            hit.material = spheres_at(i).material.x;
         }
 #endif
 #ifdef HAS_PLANES
     for (int i = 0; i < primitive_counts.y; ++i)
-        if (intersect_plane(ray, planes[i].point_material.xyz, planes[i].normal.xyz, t_range,
+        if (intersect_plane(ray, planes_at(i).point_material.xyz, planes_at(i).normal.xyz, t_range,
                             hit)) {
             found = true;
             t_range.max = hit.t;
             hit.primitive = primitive_id(kPlane, i);
-            hit.material = floatBitsToInt(planes[i].point_material.w);
+            hit.material = floatBitsToInt(planes_at(i).point_material.w);
         }
 #endif
 #ifdef HAS_TRIANGLES
@@ -162,17 +162,17 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
             found = true;
             t_range.max = hit.t;
             hit.primitive = primitive_id(kTriangle, i);
-            hit.material = int(triangles[i].vertices_material.w);
+            hit.material = int(triangles_at(i).vertices_material.w);
         }
     }
 #endif
 #ifdef HAS_BOXES
     for (int i = 0; i < primitive_counts.w; ++i)
-        if (intersect_box(ray, boxes[i].min_material.xyz, boxes[i].max.xyz, t_range, hit)) {
+        if (intersect_box(ray, boxes_at(i).min_material.xyz, boxes_at(i).max.xyz, t_range, hit)) {
             found = true;
             t_range.max = hit.t;
             hit.primitive = primitive_id(kBox, i);
-            hit.material = floatBitsToInt(boxes[i].min_material.w);
+            hit.material = floatBitsToInt(boxes_at(i).min_material.w);
         }
 #endif
     return found;

@@ -1,7 +1,7 @@
 // Stage 09, direct light and shadows: stages 03 and 04 (stages/03-blinn-phong/blinn_phong.cpp,
 // stages/04-shadows/shadows.cpp) in GLSL. Colours are linear RGB, nothing clamps.
 // Handout: stages/09-gpu/README.md#direct-light-and-shadows.
-// Lights: lights[i] (position_kind.w: floatBitsToInt, kLightPoint or kLightDirectional), light_count.
+// Lights: lights_at(i) (position_kind.w: floatBitsToInt, kLightPoint or kLightDirectional), light_count.
 
 // What one light delivers at a point before shadowing (framework/stage_api/stage03.h).
 struct LightSample {
@@ -12,7 +12,7 @@ struct LightSample {
 
 LightSample illuminate(int light, vec3 point) {
     // BEGIN SOLUTION
-    const Light l = lights[light];
+    const Light l = lights_at(light);
     if (floatBitsToInt(l.position_kind.w) == kLightDirectional)
         return LightSample(-l.direction.xyz, kInfinity, l.intensity.rgb);
     const vec3 to_light = l.position_kind.xyz - point;

@@ -286,10 +286,8 @@ AssembledShader assemble_trace(const std::string& defines, const fs::path& stude
     const fs::path path = path_dir.empty() ? gpu_path_dir() : path_dir;
     // sampling.glsl is looked up after stage 09's folder: only a stage 10 or 11 scene includes
     // it; stage 11's bsdf.glsl and path.glsl after that, only for a path-traced scene.
-    AssembledShader shader =
-        assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path}, defines);
-    shader.text = read_through_accessors(std::move(shader.text), texel_array_names(defines));
-    return shader;
+    return assemble_shader(source_dir() / "shaders/trace.comp", {students, sampling, path},
+                           defines);
 }
 
 AssembledShader assemble_trace_shader(const PreparedScene& scene, RenderMode mode,

@@ -105,8 +105,8 @@ Image render_gpu(const PreparedScene& scene, RenderMode mode, const GpuRenderOpt
 // process, as core/not_implemented.h does for C++ stubs.
 void report_gpu_stubs(const AssembledShader& shader, const std::uint32_t flags[4]);
 
-// shaders/trace.comp with `defines`, the student folders (empty: the course's) and the arrays
-// read through texel_arrays.glsl: the text the renderer compiles.
+// shaders/trace.comp with `defines` and the student folders (empty: the course's): the text the
+// renderer compiles, the student's files in it as written (GpuAssembly.*).
 AssembledShader assemble_trace(const std::string& defines, const std::filesystem::path& student_dir,
                                const std::filesystem::path& sampling_dir,
                                const std::filesystem::path& path_dir = {});

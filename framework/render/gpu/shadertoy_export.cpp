@@ -83,8 +83,15 @@ std::string v3(const Vec3& v) {
            ")";
 }
 
-// `const T name[N] = T[N](...)`, one element a line. GLSL has no empty arrays: an empty one gets
-// `dummy` (the counts keep the shader from reading it).
+// The accessors of a GLSL array `name` of `type`s (shaders/scene_buffers.glsl): name_at(i) for
+// int and uint indices, as every shader reads the scene's arrays.
+std::string array_accessors(const std::string& type, const std::string& name) {
+    return type + " " + name + "_at(int i) { return " + name + "[i]; }\n" + type + " " + name +
+           "_at(uint i) { return " + name + "[i]; }\n";
+}
+
+// `const T name[N] = T[N](...)`, one element a line, and its accessors. GLSL has no empty
+// arrays: an empty one gets `dummy` (the counts keep the shader from reading it).
 template <typename T, typename F>
 std::string const_array(const char* type, const char* name, const std::vector<T>& items, F format,
                         const std::string& dummy) {
@@ -93,6 +100,7 @@ std::string const_array(const char* type, const char* name, const std::vector<T>
                     "] = " + type + "[" + std::to_string(n) + "](\n";
     for (std::size_t i = 0; i < n; ++i)
         s += "    " + (items.empty() ? dummy : format(items[i])) + (i + 1 < n ? ",\n" : ");\n");
+    if (std::string(name) != "spheres_at_rest") s += array_accessors(type, name);
     return s;
 }
 
@@ -364,10 +372,7 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                scene_constants(scene, mode, packed, options.data_textures) + "\n";
     out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
     for_shadertoy(shader, out.text, out.line_origins);
-    if (options.data_textures) {
-        out.text = read_through_accessors(std::move(out.text));
-        out.data_arrays = web_data_arrays(packed);
-    }
+    if (options.data_textures) out.data_arrays = web_data_arrays(packed);
     if (out.text.size() > kMaxShadertoyBytes)
         throw GpuError((scene.source.empty() ? "the scene" : scene.source) + ": its export " +
                        "would be " + std::to_string(out.text.size() / 1024) +

@@ -36,15 +36,6 @@ constexpr std::array<TexelArray, 15> kArrays = {{
 
 }  // namespace
 
-std::vector<std::string_view> texel_array_names(const std::string& defines) {
-    // Motion blur's spheres[] is the invocation's moved copy (compute_io.glsl), not a view.
-    const bool moving = defines.find("#define HAS_MOTION_BLUR\n") != std::string::npos;
-    std::vector<std::string_view> names;
-    for (const TexelArray& a : kArrays)
-        if (!(moving && a.binding == gpu::kSpheres)) names.push_back(a.name);
-    return names;
-}
-
 std::vector<GLuint> create_texel_views(const GlApi& gl, const std::vector<GLuint>& buffers) {
     GLint most = 0;  // texels a buffer texture may hold (GL 4.5 guarantees 65536)
     gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);

@@ -30,26 +30,11 @@ DataArray words_of(std::string_view name, const std::vector<T>& items) {
     return array;
 }
 
-bool identifier_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
-// The index of the ']' that closes the '[' at `open` within its statement, or npos.
-std::size_t closing_bracket(const std::string& code, std::size_t open) {
-    int depth = 0;
-    for (std::size_t i = open; i < code.size(); ++i) {
-        if (code[i] == ';' || code[i] == '{' || code[i] == '}') return std::string::npos;
-        if (code[i] == '[') ++depth;
-        if (code[i] == ']' && --depth == 0) return i;
-    }
-    return std::string::npos;
-}
-
 // The GLSL: one sampler an array, and each accessor for int and uint indices (the stage 09 code
 // indexes with both). Texel i of an array sits at (i % width, i / width).
 const char* const kAccessors = R"(
 // rt export-web (framework/render/gpu/web_arrays.h): the scene's large arrays in data textures,
-// the storage buffers' words 4 to a texel; name[i] reads as name_at(i).
+// the storage buffers' words 4 to a texel, read through name_at(i) (shaders/scene_buffers.glsl).
 uniform highp usampler2D rt_data_triangles, rt_data_positions, rt_data_normals, rt_data_uvs,
     rt_data_bvh_nodes, rt_data_bvh_primitives, rt_data_texture_images, rt_data_texels;
 uvec4 rt_texel(highp usampler2D words, int i) {
@@ -100,32 +85,6 @@ bool is_web_data_array(std::string_view name) {
 
 std::string web_data_accessors() {
     return "#define RT_DATA_WIDTH " + std::to_string(kDataTextureWidth) + "\n" + kAccessors;
-}
-
-std::string read_through_accessors(std::string code) {
-    return read_through_accessors(std::move(code), {kNames.begin(), kNames.end()});
-}
-
-std::string read_through_accessors(std::string code, const std::vector<std::string_view>& names) {
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        if (!identifier_char(code[i]) || (i > 0 && identifier_char(code[i - 1]))) continue;
-        std::size_t end = i;
-        while (end < code.size() && identifier_char(code[end])) ++end;
-        const std::string_view word(code.data() + i, end - i);
-        std::size_t open = end;
-        while (open < code.size() && code[open] == ' ') ++open;
-        if (open < code.size() && code[open] == '[' &&
-            std::find(names.begin(), names.end(), word) != names.end()) {
-            // Unclosed (a typo): left as it is, for the compiler to report at its file and line.
-            const std::size_t close = closing_bracket(code, open);
-            if (close != std::string::npos) {
-                code[close] = ')';
-                code.replace(end, open + 1 - end, "_at(");
-            }
-        }
-        i = end - 1;  // the index expression is scanned next, for nested arrays
-    }
-    return code;
 }
 
 }  // namespace rt

@@ -1,11 +1,9 @@
 // rt export-web's large arrays. WebGL2 has no storage buffers, and a mesh, its BVH or an image
 // baked as GLSL constants makes a shader of megabytes that a browser compiles for minutes (stage
 // 06's meshes: 10-15 MB). So the page keeps them in RGBA32UI data textures, kDataTextureWidth
-// texels a row, holding the storage buffers' very words (std430), and the shader reads them
-// through accessor functions: the export rewrites the stage 09 code's `name[i]` into
-// `name_at(i)`, which returns what the storage buffer's element holds.
-//
-// On the "calls student code" side only in that it rewrites the student's GLSL text.
+// texels a row, holding the storage buffers' very words (std430), and the page's accessors
+// name_at(i), which every shader reads the scene's arrays through (shaders/scene_buffers.glsl),
+// return what the storage buffer's element holds.
 #pragma once
 
 #include <cstdint>
@@ -34,10 +32,5 @@ bool is_web_data_array(std::string_view name);
 
 // The GLSL of the samplers and the accessors (after scene_layout.glsl's structs).
 std::string web_data_accessors();
-
-// `code` with every `name[expr]` of those arrays, nested ones too, read as `name_at(expr)`.
-std::string read_through_accessors(std::string code);
-// The same for the arrays `names` (the compute shader's texel views, gpu_render.cpp).
-std::string read_through_accessors(std::string code, const std::vector<std::string_view>& names);
 
 }  // namespace rt

@@ -1,0 +1,135 @@
+// The student's GLSL reaches the compiler as written: the assembled compute shader holds every
+// line of every student file of stages 09-11 unchanged, but for the two kinds of line the
+// assembler is documented to change (framework/gpu/gl/shader_source.h): a stub's marker, the
+// RT_NOT_IMPLEMENTED call with its handout section (GLSL has no strings: it becomes the stub's
+// report), and a `while` head (guarded, so an endless loop reports instead of hanging the GPU).
+// Each of those is an entry of the shader's stub table; nothing else of the student's text is
+// touched.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "core/source_dir.h"
+#include "core/text_file.h"
+#include "gpu/gl/shader_source.h"
+#include "render/gpu/gpu_render.h"
+#include "render/prepare.h"
+#include "scene/scene_loader.h"
+
+namespace fs = std::filesystem;
+
+namespace rt {
+namespace {
+
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = text.find('\n', start);
+        lines.push_back(text.substr(start, end - start));
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+    return lines;
+}
+
+// The assembled text's lines by the source string (file) each came from, read off its #line
+// directives ("#line N K": file K).
+std::map<int, std::vector<std::string>> lines_by_file(const std::string& text) {
+    static const std::regex directive(R"(^#line \d+ (\d+)$)");
+    std::map<int, std::vector<std::string>> files;
+    int file = 0;
+    for (const std::string& line : split_lines(text)) {
+        std::smatch m;
+        if (std::regex_match(line, m, directive)) {
+            file = std::stoi(m[1]);
+            continue;
+        }
+        files[file].push_back(line);
+    }
+    return files;
+}
+
+bool changed_by_design(const std::string& line) {
+    static const std::regex while_head(R"(^\s*while\s*\()");
+    static const std::string stub_marker = std::string("RT_NOT_IMPLEMENTED") + "(";
+    return line.find(stub_marker) != std::string::npos || std::regex_search(line, while_head);
+}
+
+// Every stage's GLSL in one shader: stage 11's path-traced Cornell box, with every feature.
+AssembledShader every_student_file() {
+    const PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/11-path-tracing/scenes/cornell_box.json"),
+                      {.width = 8, .height = 8});
+    return assemble_trace_shader(scene, RenderMode::Shaded, {}, /*uber=*/true);
+}
+
+// What reached the compiler otherwise than written, one message a line or file; and the number of
+// student files looked at.
+std::vector<std::string> unexpected_changes(const AssembledShader& shader, int& student_files) {
+    std::vector<std::string> problems;
+    const std::map<int, std::vector<std::string>> assembled = lines_by_file(shader.text);
+    student_files = 0;
+    for (std::size_t id = 0; id < shader.files.size(); ++id) {
+        const std::string& name = shader.files[id];
+        if (name.find("stages/") == std::string::npos) continue;
+        ++student_files;
+        const std::vector<std::string> written = split_lines(read_text(source_dir() / name));
+        const auto found = assembled.find(int(id));
+        const std::vector<std::string> compiled =
+            found == assembled.end() ? std::vector<std::string>{} : found->second;
+        if (compiled.size() != written.size()) {
+            problems.push_back(name + ": lines added or dropped");
+            continue;
+        }
+        int changed = 0;
+        for (std::size_t k = 0; k < written.size(); ++k) {
+            if (compiled[k] == written[k]) continue;
+            if (!changed_by_design(written[k]))
+                problems.push_back(name + ":" + std::to_string(k + 1) +
+                                   " reached the compiler changed:\n  written:  " + written[k] +
+                                   "\n  compiled: " + compiled[k]);
+            ++changed;
+        }
+        int registered = 0;
+        for (const ShaderStub& stub : shader.stubs) registered += stub.file == name ? 1 : 0;
+        if (changed != registered)
+            problems.push_back(name + ": " + std::to_string(changed) + " lines changed, " +
+                               std::to_string(registered) + " in the stub table");
+    }
+    return problems;
+}
+
+TEST(GpuAssembly, StudentFilesReachTheCompilerAsWritten) {
+    const AssembledShader shader = every_student_file();
+    ASSERT_EQ(shader.error, "");
+    int student_files = 0;
+    for (const std::string& problem : unexpected_changes(shader, student_files))
+        ADD_FAILURE() << problem;
+    EXPECT_EQ(student_files, 10) << "stage 09's seven files, stage 10's one, stage 11's two";
+}
+
+// The check catches a rewrite such as the old one of name[i] into name_at(i): the assembled text
+// with one of bvh.glsl's accessor calls renamed.
+TEST(GpuAssembly, ARewrittenLineIsCaught) {
+    AssembledShader shader = every_student_file();
+    const std::string call = "intersect_node(bvh_nodes_at(0)";
+    const std::size_t at = shader.text.find(call);
+    ASSERT_NE(at, std::string::npos);
+    shader.text.replace(at, call.size(), "intersect_node(bvh_node_at(0)");
+    int student_files = 0;
+    const std::vector<std::string> problems = unexpected_changes(shader, student_files);
+    ASSERT_FALSE(problems.empty());
+    EXPECT_NE(problems[0].find("bvh.glsl:"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[0].find("compiled:     if (intersect_node(bvh_node_at(0)"),
+              std::string::npos)
+        << problems[0];
+}
+
+}  // namespace
+}  // namespace rt
