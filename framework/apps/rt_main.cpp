@@ -229,7 +229,7 @@ int run_export_web(const ExportWebArgs& args) {
     const PreparedScene scene =
         prepare_scene(load_scene(args.scene), {.width = args.width, .height = args.height});
     const RenderMode mode = args.mode.empty() ? scene.mode : *parse_render_mode(args.mode);
-    export_shadertoy(scene, mode, {.data_textures = true});  // refusals before the CPU render
+    export_shadertoy(scene, mode, {.web_page = true});  // refusals before the CPU render
     const Image8 reference = args.no_reference ? Image8{} : to_image8(render(scene, mode));
     const std::string page = export_web_page(scene, mode, reference);
     std::ofstream out(args.output, std::ios::binary);

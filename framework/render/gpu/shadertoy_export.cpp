@@ -4,11 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
 #include "core/source_dir.h"
+#include "core/text_file.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
 #include "render/gpu/gpu_render.h"
@@ -92,12 +92,13 @@ std::string array_accessors(const std::string& type, const std::string& name) {
 
 // `const T name[N] = T[N](...)`, one element a line, and its accessors. GLSL has no empty
 // arrays: an empty one gets `dummy` (the counts keep the shader from reading it).
+// `writable` leaves `const` out (the web page's term switches change materials and environment).
 template <typename T, typename F>
 std::string const_array(const char* type, const char* name, const std::vector<T>& items, F format,
-                        const std::string& dummy) {
+                        const std::string& dummy, bool writable = false) {
     const std::size_t n = std::max<std::size_t>(1, items.size());
-    std::string s = "const " + std::string(type) + " " + name + "[" + std::to_string(n) +
-                    "] = " + type + "[" + std::to_string(n) + "](\n";
+    std::string s = (writable ? "" : "const ") + std::string(type) + " " + name + "[" +
+                    std::to_string(n) + "] = " + type + "[" + std::to_string(n) + "](\n";
     for (std::size_t i = 0; i < n; ++i)
         s += "    " + (items.empty() ? dummy : format(items[i])) + (i + 1 < n ? ",\n" : ");\n");
     if (std::string(name) != "spheres_at_rest") s += array_accessors(type, name);
@@ -111,15 +112,19 @@ std::string vec4_item(const glm::vec4& x) {
 // GLSL zeros, for the dummy element of an empty array.
 const std::string kZero4 = "vec4(0.0)", kZeroInt4 = "ivec4(0)";
 
-// What trace.comp takes as uniforms, as constants.
-std::string uniform_constants(const PreparedScene& scene, RenderMode mode) {
+// What trace.comp takes as uniforms, as constants; on a web page, those its panel changes stay
+// uniforms (the page sets them from the scene's settings before its first frame).
+std::string uniform_constants(const PreparedScene& scene, RenderMode mode, bool page) {
     const Camera& c = scene.camera;
     std::string s = "// The scene (" +
                     (scene.source.empty() ? "built in code" : public_scene_name(scene.source)) +
                     "), as trace.comp reads it from its storage buffers and uniforms.\n";
-    s += "const Camera camera = Camera(" + literal(int(c.projection)) + ", " + v3(c.eye) + ", " +
-         v3(c.u) + ", " + v3(c.v) + ", " + v3(c.w) + ", " + literal(float(c.vertical_fov_degrees)) +
-         ", " + literal(float(c.view_height)) + ");\n";
+    if (page)
+        s += "uniform Camera camera;\n";
+    else
+        s += "const Camera camera = Camera(" + literal(int(c.projection)) + ", " + v3(c.eye) +
+             ", " + v3(c.u) + ", " + v3(c.v) + ", " + v3(c.w) + ", " +
+             literal(float(c.vertical_fov_degrees)) + ", " + literal(float(c.view_height)) + ");\n";
     s += "const ivec4 primitive_counts = ivec4(" + std::to_string(scene.spheres.size()) + ", " +
          std::to_string(scene.planes.size()) + ", " + std::to_string(scene.triangles.size()) +
          ", " + std::to_string(scene.boxes.size()) + ");\n";
@@ -127,10 +132,15 @@ std::string uniform_constants(const PreparedScene& scene, RenderMode mode) {
     s += "const int material_count = " + std::to_string(scene.materials.size()) + ";\n";
     s += "const vec3 background_color = " + vec("vec3", scene.background, 3) + ";\n";
     s += "const vec3 ambient_light = " + vec("vec3", scene.ambient_light, 3) + ";\n";
-    s += std::string("const bool fresnel = ") + (scene.fresnel ? "true" : "false") + ";\n";
-    s += "const int render_mode = " + std::to_string(int(mode)) + ";\n";
-    s += "const int max_depth = " + std::to_string(gpu_trace_depth(scene, mode)) + ";\n";
-    s += "const int scene_features = " + std::to_string(gpu_feature_bits(scene, mode)) + ";\n";
+    if (page) {
+        s += "uniform bool fresnel;\nuniform int render_mode;\nuniform int max_depth;\n";
+        s += "uniform int scene_features;\n";
+    } else {
+        s += std::string("const bool fresnel = ") + (scene.fresnel ? "true" : "false") + ";\n";
+        s += "const int render_mode = " + std::to_string(int(mode)) + ";\n";
+        s += "const int max_depth = " + std::to_string(gpu_trace_depth(scene, mode)) + ";\n";
+        s += "const int scene_features = " + std::to_string(gpu_feature_bits(scene, mode)) + ";\n";
+    }
     s += "const int texture_lookup = " + std::to_string(gpu_texture_lookup(scene)) + ";\n";
     return s;
 }
@@ -186,7 +196,8 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
         },
         "Material(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 +
             ", " + kZero4 + ", " + kZeroInt4 + ", vec4[4](" + kZero4 + ", " + kZero4 + ", " +
-            kZero4 + ", " + kZero4 + "))");
+            kZero4 + ", " + kZero4 + "))",
+        data);
     s += unless_data(data, "bvh_nodes", [&] {
         return const_array(
             "BvhNode", "bvh_nodes", g.bvh_nodes,
@@ -224,7 +235,8 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
             return "Environment(" + iv4(e.kind_image) + ", " + iv4(e.faces_px_nx_py_ny) + ", " +
                    iv4(e.faces_pz_nz) + ", " + v4(e.intensity_rotate_y) + ")";
         },
-        "Environment(" + kZeroInt4 + ", " + kZeroInt4 + ", " + kZeroInt4 + ", " + kZero4 + ")");
+        "Environment(" + kZeroInt4 + ", " + kZeroInt4 + ", " + kZeroInt4 + ", " + kZero4 + ")",
+        data);
 
     return s;
 }
@@ -262,7 +274,7 @@ std::string scene_constants(const PreparedScene& scene, RenderMode mode, const g
     const std::string block =
         "layout(std140) uniform SampledScene { Sampling sampling; AreaLight "
         "area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };\n";
-    return uniform_constants(scene, mode) +
+    return uniform_constants(scene, mode, data) +
            geometry_constants(g, data, sampled && scene.features.motion_blur) +
            material_constants(g, data) + plane_box_light_constants(g) +
            (data ? web_data_accessors() : "") + (sampled ? block : "");
@@ -305,10 +317,12 @@ void for_shadertoy(const AssembledShader& shader, std::string& out,
 // scene_layout.glsl's structs, without its storage buffers (the export's arrays are constants).
 std::string scene_structs() {
     const fs::path file = source_dir() / "shaders/scene_layout.glsl";
-    std::ifstream in(file);
-    if (!in) throw GpuError(display_path(file) + ": cannot read the shader file");
+    std::string text;
+    if (!read_text_if(file, text))
+        throw GpuError(display_path(file) + ": cannot read the shader file");
+    std::istringstream lines(text);
     std::string line, out;
-    while (std::getline(in, line))
+    while (std::getline(lines, line))
         if (!line.starts_with("layout(")) out += line + "\n";
     return out;
 }
@@ -349,12 +363,20 @@ const char* const kShadertoyTail =
     "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
     "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
     "}\n";
+// A web page's main: the term switches first (shaders/page_terms.glsl), then as above.
+const char* const kPageTail =
+    "\nout vec4 rt_frag_color;\n"
+    "void main() {\n"
+    "    rt_apply_terms();\n"
+    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
+    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
+    "}\n";
 
 }  // namespace
 
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const ShadertoyOptions& options) {
-    check_exportable(scene, mode, options.data_textures);
+    check_exportable(scene, mode, options.web_page);
     const fs::path students = options.student_dir.empty() ? gpu_student_dir() : options.student_dir;
     const AssembledShader shader = assemble_shader(
         source_dir() / "shaders/shadertoy.glsl", {students, gpu_sampling_dir(), gpu_path_dir()},
@@ -369,10 +391,11 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                ".\n// Paste it into Shadertoy's Image tab. The camera keeps the scene's vertical "
                "field of view; the image takes the canvas's shape.\n\n" +
                gpu_defines(scene, mode) + "\n" + gpu::shader_prelude() + scene_structs() + "\n" +
-               scene_constants(scene, mode, packed, options.data_textures) + "\n";
+               scene_constants(scene, mode, packed, options.web_page) + "\n";
     out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
     for_shadertoy(shader, out.text, out.line_origins);
-    if (options.data_textures) out.data_arrays = web_data_arrays(packed);
+    if (options.web_page) out.data_arrays = web_data_arrays(packed);
+    out.web_page = options.web_page;
     if (out.text.size() > kMaxShadertoyBytes)
         throw GpuError((scene.source.empty() ? "the scene" : scene.source) + ": its export " +
                        "would be " + std::to_string(out.text.size() / 1024) +
@@ -384,7 +407,12 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
 }
 
 std::string wrap_shadertoy_export(const ShadertoyExport& shader) {
-    return kShadertoyHead + shader.text + kShadertoyTail;
+    if (!shader.web_page) return kShadertoyHead + shader.text + kShadertoyTail;
+    const fs::path terms = source_dir() / "shaders/page_terms.glsl";
+    std::string terms_text;
+    if (!read_text_if(terms, terms_text))
+        throw GpuError(display_path(terms) + ": cannot read the shader file");
+    return kShadertoyHead + shader.text + "\n" + terms_text + kPageTail;
 }
 
 long shadertoy_wrapper_head_lines() {

@@ -23,15 +23,19 @@ struct ShadertoyExport {
     // For each line of `text` (index 0: line 1), the GLSL file and line it came from, as
     // "stages/09-gpu/intersect.glsl:42"; "" for the export's own lines (the scene's constants).
     std::vector<std::string> line_origins;
-    // With ShadertoyOptions::data_textures: the arrays the shader reads from data textures.
+    // With ShadertoyOptions::web_page: the arrays the shader reads from data textures.
     std::vector<DataArray> data_arrays;
+    bool web_page = false;  // made with ShadertoyOptions::web_page
 };
 
 struct ShadertoyOptions {
     std::filesystem::path student_dir{};  // the stage 09 GLSL's folder; empty: gpu_student_dir()
-    // rt export-web: the large arrays (meshes, the BVH, images) in data textures instead of
-    // constants (render/gpu/web_arrays.h), so neither size limit below applies to them.
-    bool data_textures = false;
+    // rt export-web's page: the large arrays (meshes, the BVH, images) in data textures instead
+    // of constants (render/gpu/web_arrays.h), so neither size limit below applies to them; what
+    // the page's panel changes (the camera, the mode, the bounces, Fresnel, the feature bits) as
+    // uniforms; the materials and the environment writable, for its term switches
+    // (shaders/page_terms.glsl, called first in main).
+    bool web_page = false;
 };
 
 // Images are baked as constant arrays up to this many texels in all; Shadertoy cannot load the
@@ -52,7 +56,8 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
 
 // The export as a whole GLSL ES 3.00 fragment shader, as Shadertoy and a WebGL2 page run it: after
 // `#version 300 es` and Shadertoy's uniforms, the export, then a main calling mainImage that also
-// writes the stub a pixel reached (rt_first_stub) as alpha/255 (255: none).
+// writes the stub a pixel reached (rt_first_stub) as alpha/255 (255: none). A web page's export
+// also gets shaders/page_terms.glsl, and its main applies the term switches first.
 std::string wrap_shadertoy_export(const ShadertoyExport& shader);
 // The lines the wrapper puts before the export (to map a compiler's line numbers back to it).
 long shadertoy_wrapper_head_lines();

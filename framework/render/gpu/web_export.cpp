@@ -39,42 +39,6 @@ std::string png_data_url(const Image8& image) {
     return "data:image/png;base64," + base64(bytes);
 }
 
-// A baked declaration ("\nconst bool fresnel = ...;") turned into the line `replacement`.
-void to_uniform(std::string& text, const std::string& baked, const std::string& replacement) {
-    const std::size_t at = text.find("\n" + baked);
-    if (at == std::string::npos)
-        throw GpuError("rt: error: the Shadertoy export bakes no \"" + baked +
-                       "\" to make a uniform of");
-    text.replace(at + 1, text.find('\n', at + 1) - at - 1, replacement);
-}
-
-// The export with what the page changes as uniforms of the same names: the camera (orbit, pan,
-// zoom), the mode, the bounces, Fresnel and the feature bits (shadows, refraction), and the
-// materials made writable for the term switches.
-std::string page_shader_text(const ShadertoyExport& shader) {
-    std::string text = wrap_shadertoy_export(shader);
-    to_uniform(text, "const Camera camera = ", "uniform Camera camera;");
-    to_uniform(text, "const bool fresnel = ", "uniform bool fresnel;");
-    to_uniform(text, "const int render_mode = ", "uniform int render_mode;");
-    to_uniform(text, "const int max_depth = ", "uniform int max_depth;");
-    to_uniform(text, "const int scene_features = ", "uniform int scene_features;");
-    for (const char* array : {"\nconst Material materials[", "\nconst Environment environment["}) {
-        const std::size_t at = text.find(array);
-        if (at == std::string::npos)
-            throw GpuError(std::string("rt: error: the Shadertoy export bakes no \"") +
-                           (array + 7) + "\"");
-        text.erase(at + 1, 6);  // "const "
-    }
-    const std::string call = "    mainImage(rt_frag_color";
-    const std::size_t main_at = text.rfind("\nout vec4 rt_frag_color;");
-    const std::size_t call_at = text.rfind(call);
-    if (main_at == std::string::npos || call_at == std::string::npos)
-        throw GpuError("rt: error: the Shadertoy wrapper has no main to switch terms in");
-    text.insert(call_at, "    rt_apply_terms();\n");
-    text.insert(main_at, "\n" + read_page_file("page_terms.glsl"));
-    return text;
-}
-
 // What the page's shader is compiled for: every mode (depth and bvh_visits mapped by the page's
 // second pass, page_ranges.js), with shaded's code and shadows in it, so that each setting of the
 // panel has its code; or, when the scene cannot be shaded here (stage 10), the requested mode
@@ -89,7 +53,7 @@ struct PageShader {
 constexpr int kWebSamplesPerFrame = 4;
 
 // The page's shader reads meshes, BVHs and images from data textures (render/gpu/web_arrays.h).
-const ShadertoyOptions kWeb{.data_textures = true};
+const ShadertoyOptions kWeb{.web_page = true};
 
 PageShader page_shader(const PreparedScene& scene, RenderMode mode) {
     ShadertoyExport requested = export_shadertoy(scene, mode, kWeb);  // its refusals: the page's
@@ -265,7 +229,7 @@ std::string export_web_page(const PreparedScene& scene, RenderMode mode, const I
     std::string page = read_page_file("web/page.html");
     const std::string title = scene.source.empty() ? "A scene" : fs::path(scene.source).stem();
     replace_once(page, "@RT_TITLE@", title);
-    replace_once(page, "@RT_SHADER@", script_safe(page_shader_text(shader.shader), false));
+    replace_once(page, "@RT_SHADER@", script_safe(wrap_shadertoy_export(shader.shader), false));
     replace_once(page, "@RT_DATA@",
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
     replace_once(page, "@RT_SCRIPT@",

@@ -115,18 +115,21 @@ TEST(GpuAssembly, StudentFilesReachTheCompilerAsWritten) {
 }
 
 // The check catches a rewrite such as the old one of name[i] into name_at(i): the assembled text
-// with one of bvh.glsl's accessor calls renamed.
+// with the first line of the first student file changed (a line every tree has, starter or not).
 TEST(GpuAssembly, ARewrittenLineIsCaught) {
     AssembledShader shader = every_student_file();
-    const std::string call = "intersect_node(bvh_nodes_at(0)";
-    const std::size_t at = shader.text.find(call);
-    ASSERT_NE(at, std::string::npos);
-    shader.text.replace(at, call.size(), "intersect_node(bvh_node_at(0)");
+    std::size_t id = 0;
+    while (id < shader.files.size() && shader.files[id].find("stages/") == std::string::npos) ++id;
+    ASSERT_LT(id, shader.files.size());
+    const std::string directive =
+        "#line " + std::to_string(id * 100000 + 1) + " " + std::to_string(id) + "\n";
+    const std::size_t at = shader.text.find(directive);
+    ASSERT_NE(at, std::string::npos) << directive;
+    shader.text.insert(at + directive.size(), "rewritten ");
     int student_files = 0;
     const std::vector<std::string> problems = unexpected_changes(shader, student_files);
     ASSERT_FALSE(problems.empty());
-    EXPECT_NE(problems[0].find("bvh.glsl:"), std::string::npos) << problems[0];
-    EXPECT_NE(problems[0].find("compiled:     if (intersect_node(bvh_node_at(0)"),
+    EXPECT_NE(problems[0].find(shader.files[id] + ":1 reached the compiler changed"),
               std::string::npos)
         << problems[0];
 }
