@@ -23,7 +23,7 @@ bool rt_loop_guard(int iteration, int loop) {
 #ifdef HAS_SAMPLING
 // Stage 10, in rt export-web's pages only (Shadertoy's export refuses it): each frame draws camera
 // samples sample_first .. sample_first + sample_count - 1 of every pixel, as one dispatch of
-// trace.comp does, and the page adds the frames up and divides (shaders/web/page_samples.js).
+// trace.comp does, and the page adds the frames up and divides (framework/render/gpu/web/page_samples.js).
 uniform int sample_first;
 uniform int sample_count;
 #endif
@@ -58,7 +58,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec4 result = trace_pixel(vec2(fragCoord.x, iResolution.y - fragCoord.y));
     if (render_mode == kModeDepth || render_mode == kModeBvhVisits) {
         // rt export-web's page only (Shadertoy's export refuses these modes): the hit distance
-        // or node count into a float image, mapped by the image's range (shaders/web/page_ranges.js).
+        // or node count into a float image, mapped by the image's range (framework/render/gpu/web/page_ranges.js).
         fragColor = vec4(result.a, 0.0, 0.0, 1.0);
         return;
     }

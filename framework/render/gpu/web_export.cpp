@@ -18,9 +18,9 @@ namespace fs = std::filesystem;
 namespace rt {
 namespace {
 
-// A file the page is made of, under shaders/: its template and scripts (web/), its shader parts.
+// A file the page is made of: its template and scripts (render/gpu/web/), beside this file.
 std::string read_page_file(const std::string& name) {
-    const fs::path file = source_dir() / "shaders" / name;
+    const fs::path file = source_dir() / "framework/render/gpu/web" / name;
     std::string text;
     if (!read_text_if(file, text))
         throw GpuError(display_path(file) + ": cannot read this part of the page");
@@ -128,7 +128,7 @@ nlohmann::json data_textures(const std::vector<DataArray>& arrays) {
     return out;
 }
 
-// Stage 10: how the page accumulates camera samples (shaders/web/page_samples.js), and the bytes
+// Stage 10: how the page accumulates camera samples (framework/render/gpu/web/page_samples.js), and the bytes
 // of the uniform block SampledScene (as rt render --gpu uploads them); null for other scenes.
 nlohmann::json sampled_settings(const PreparedScene& scene, RenderMode mode) {
     if (mode != RenderMode::Shaded || !scene.features.sampled()) return nullptr;
@@ -205,7 +205,8 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
 
 void replace_once(std::string& text, const std::string& key, const std::string& value) {
     const std::size_t at = text.find(key);
-    if (at == std::string::npos) throw GpuError("rt: error: shaders/web/page.html lacks " + key);
+    if (at == std::string::npos)
+        throw GpuError("rt: error: framework/render/gpu/web/page.html lacks " + key);
     text.replace(at, key.size(), value);
 }
 
@@ -226,16 +227,16 @@ std::string script_safe(std::string text, bool json) {
 
 std::string export_web_page(const PreparedScene& scene, RenderMode mode, const Image8& reference) {
     const PageShader shader = page_shader(scene, mode);
-    std::string page = read_page_file("web/page.html");
+    std::string page = read_page_file("page.html");
     const std::string title = scene.source.empty() ? "A scene" : fs::path(scene.source).stem();
     replace_once(page, "@RT_TITLE@", title);
     replace_once(page, "@RT_SHADER@", script_safe(wrap_shadertoy_export(shader.shader), false));
     replace_once(page, "@RT_DATA@",
                  script_safe(page_data(scene, mode, shader, reference).dump(), true));
     replace_once(page, "@RT_SCRIPT@",
-                 read_page_file("web/page_camera.js") + read_page_file("web/page_controls.js") +
-                     read_page_file("web/page_samples.js") + read_page_file("web/page_ranges.js") +
-                     read_page_file("web/page.js"));
+                 read_page_file("page_camera.js") + read_page_file("page_controls.js") +
+                     read_page_file("page_samples.js") + read_page_file("page_ranges.js") +
+                     read_page_file("page.js"));
     return page;
 }
 

@@ -1,7 +1,7 @@
 // rt export-web (issue 29): one self-contained HTML page that renders the scene in WebGL2 with the
 // student's stage 09 GLSL. The fragment shader is the Shadertoy export (shadertoy_export.h) in its
 // GLSL ES 3.00 wrapper, with the baked camera turned into a uniform so the page can orbit; the
-// page's markup and script are shaders/web/page.html and page.js, inlined with the shader, the
+// page's markup and script are framework/render/gpu/web/page.html and page.js, inlined with the shader, the
 // scene's camera and stubs as JSON, and the CPU render as a PNG data URL. Nothing is fetched.
 //
 // On the "calls student code" side: the GLSL it embeds is the student's.
