@@ -8,3 +8,16 @@ elseif(NOT EXISTS ${SOURCE}/tools/web/node_modules/puppeteer-core)
   set(WEB_SKIPPED
       "SKIPPED: puppeteer-core is missing (scripts/install-deps.sh runs npm ci in tools/web)")
 endif()
+
+# render_pages(ARGS...): tools/web/render_pages.js with those arguments, its output printed.
+# When it skipped (no WebGL2 in the browser) the calling script ends there, as a macro's return()
+# does; otherwise render_pages_rc holds its exit status and render_pages_out its output.
+macro(render_pages)
+  execute_process(COMMAND ${NODE_EXE} ${SOURCE}/tools/web/render_pages.js ${ARGN}
+                  RESULT_VARIABLE render_pages_rc OUTPUT_VARIABLE render_pages_out
+                  ERROR_VARIABLE render_pages_out)
+  message("${render_pages_out}")
+  if(render_pages_out MATCHES "SKIPPED: ")
+    return()
+  endif()
+endmacro()
