@@ -1,37 +1,23 @@
 // The class dashboard's numbers (cmd/dashboard.h): a batch's results.json files read back, and
 // counted per stage, per test and per scene.
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include "cmd/dashboard.h"
+#include "grading/gradescope_results.h"
 #include "grading/report.h"
 #include "grading/test_output.h"
 #include "util.h"
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 namespace rt::grader {
 namespace {
 
-double number(const json& j, const char* key) {
-    const auto it = j.find(key);
-    return it != j.end() && it->is_number() ? it->get<double>() : 0;
-}
-
-std::string text(const json& j, const char* key) {
-    const auto it = j.find(key);
-    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
 // "stage02" -> 2; 0 when no tag names a stage.
-int stage_of(const json& tags) {
-    if (!tags.is_array()) return 0;
-    for (const auto& tag : tags) {
-        if (!tag.is_string()) continue;
-        const std::string t = tag.get<std::string>();
+int stage_of(const std::vector<std::string>& tags) {
+    for (const std::string& t : tags) {
         if (t.size() == 7 && t.starts_with("stage") && std::isdigit((unsigned char)t[5]) &&
             std::isdigit((unsigned char)t[6]))
             return (t[5] - '0') * 10 + (t[6] - '0');
@@ -39,11 +25,8 @@ int stage_of(const json& tags) {
     return 0;
 }
 
-bool has_tag(const json& tags, const std::string& wanted) {
-    if (!tags.is_array()) return false;
-    return std::any_of(tags.begin(), tags.end(), [&](const json& t) {
-        return t.is_string() && t.get<std::string>() == wanted;
-    });
+bool has_tag(const std::vector<std::string>& tags, const std::string& wanted) {
+    return std::find(tags.begin(), tags.end(), wanted) != tags.end();
 }
 
 // A failing image test's render, kept by the batch beside results.json (report.h).
@@ -55,19 +38,15 @@ void find_render(const fs::path& out, const std::string& submission, DashTest& t
     t.render_hash = fnv1a(bytes);
 }
 
-// One entry of results.json's tests[]; false (with `why`) when it is not a test.
-bool read_test(const json& j, DashTest& t, std::string& why) {
-    if (!j.is_object() || !j.contains("name") || !j["name"].is_string()) {
-        why = "a test without a name";
-        return false;
-    }
-    t.name = j["name"].get<std::string>();
-    const json tags = j.value("tags", json::array());
-    t.stage = stage_of(tags);
-    t.image = has_tag(tags, "image");
-    t.passed = text(j, "status") == "passed";
-    t.hints = handout_hints(text(j, "output"));
-    return true;
+// A test of results.json as the dashboard counts it.
+DashTest dash_test(const GradescopeTest& g) {
+    DashTest t;
+    t.name = g.name;
+    t.stage = stage_of(g.tags);
+    t.image = has_tag(g.tags, "image");
+    t.passed = g.passed;
+    t.hints = handout_hints(g.output);
+    return t;
 }
 
 // OUT/NAME/results.json; false (with `why`) when it is missing or not Gradescope's format.
@@ -78,27 +57,18 @@ bool read_submission(const fs::path& out, DashSubmission& s, std::string& why) {
         why = "missing or unreadable";
         return false;
     }
-    const json j = json::parse(body, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
-        why = "not valid JSON";
-        return false;
-    }
-    if (!j.contains("tests") || !j["tests"].is_array()) {
-        why = "no \"tests\" list (not a Gradescope results.json)";
-        return false;
-    }
-    s.seconds = number(j, "execution_time");
+    const std::optional<GradescopeResults> results = read_results_json(body, why);
+    if (!results) return false;
+    s.seconds = results->execution_time;
     read_text_if(out / s.name / kStudentsFile, s.students);
     while (!s.students.empty() && s.students.back() == '\n') s.students.pop_back();
-    for (const auto& entry : j["tests"]) {
-        DashTest t;
-        if (!read_test(entry, t, why)) return false;
-        const double score = number(entry, "score"), max = number(entry, "max_score");
-        s.score += score;
-        s.max_score += max;
+    for (const GradescopeTest& g : results->tests) {
+        DashTest t = dash_test(g);
+        s.score += g.score;
+        s.max_score += g.max_score;
         if (t.stage > 0) {
-            s.stages[t.stage].first += score;
-            s.stages[t.stage].second += max;
+            s.stages[t.stage].first += g.score;
+            s.stages[t.stage].second += g.max_score;
         }
         if (t.image && !t.passed) find_render(out, s.name, t);
         s.tests.push_back(std::move(t));

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "grading/gradescope_results.h"
 #include "util.h"  // parse_iso8601
 
 namespace rt::grader {
@@ -125,19 +126,18 @@ std::optional<std::string> rate_limited_results(const fs::path& metadata_file,
     const std::int64_t next =
         graded[graded.size() - std::size_t(limit.max_graded)].time + limit.window.count();
     const Graded& latest = graded.back();
-    json out = {{"score", latest.score},
-                {"execution_time", 0},
-                {"output", refusal(graded, now, next, limit)},
-                {"output_format", "text"},
-                {"stdout_visibility", "hidden"},
-                {"visibility", "visible"},
-                {"extra_data", {{"rate_limited", true}, {"next_graded_at", utc_text(next)}}},
-                {"tests", json::array()}};
-    if (latest.results && latest.results->is_object()) {
-        for (const char* key : {"tests", "leaderboard"})
-            if (latest.results->contains(key)) out[key] = (*latest.results)[key];
+    GradescopeResults out;
+    std::string why;
+    if (latest.results) {  // its tests and leaderboard, when Gradescope kept its results
+        if (const auto earlier = read_results_json(latest.results->dump(), why)) {
+            out.tests = earlier->tests;
+            out.leaderboard = earlier->leaderboard;
+        }
     }
-    return out.dump(2) + "\n";
+    out.score = latest.score;
+    out.output = refusal(graded, now, next, limit);
+    out.next_graded_at = utc_text(next);
+    return results_json_text(out);
 }
 
 }  // namespace rt::grader

@@ -23,40 +23,25 @@ std::string points(double v) {
 }  // namespace
 
 void write_results_json(const Report& report, const fs::path& file) {
-    json tests = json::array();
+    GradescopeResults results;
     double score = 0;
-    for (const auto& t : report.tests) {
-        json entry = {
-            {"name", t.name},
-            {"number", t.number},
-            {"score", t.score},
-            {"max_score", t.max_score},
-            {"status", t.status == "passed" ? "passed" : "failed"},
-            {"output", clean_output(t.output)},
-            {"output_format", "text"},
-            {"tags", t.tags},
-            {"visibility", t.visibility},
-        };
-        tests.push_back(entry);
+    for (const ReportTest& t : report.tests) {
+        results.tests.push_back({.name = t.name,
+                                 .number = t.number,
+                                 .passed = t.status == "passed",
+                                 .score = t.score,
+                                 .max_score = t.max_score,
+                                 .output = t.output,
+                                 .tags = t.tags,
+                                 .visibility = t.visibility});
         score += t.score;
     }
-    std::string output = "Sandbox: " + report.isolation + "\n" + report.general;
-    json results = {
-        {"score", std::round(score * 100) / 100},
-        {"execution_time", int(std::ceil(report.seconds))},
-        {"output", clean_output(output)},
-        {"output_format", "text"},
-        {"stdout_visibility", "hidden"},  // build logs and hidden test names stay private
-        {"visibility", "visible"},
-        {"tests", tests},
-    };
-    for (const LeaderboardEntry& e : report.leaderboard) {
-        json entry = {{"name", e.name}, {"value", e.value}};
-        if (e.ascending) entry["order"] = "asc";
-        results["leaderboard"].push_back(entry);
-    }
+    results.score = std::round(score * 100) / 100;
+    results.execution_time = report.seconds;
+    results.output = "Sandbox: " + report.isolation + "\n" + report.general;
+    results.leaderboard = report.leaderboard;
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
-    write_text_atomically(file, results.dump(2) + "\n");
+    write_text_atomically(file, results_json_text(results));
 }
 
 namespace {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "grading/gradescope_results.h"
+
 namespace rt::grader {
 
 struct ReportTest {
@@ -24,13 +26,6 @@ struct ReportStage {
     std::string title, folder;
 };
 
-// One column of Gradescope's leaderboard ("order": "asc" when lower is better).
-struct LeaderboardEntry {
-    std::string name;
-    double value = 0;
-    bool ascending = false;
-};
-
 struct Report {
     std::string isolation;
     std::string general;  // top-level notes: ignored files, interruptions, sandbox degradation
@@ -40,7 +35,7 @@ struct Report {
     std::vector<LeaderboardEntry> leaderboard;  // empty: no "leaderboard" in results.json
 };
 
-// https://gradescope-autograders.readthedocs.io/en/latest/specs/ (written atomically).
+// Gradescope's results.json of the grading (gradescope_results.h), written atomically.
 void write_results_json(const Report& report, const std::filesystem::path& file);
 void write_html_report(const Report& report, const std::filesystem::path& file);
 void write_terminal_summary(const Report& report, std::ostream& out, bool reveal_hidden);
