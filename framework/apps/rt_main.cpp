@@ -30,6 +30,7 @@
 #include "apps/cli_parse.h"
 #include "apps/gallery_page.h"
 #include "apps/rt_commands.h"
+#include "core/diagnostics.h"
 #include "core/seconds_since.h"
 #include "core/source_dir.h"
 #include "core/text_file.h"
@@ -287,7 +288,7 @@ int run_fmt(const std::vector<std::string>& files, bool check) {
             }
         } catch (const std::exception& e) {
             std::fflush(stdout);
-            std::fprintf(stderr, "%s\n", e.what());
+            std::fprintf(stderr, "%s\n", error_line("rt", e.what()).c_str());
             status = 1;
         }
     }
@@ -373,7 +374,7 @@ int main(int argc, char** argv) {
                 exporting.mode.empty() ? std::nullopt : parse_render_mode(exporting.mode));
         if (*web_cmd) return run_export_web(web);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
+        std::fprintf(stderr, "%s\n", error_line("rt", e.what()).c_str());
         return 1;
     }
     return 0;

@@ -16,7 +16,7 @@ namespace {
 constexpr int kMaxAnisotropy = 16;
 
 std::runtime_error failure(const std::string& why) {
-    return std::runtime_error(one_line("rt: error: --texture-filter oiio: " + why));
+    return std::runtime_error(one_line("--texture-filter oiio: " + why));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/diagnostics.h"
 #include "core/source_dir.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/scene_loader.h"
@@ -251,3 +252,16 @@ TEST(SceneLoader, OtherMistakesAreReported) {
 }
 
 }  // namespace
+
+// What a program prints for a library's error: the message when it names its place in compiler
+// form, else the program's name as the place (core/diagnostics.h).
+TEST(Diagnostics, AnErrorWithoutAPlaceGetsTheProgramsName) {
+    EXPECT_EQ(rt::error_line("rt",
+                             "scene.json:3:5: error: unknown key \"radus\"; did you mean "
+                             "\"radius\"?"),
+              "scene.json:3:5: error: unknown key \"radus\"; did you mean \"radius\"?");
+    EXPECT_EQ(rt::error_line("rt", "cannot open a window (no display)"),
+              "rt: error: cannot open a window (no display)");
+    EXPECT_EQ(rt::error_line("rt", "a: b\nc: error: d"), "rt: error: a: b\nc: error: d")
+        << "only the first line says where";
+}

@@ -150,7 +150,7 @@ struct Window {
     Window(int width, int height, const std::string& title) {
         glfwSetErrorCallback(glfw_error);
         if (!glfwInit())
-            throw std::runtime_error("rt: error: cannot open a window (" + last_glfw_error +
+            throw std::runtime_error("cannot open a window (" + last_glfw_error +
                                      "); run under a desktop or `xvfb-run -a rt view ...`");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -159,7 +159,7 @@ struct Window {
         handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
         if (!handle) {
             glfwTerminate();
-            throw std::runtime_error("rt: error: no OpenGL 3.3 core window (" + last_glfw_error +
+            throw std::runtime_error("no OpenGL 3.3 core window (" + last_glfw_error +
                                      "); `rt gl-info --window` shows what the display offers");
         }
         glfwMakeContextCurrent(handle);

@@ -304,7 +304,7 @@ struct GpuRenderer::Program {
 GpuRenderer::GpuRenderer(const GpuRenderOptions& options) : options_(options) {
     std::string error;
     context_ = GlContext::create(options.context, error);
-    if (!context_) throw GpuError("rt: error: " + error);
+    if (!context_) throw GpuError(error);
     if (options.log) *options.log << "gpu: " << context_->describe() << "\n";
 }
 

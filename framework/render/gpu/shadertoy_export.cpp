@@ -36,8 +36,8 @@ namespace {
 // The shortest literal that reads back as exactly `x` (std::to_chars round-trips).
 std::string literal(float x) {
     if (!std::isfinite(x))
-        throw GpuError("rt: error: the scene holds a value that is not finite (" +
-                       std::to_string(x) + "), which a GLSL constant cannot spell");
+        throw GpuError("the scene holds a value that is not finite (" + std::to_string(x) +
+                       "), which a GLSL constant cannot spell");
     char buffer[32];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
     std::string s(buffer, end);
@@ -59,7 +59,7 @@ std::string bits_literal(float x) {
     int bits;
     std::memcpy(&bits, &x, sizeof bits);
     if (bits < 0 || bits >= (1 << 23))
-        throw GpuError("rt: error: an index of " + std::to_string(bits) +
+        throw GpuError("an index of " + std::to_string(bits) +
                        " (a material or light kind) cannot be baked into a constant");
     return literal(x);
 }

@@ -205,8 +205,7 @@ nlohmann::json page_data(const PreparedScene& scene, RenderMode mode, const Page
 
 void replace_once(std::string& text, const std::string& key, const std::string& value) {
     const std::size_t at = text.find(key);
-    if (at == std::string::npos)
-        throw GpuError("rt: error: framework/render/gpu/web/page.html lacks " + key);
+    if (at == std::string::npos) throw GpuError("framework/render/gpu/web/page.html lacks " + key);
     text.replace(at, key.size(), value);
 }
 
@@ -216,7 +215,7 @@ std::string script_safe(std::string text, bool json) {
     for (std::size_t at = 0; (at = text.find("</", at)) != std::string::npos; at += 3) {
         if (!json)
             throw GpuError(
-                "rt: error: the shader holds \"</\", which would end the page's "
+                "the shader holds \"</\", which would end the page's "
                 "<script>; remove it from the GLSL (a comment?)");
         text.replace(at, 2, "<\\/");
     }
