@@ -52,7 +52,7 @@ std::string GalleryPage::compare_text(const Entry& e) {
 
 namespace {
 
-const char* const kStyle = R"(<style>
+const char* const kStyle = R"(
 body { font: 14px system-ui, sans-serif; margin: 1.5em; background: #1d1f21; color: #ddd; }
 a { color: #8ab4f8; }
 h2 { margin-top: 1.6em; border-bottom: 1px solid #444; }
@@ -65,7 +65,7 @@ h2 { margin-top: 1.6em; border-bottom: 1px solid #444; }
 .badge { font-weight: bold; } .pass .badge { color: #3c3; } .partial .badge { color: #fc3; }
 .fail .badge { color: #e33; }
 .metric { font-size: 12px; color: #aaa; max-width: 612px; }
-</style>)";
+)";
 
 }  // namespace
 
@@ -175,11 +175,8 @@ fs::path GalleryPage::write() const {
         ++graded;
         passed += e.compared && e.result.passed;
     }
-    page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-         << "<title>rt gallery</title>\n"
-         << kStyle << "\n</head>\n<body>\n"
-         << "<h1>rt gallery</h1>\n<p>" << passed << " of " << graded
-         << " graded scenes match their reference image by the grader's metric";
+    page << html_page_start("rt gallery", kStyle) << "<h1>rt gallery</h1>\n<p>" << passed << " of "
+         << graded << " graded scenes match their reference image by the grader's metric";
     if (entries_.size() > std::size_t(graded))
         page << " (the other " << entries_.size() - graded << " of the " << entries_.size()
              << " scenes are not graded: no verdict)";
@@ -217,7 +214,7 @@ fs::path GalleryPage::write() const {
             "  document.body.dataset.imagesLoaded =\n"
             "      images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
             "});\n</script>\n";
-    page << "</body>\n</html>\n";
+    page << kHtmlPageEnd;
     const fs::path file = out_ / "index.html";
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out << page.str();

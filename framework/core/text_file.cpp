@@ -104,4 +104,9 @@ std::string html_escape(std::string_view text) {
     return out;
 }
 
+std::string html_page_start(const std::string& title, const std::string& css) {
+    return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
+           html_escape(title) + "</title><style>" + css + "</style></head><body>\n";
+}
+
 }  // namespace rt

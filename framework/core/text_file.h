@@ -57,4 +57,10 @@ void write_text_atomically(const std::filesystem::path& file, std::string_view t
 // `text` with & < > " as HTML entities, for element text and quoted attribute values.
 std::string html_escape(std::string_view text);
 
+// The start and the end of a self-contained HTML page (the gallery, a grading's report, the class
+// dashboard, the similarity report): UTF-8, English, `title` (escaped here) and the page's CSS
+// inline; the body follows the start.
+std::string html_page_start(const std::string& title, const std::string& css);
+inline constexpr const char* kHtmlPageEnd = "</body></html>\n";
+
 }  // namespace rt

@@ -185,9 +185,7 @@ int write_dashboard(const fs::path& out, const std::string& handout_base, std::o
     // Not a batch's folder (a mistyped path): leave it as it is.
     if (results.submissions.empty()) return 0;
     std::string h =
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-        "<title>rt-grade: class dashboard</title><style>" +
-        std::string(report_style()) + kDashboardStyle + "</style></head><body>\n";
+        html_page_start("rt-grade: class dashboard", std::string(report_style()) + kDashboardStyle);
     h += "<h1>rt-grade: " + std::to_string(results.submissions.size()) + " submissions</h1>\n";
     h += "<p>Built from the results.json files in this folder; <code>rt-grade dashboard "
          "FOLDER</code> rebuilds it after a regrade. Scores for a gradebook: "
@@ -195,7 +193,7 @@ int write_dashboard(const fs::path& out, const std::string& handout_base, std::o
     // The long list of tests last: the overview and every report's link stay near the top.
     h += problems_html(results) + stages_html(results) + submissions_html(results) +
          scenes_html(results) + tests_html(results, handout_base);
-    h += "</body></html>\n";
+    h += kHtmlPageEnd;
     write_text_atomically(out / "index.html", h);
     return int(results.submissions.size());
 }

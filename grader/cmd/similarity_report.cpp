@@ -121,11 +121,8 @@ std::string notes(const SimilarityReport& r) {
 }
 
 std::string index_page(const SimilarityReport& r, std::size_t flagged) {
-    std::string html =
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-        "<title>rt-grade similarity</title><style>" +
-        std::string(kStyle) +
-        "</style></head><body>\n<h1>Similarity: " + html_escape(r.dir.string()) + "</h1>\n";
+    std::string html = html_page_start("rt-grade similarity", kStyle) +
+                       "<h1>Similarity: " + html_escape(r.dir.string()) + "</h1>\n";
     html += "<p>" + std::to_string(r.cohort.size()) + " submissions; " +
             std::to_string(r.pairs.size()) + " file pairs share some code; " +
             std::to_string(flagged) + " at or above " + std::to_string(int(r.threshold)) +
@@ -141,7 +138,7 @@ std::string index_page(const SimilarityReport& r, std::size_t flagged) {
                 " pairs follow; pairs.csv lists every pair.</p>\n";
     for (std::size_t i = 0; i < std::min(flagged, kShownPairs); ++i)
         html += pair_section(r, r.pairs[i], i + 1);
-    return html + notes(r) + "</body></html>\n";
+    return html + notes(r) + kHtmlPageEnd;
 }
 
 std::string pairs_csv(const SimilarityReport& r) {

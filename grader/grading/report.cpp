@@ -170,10 +170,7 @@ void write_html_report(const Report& report, const fs::path& file) {
         score += t.score;
         max_score += t.max_score;
     }
-    std::string h =
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-        "<title>rt-grade report</title><style>" +
-        std::string(kReportStyle) + "</style></head><body>\n";
+    std::string h = html_page_start("rt-grade report", kReportStyle);
     h += "<h1>rt-grade: " + points(score) + " / " + points(max_score) + " points</h1>\n";
     h += "<p>Sandbox: " + html_escape(report.isolation) + ". Graded in " + points(report.seconds) +
          " s.</p>\n";
@@ -184,7 +181,7 @@ void write_html_report(const Report& report, const fs::path& file) {
     // The newest stage first: a student grading stage 10 reads stage 10, not stage 01.
     for (auto s = report.stages.rbegin(); s != report.stages.rend(); ++s)
         h += stage_html(report, *s);
-    h += "</body></html>\n";
+    h += kHtmlPageEnd;
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
     write_text_atomically(file, h);
 }
