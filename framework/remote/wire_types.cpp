@@ -104,31 +104,54 @@ void put(Writer& w, const PreparedScene& v) {
     put(w, static_cast<const Scene&>(v));
     put(w, v.features);
     put(w, v.bvh);
+    put(w, v.prepared_objects);
 }
 void get(Reader& r, PreparedScene& v) {
     get(r, static_cast<Scene&>(v));
     get(r, v.features);
     get(r, v.bvh);
+    get(r, v.prepared_objects);
 }
 
-void put(Writer& w, const std::shared_ptr<PreparedScene>& v) {
+namespace {
+
+template <class S>
+void put_shared(Writer& w, const std::shared_ptr<const S>& v) {
     put(w, bool(v));
     if (v) put(w, *v);
 }
-void get(Reader& r, std::shared_ptr<PreparedScene>& v) {
+
+template <class S>
+void get_shared(Reader& r, std::shared_ptr<const S>& v) {
     bool present = false;
     get(r, present);
     v.reset();
     if (present) {
-        v = std::make_shared<PreparedScene>();
-        get(r, *v);
+        auto decoded = std::make_shared<S>();
+        get(r, *decoded);
+        v = std::move(decoded);
     }
+}
+
+}  // namespace
+
+void put(Writer& w, const std::shared_ptr<const Scene>& v) {
+    put_shared(w, v);
+}
+void get(Reader& r, std::shared_ptr<const Scene>& v) {
+    get_shared(r, v);
+}
+void put(Writer& w, const std::shared_ptr<const PreparedScene>& v) {
+    put_shared(w, v);
+}
+void get(Reader& r, std::shared_ptr<const PreparedScene>& v) {
+    get_shared(r, v);
 }
 
 // sizeof(Scene) and sizeof(PreparedScene) (with float) when their field lists were written.
 static_assert(sizeof(Real) != sizeof(float) || sizeof(Scene) == 736,
               "Scene changed: add its new field to RT_WIRE_FIELDS(Scene) in wire_types.h");
-static_assert(sizeof(Real) != sizeof(float) || sizeof(PreparedScene) == 832,
+static_assert(sizeof(Real) != sizeof(float) || sizeof(PreparedScene) == 856,
               "PreparedScene changed: add its new field to put/get(PreparedScene) above");
 
 }  // namespace rt::remote

@@ -81,9 +81,12 @@ RT_WIRE_FIELDS(RayNode, v.kind, v.depth, v.ray, v.ray_weight, v.weight, v.hit, v
 RT_WIRE_FIELDS(PixelTree, v.x, v.y, v.color, v.root)
 RT_WIRE_FIELDS(gpu_cases::GpuAnswer, v.found, v.t, v.normal, v.front_face, v.uv)
 RT_WIRE_FIELDS(ShadertoyRun, v.compile_errors, v.draw_error, v.image)
-// An instanced object (Scene::objects): a flag for null, then the prepared scene.
-void put(Writer& w, const std::shared_ptr<PreparedScene>& v);
-void get(Reader& r, std::shared_ptr<PreparedScene>& v);
+// An instanced object (Scene::objects, PreparedScene::prepared_objects): a flag for null, then
+// the scene.
+void put(Writer& w, const std::shared_ptr<const Scene>& v);
+void get(Reader& r, std::shared_ptr<const Scene>& v);
+void put(Writer& w, const std::shared_ptr<const PreparedScene>& v);
+void get(Reader& r, std::shared_ptr<const PreparedScene>& v);
 // Every field but the OpenImageIO texture system, which the worker makes anew from the texture
 // table (worker_serve.cpp). wire_types.cpp checks the size: a new field must be added here.
 RT_WIRE_FIELDS(Scene, v.source, v.camera, v.image, v.mode, v.background, v.ambient_light,

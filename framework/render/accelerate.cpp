@@ -11,12 +11,15 @@ namespace rt {
 AccelerationReport build_acceleration(PreparedScene& scene, const BvhBuildOptions& options) {
     AccelerationReport report;
     scene.bvh = Bvh{};
-    // Instanced objects: copies of this prepared scene's own (copies of a scene share them), each
-    // with the student's tree when this scene has one: the bottom level of two.
-    for (std::shared_ptr<PreparedScene>& object : scene.objects) {
-        object = std::make_shared<PreparedScene>(static_cast<const Scene&>(*object));
+    // Instanced objects, prepared: each with the student's tree when this scene has one, the
+    // bottom level of two.
+    scene.prepared_objects.clear();
+    for (const std::shared_ptr<const Scene>& description : scene.objects) {
+        auto object = std::make_shared<PreparedScene>();
+        static_cast<Scene&>(*object) = *description;
         object->accelerator = scene.accelerator;
         build_acceleration(*object, options);
+        scene.prepared_objects.push_back(std::move(object));
     }
     if (scene.accelerator != Accelerator::Bvh) return report;
     report.requested = true;

@@ -12,13 +12,13 @@
 
 namespace rt {
 
-inline bool intersect_instance(const Scene& scene, std::size_t i, const Ray& ray, Interval t_range,
-                               Hit& hit);
+inline bool intersect_instance(const PreparedScene& scene, std::size_t i, const Ray& ray,
+                               Interval t_range, Hit& hit);
 
 // Given (framework): intersects the primitive with global id `id` by the stage 02 functions and,
 // on a hit, also fills hit.primitive and hit.material. An instance (Scene::instances) is its
 // object met by the ray mapped into the object (intersect_instance below).
-inline bool intersect_primitive(const Scene& scene, std::uint32_t id, const Ray& ray,
+inline bool intersect_primitive(const PreparedScene& scene, std::uint32_t id, const Ray& ray,
                                 Interval t_range, Hit& hit) {
     std::size_t i = 0;
     bool found = false;
@@ -82,12 +82,12 @@ inline bool nearest_hit(const PreparedScene& scene, const Ray& ray, Interval t_r
 // transpose, renormalised (it still faces the ray). hit.primitive is the instance's id; the
 // primitive of the object that was hit is hit.object_primitive. hit.uv is the object's (a
 // triangle's barycentrics).
-inline bool intersect_instance(const Scene& scene, std::size_t i, const Ray& ray, Interval t_range,
-                               Hit& hit) {
+inline bool intersect_instance(const PreparedScene& scene, std::size_t i, const Ray& ray,
+                               Interval t_range, Hit& hit) {
     const Instance& instance = scene.instances[i];
     Hit local;
-    if (!nearest_hit(*scene.objects[instance.object], object_ray(instance, ray), t_range, local))
-        return false;
+    const PreparedScene& object = *scene.prepared_objects[instance.object];
+    if (!nearest_hit(object, object_ray(instance, ray), t_range, local)) return false;
     hit = local;
     hit.point = ray.at(local.t);
     hit.normal = world_normal(instance, local.normal);

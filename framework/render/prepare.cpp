@@ -56,7 +56,7 @@ void load_texture_system(PreparedScene& scene) {
 PreparedScene prepare_scene(Scene description, const SceneOverrides& overrides,
                             const BvhBuildOptions& bvh_options, AccelerationReport* acceleration) {
     apply_overrides(description, overrides);
-    PreparedScene scene{std::move(description), {}, {}, {}};
+    PreparedScene scene{std::move(description), {}, {}, {}, {}};
     load_texture_system(scene);
     refresh_features(scene);
     const AccelerationReport report = build_acceleration(scene, bvh_options);

@@ -47,7 +47,7 @@ LocalHit local_hit(const PreparedScene& scene, std::size_t i, const Hit& hit,
                    const SurfacePoint& at) {
     LocalHit l;
     l.instance = &scene.instances[i];
-    l.object = scene.objects[l.instance->object].get();
+    l.object = scene.prepared_objects[l.instance->object].get();
     l.hit = hit;
     l.hit.primitive = hit.object_primitive;
     l.at = at;

@@ -8,7 +8,7 @@ Features scene_features(const Scene& scene) {
     f.planes = !scene.planes.empty();
     f.triangles = !scene.triangles.empty();
     f.boxes = !scene.boxes.empty();
-    for (const std::shared_ptr<PreparedScene>& object : scene.objects) {  // what instances show
+    for (const std::shared_ptr<const Scene>& object : scene.objects) {  // what instances show
         f.spheres |= !object->spheres.empty();
         f.triangles |= !object->triangles.empty();
         f.boxes |= !object->boxes.empty();
@@ -56,7 +56,7 @@ Features scene_features(const Scene& scene) {
                 m.velocity != Vec3(0) && scene.sampling.shutter_close > scene.sampling.shutter_open;
     };
     moves(scene);
-    for (const std::shared_ptr<PreparedScene>& object : scene.objects) moves(*object);
+    for (const std::shared_ptr<const Scene>& object : scene.objects) moves(*object);
     for (const Material& m : scene.materials) f.glossy |= m.fuzz > 0 && nonzero(m.reflective);
     f.ambient_occlusion = scene.sampling.indirect == IndirectLight::Occlusion && f.ambient;
     f.indirect_diffuse = scene.sampling.indirect == IndirectLight::Diffuse;

@@ -52,6 +52,10 @@ struct PreparedScene : Scene {
     Bvh bvh;            // stage 06's tree when accelerator == Bvh (build_acceleration)
     // The TextureSystem of TextureLookup::Oiio/OiioAniso (load_texture_system fills it).
     std::shared_ptr<const OiioTextures> oiio_textures;
+    // Scene::objects, each prepared (build_acceleration): with the stage 06 BVH when this scene
+    // has one, so the student's tree is the bottom level and this scene's tree, over the
+    // instances' boxes, the top level. Shared between copies of this prepared scene.
+    std::vector<std::shared_ptr<const PreparedScene>> prepared_objects;
 };
 
 // Step 3 of prepare_scene again, for a prepared scene whose settings or materials changed but not

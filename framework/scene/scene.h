@@ -219,13 +219,12 @@ struct Scene {
     // entries of texture_images, stored linear (8-bit files decoded from sRGB on loading).
     Environment environment;
     // Named objects and their instances (docs/scene-format.md#transforms-and-instances). Each
-    // object is a scene of its own (its surfaces only, in its own space; its materials index
-    // this scene's table), prepared once: with the stage 06 BVH when this scene has one, so the
-    // student's tree is the bottom level and this scene's tree, over the instances' boxes, the
-    // top level. Objects are shared between copies of a scene; prepare_scene gives each
-    // prepared scene objects of its own. Not on the GPU (gpu::pack_scene refuses instances).
+    // object is the description of a scene of its own (its surfaces only, in its own space; its
+    // materials index this scene's table), shared between copies of this scene. prepare_scene
+    // prepares each (PreparedScene::prepared_objects). Not on the GPU (gpu::pack_scene refuses
+    // instances).
     std::vector<Instance> instances;
-    std::vector<std::shared_ptr<PreparedScene>> objects;
+    std::vector<std::shared_ptr<const Scene>> objects;
     std::vector<std::string> object_names;  // parallel to `objects`; "" for a shape's own
 
     // Global primitive ids: the kind in the top 4 bits, the index in its array below, so adding

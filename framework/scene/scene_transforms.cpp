@@ -157,10 +157,8 @@ void SceneSections::add_shape_instance(Scene shape, const glm::dmat4& m,
                    "inside an object, a sphere takes only moves, turns and uniform scales, and a "
                    "box only moves, scales and quarter turns (instances are one level deep)",
                    "put this transform on the object's instances instead");
-    auto object = std::make_shared<PreparedScene>();
-    static_cast<Scene&>(*object) = std::move(shape);
-    object->source = scene_.source;
-    scene_.objects.push_back(std::move(object));
+    shape.source = scene_.source;
+    scene_.objects.push_back(std::make_shared<const Scene>(std::move(shape)));
     scene_.object_names.emplace_back();
     scene_.instances.push_back(make_instance(m, scene_.objects.size() - 1, -1));
 }
@@ -291,10 +289,8 @@ void SceneSections::read_objects(const json& root) {
         pad_shading_data();
         reading_object_.reset();
         swap_geometry(scene_, object);
-        auto prepared = std::make_shared<PreparedScene>();
-        static_cast<Scene&>(*prepared) = std::move(object);
-        prepared->source = scene_.source;
-        scene_.objects.push_back(std::move(prepared));
+        object.source = scene_.source;
+        scene_.objects.push_back(std::make_shared<const Scene>(std::move(object)));
         scene_.object_names.push_back(name);
     }
 }

@@ -59,7 +59,7 @@ inline Vec3 world_normal(const Instance& instance, const Vec3& n) {
 // hit as the object's own (its primitive hit.object_primitive, its normal mapped back, the same
 // t, uv and front_face). `object` is null when `hit` is not on an instance.
 struct ObjectView {
-    const PreparedScene* object = nullptr;
+    const Scene* object = nullptr;
     const Instance* instance = nullptr;
     Ray ray;
     Hit hit;

@@ -38,7 +38,7 @@ BenchMesh load_bench_mesh(const BvhBenchConfig& config) {
     s.source = m.description;
     s.materials.push_back(Material{});
     // The benchmark builds its trees itself (bvh_backends.cpp), so no prepare_scene here.
-    m.scene = PreparedScene{std::move(s), {}, {}, {}};
+    m.scene = PreparedScene{std::move(s), {}, {}, {}, {}};
     refresh_features(m.scene);
     return m;
 }

@@ -183,8 +183,8 @@ TEST(Instance, DemoSceneSameWithAndWithoutBvh) {
     bvh.accelerator = Accelerator::Bvh;
     const PreparedScene a = prepare_scene(scene, none), b = prepare_scene(scene, bvh);
     ASSERT_TRUE(uses_bvh(b));
-    ASSERT_TRUE(uses_bvh(*b.objects[0])) << "the student's tree is the bottom level";
-    EXPECT_FALSE(uses_bvh(*a.objects[0]));
+    ASSERT_TRUE(uses_bvh(*b.prepared_objects[0])) << "the student's tree is the bottom level";
+    EXPECT_FALSE(uses_bvh(*a.prepared_objects[0]));
     int instance_hits = 0;
     for (int i = 0; i < 40; ++i)
         for (int j = 0; j < 30; ++j) {
