@@ -7,11 +7,7 @@
 #   cmake -DRT=<rt> -DSOURCE=<tree> -DOUT=<dir> -P check_web_compile_error.cmake
 cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/find_web_browser.cmake)
-if(WEB_SKIPPED)
-  message("${WEB_SKIPPED}")
-  return()
-endif()
-file(REMOVE_RECURSE ${OUT})
+web_check_start()
 file(COPY ${SOURCE}/stages/09-gpu/ DESTINATION ${OUT}/student)
 
 # The first line of shade.glsl that returns, misspelt.

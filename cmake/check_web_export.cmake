@@ -22,12 +22,7 @@ set(KNOWN_REFUSALS "10-sampling/fog;11-path-tracing/instance_field")
 set(WIDER_SCENES "textured_whitted=1.0")
 
 include(${CMAKE_CURRENT_LIST_DIR}/find_web_browser.cmake)
-if(WEB_SKIPPED)
-  message("${WEB_SKIPPED}")
-  return()
-endif()
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT}/pages ${OUT}/frames)
+web_check_start(${OUT}/pages ${OUT}/frames)
 
 # Export and render on the CPU every scene; a refusal is one line naming the scene.
 file(GLOB scenes ${SOURCE}/stages/${STAGES}-*/scenes/*.json)

@@ -33,12 +33,7 @@ set(CASES
   "08-environment/scenes/sky.json|environment|--off environment")
 
 include(${CMAKE_CURRENT_LIST_DIR}/find_web_browser.cmake)
-if(WEB_SKIPPED)
-  message("${WEB_SKIPPED}")
-  return()
-endif()
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT}/pages ${OUT}/frames)
+web_check_start(${OUT}/pages ${OUT}/frames)
 
 function(run_rt what)
   execute_process(COMMAND ${RT} ${ARGN} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)

@@ -21,3 +21,18 @@ macro(render_pages)
     return()
   endif()
 endmacro()
+
+# web_check_start(FOLDERS...): a web check's first step after including this file. Without a
+# browser it prints the one line and ends the calling script; otherwise OUT starts empty, with
+# FOLDERS made.
+macro(web_check_start)
+  if(WEB_SKIPPED)
+    message("${WEB_SKIPPED}")
+    return()
+  endif()
+  file(REMOVE_RECURSE ${OUT})
+  set(web_check_folders ${ARGN})
+  if(web_check_folders)
+    file(MAKE_DIRECTORY ${web_check_folders})
+  endif()
+endmacro()
