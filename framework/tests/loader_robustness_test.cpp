@@ -8,10 +8,11 @@
 #include <random>
 #include <string>
 
+#include "mutate.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
-#include "temp_dir.h"
 #include "testing/scene_text.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 
 #include "core/source_dir.h"
 #include "course/manifest.h"
-#include "temp_dir.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -16,7 +16,7 @@
 #include "scene/obj_loader.h"
 #include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
-#include "temp_dir.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

@@ -11,8 +11,8 @@
 #include "core/source_dir.h"
 #include "geometry/procedural_mesh.h"
 #include "scene/scene_loader.h"
-#include "temp_dir.h"
 #include "testing/scene_text.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

@@ -16,8 +16,8 @@
 #include "scene/obj_loader.h"
 #include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
-#include "temp_dir.h"
 #include "testing/scene_text.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

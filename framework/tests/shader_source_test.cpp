@@ -6,7 +6,7 @@
 
 #include "gpu/gl/shader_source.h"
 #include "gpu/shader_constants.h"
-#include "temp_dir.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

@@ -11,7 +11,7 @@
 #include "image/image.h"
 #include "scene/prepared_scene.h"
 #include "scene/scene_loader.h"
-#include "temp_dir.h"
+#include "testing/temp_dir.h"
 
 namespace rt {
 namespace {

@@ -10,8 +10,8 @@
 #include "scene/prepared_scene.h"
 #include "scene/scene_format.h"
 #include "scene/transform.h"
-#include "temp_dir.h"
 #include "testing/scene_text.h"
+#include "testing/temp_dir.h"
 
 namespace rt {
 namespace {

@@ -23,7 +23,7 @@
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "testing/stage_test.h"
-#include "tests/temp_dir.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 

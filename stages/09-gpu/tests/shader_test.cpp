@@ -97,7 +97,7 @@ TEST(GpuShader, MissingIncludeIsOneLine) {
 // to check here (the course tree checked the released ones), and the test says so and skips.
 TEST(GpuShader, StubsCompileAndAreReportedOnce) {
     StudentCopy copy("stubs");
-    for (const char* f : kStudentFiles)
+    for (const std::string& f : student_files())
         write(copy.dir() / f, strip_solutions(read(copy.dir() / f)));
     if (read(copy.dir() / "camera.glsl").find("RT_NOT_IMPLEMENTED") == std::string::npos)
         RT_SKIP_IN_STARTER_TREE()
@@ -168,7 +168,7 @@ TEST(GpuShader, GlslangValidatorAcceptsEveryVariant) {
         "#define HAS_AREA_LIGHTS\n#define HAS_PATH_TRACING\n#define MAX_LIGHTS 1\n"
         "#define MAX_DEPTH 3\n#define MAX_AREA_LIGHTS 5\n#define HAS_DEBUG_PIXEL\n"};
     StudentCopy stubs("glslang");
-    for (const char* f : kStudentFiles)
+    for (const std::string& f : student_files())
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
     write(stubs.dir() / "sampling.glsl",
           strip_solutions(read(root / "stages/10-sampling/sampling.glsl")));
@@ -337,7 +337,7 @@ TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
     const std::string loop = "    while (top > 0) {\n";  // the nearest-hit query's
     const std::size_t at = text.find(loop);
     bool stubs = false;  // a live stub, not one commented between solution markers
-    for (const char* f : kStudentFiles) {
+    for (const std::string& f : student_files()) {
         std::istringstream lines(read(copy.dir() / f));
         for (std::string l; std::getline(lines, l);)
             stubs |= l.find("RT_NOT_IMPLEMENTED") != std::string::npos &&
@@ -419,7 +419,7 @@ TEST(GpuShader, ShadertoyExportOfStubsCompiles) {
         RT_SKIP_IN_STARTER_TREE()
             << "glslangValidator not installed (apt-get install glslang-tools)";
     StudentCopy stubs("shadertoy");
-    for (const char* f : kStudentFiles)
+    for (const std::string& f : student_files())
         write(stubs.dir() / f, strip_solutions(read(stubs.dir() / f)));
     const PreparedScene scene = small_scene("05-recursion/scenes/whitted.json");
     const std::string text =

@@ -2,49 +2,43 @@
 // release tool's stripping of it (shader_test.cpp, debug_pixel_test.cpp).
 #pragma once
 
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+#include <vector>
 
+#include "core/text_file.h"
+#include "course/manifest.h"
 #include "release/release.h"
 #include "testing/stage_test.h"
+#include "testing/temp_dir.h"
 
 namespace rt::gpu_test {
 
-inline const char* const kStudentFiles[] = {"camera.glsl",     "intersect.glsl", "bvh.glsl",
-                                            "shade.glsl",      "recursion.glsl", "textures.glsl",
-                                            "environment.glsl"};
+// Stage 09's student files, as its stage.json lists them (the course manifest's one reader).
+inline std::vector<std::string> student_files() {
+    return read_stage_info(::rt::testing::source_dir() / "stages/09-gpu/stage.json").student_files;
+}
 
 inline std::string read(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return read_text(file);
 }
 
 inline void write(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
+    write_text(file, text);
 }
 
 // A fresh copy of stages/09-gpu's GLSL in a temporary folder.
 class StudentCopy {
   public:
-    explicit StudentCopy(const std::string& name)
-        : dir_(std::filesystem::temp_directory_path() /
-               ("rt-stage09-" + name + "-" + std::to_string(getpid()))) {
-        std::filesystem::remove_all(dir_);
-        std::filesystem::create_directories(dir_);
-        for (const char* f : kStudentFiles)
-            std::filesystem::copy_file(::rt::testing::source_dir() / "stages/09-gpu" / f, dir_ / f);
+    explicit StudentCopy(const std::string& name) : folder_("stage09-" + name) {
+        for (const std::string& f : student_files())
+            std::filesystem::copy_file(::rt::testing::source_dir() / "stages/09-gpu" / f,
+                                       dir() / f);
     }
-    ~StudentCopy() { std::filesystem::remove_all(dir_); }
-    const std::filesystem::path& dir() const { return dir_; }
+    const std::filesystem::path& dir() const { return folder_.path(); }
 
   private:
-    std::filesystem::path dir_;
+    ::rt::testing::TempDir folder_;
 };
 
 // The release tool's own stripping (grader/release/markers.cpp): solutions out, stubs un-commented.

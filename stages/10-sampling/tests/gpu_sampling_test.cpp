@@ -16,12 +16,10 @@
 // block difference 8), as the CPU against itself with another seed does; the README's biased
 // estimators move whole regions: BiasedVariantFails below fails 10 % of the image by up to 15.
 
-#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <string>
 #include <vector>
@@ -35,6 +33,7 @@
 #include "scene/scene_loader.h"
 #include "testing/gpu_sampled_runs.h"
 #include "testing/stage_test.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -116,10 +115,8 @@ TEST_F(GpuSampledRuns, BiasedVariantFails) {
     const CompareResult fair = gpu_against_cpu(scene);
     ASSERT_TRUE(fair.passed) << "the unchanged sampling.glsl: " << fair.summary();
 
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage10-biased-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const testing::TempDir folder("stage10-biased");
+    const fs::path& dir = folder.path();
     std::string text = read_text(gpu_sampling_dir() / "sampling.glsl");
     const std::string head = "vec3 sample_cosine_hemisphere(vec2 u) {\n";
     const std::size_t begin = text.find(head);
@@ -130,11 +127,10 @@ TEST_F(GpuSampledRuns, BiasedVariantFails) {
                  head +
                      "    const float r = sqrt(max(0.0, 1.0 - u.x * u.x)), phi = 2.0 * kPi * u.y;\n"
                      "    return vec3(r * cos(phi), r * sin(phi), u.x);\n}\n");
-    std::ofstream(dir / "sampling.glsl", std::ios::binary) << text;
+    folder.write("sampling.glsl", text);
     GpuRenderOptions biased;
     biased.sampling_dir = dir;
     const CompareResult r = gpu_against_cpu(scene, biased);
-    fs::remove_all(dir);
     std::printf("biased ambient_occlusion: %s\n", r.summary().c_str());
     EXPECT_FALSE(r.passed) << "uniform directions with the cosine pdf passed: " << r.summary();
 }

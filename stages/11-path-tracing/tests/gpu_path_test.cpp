@@ -12,11 +12,9 @@
 // seeds does (0.889, 0.667). The GPU against a CPU render at the same samples is not a test: two
 // noisy images fail 2.2 % of cornell_box even when both are the CPU with two seeds.
 
-#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/text_file.h"
@@ -26,6 +24,7 @@
 #include "scene/scene_loader.h"
 #include "testing/gpu_sampled_runs.h"
 #include "testing/stage_test.h"
+#include "testing/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -89,21 +88,18 @@ TEST_F(GpuPathRuns, BiasedVariantFails) {
     const CompareResult fair = gpu_against_reference("cornell_box");
     ASSERT_TRUE(fair.passed) << "the unchanged path.glsl: " << fair.summary();
 
-    const fs::path dir =
-        fs::temp_directory_path() / ("rt-stage11-biased-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const testing::TempDir folder("stage11-biased");
+    const fs::path& dir = folder.path();
     fs::copy_file(gpu_path_dir() / "bsdf.glsl", dir / "bsdf.glsl");
     std::string text = read_text(gpu_path_dir() / "path.glsl");
     const std::string division = "throughput /= q;";
     const std::size_t at = text.find(division);
     ASSERT_NE(at, std::string::npos) << "path.glsl has no " << division;
     text.erase(at, division.size());
-    std::ofstream(dir / "path.glsl", std::ios::binary) << text;
+    folder.write("path.glsl", text);
     GpuRenderOptions options;
     options.path_dir = dir;
     const CompareResult biased = gpu_against_reference("cornell_box", options);
-    fs::remove_all(dir);
     std::printf("roulette without the division: %s\n", biased.summary().c_str());
     EXPECT_FALSE(biased.passed) << "the metric must reject the biased path.glsl";
     EXPECT_GT(biased.failing_percent, 10.0) << biased.summary();
