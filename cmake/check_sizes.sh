@@ -17,11 +17,14 @@ files() {  # tracked files still present, or every file when this is not a git c
         git ls-files --cached --others --exclude-standard "$@" | while read -r f; do [[ -f "$f" ]] && echo "$f"; done
     else find . -type f \( -false $(printf -- '-o -path ./%s ' "$@") \) | sed 's|^\./||'; fi
 }
+# "LINES FILE" per line for every source file, counted once.
+line_counts="$(files '*.cpp' '*.h' '*.glsl' '*.comp' '*.sh' '*.cmake' '*.js' | grep -v '^build' |
+    xargs -r wc -l | grep -v ' total$' || true)"
 found=""  # "FILE NAME LINES" per line: what is over the limits now
 while read -r lines file; do
-    [[ "$file" == total ]] && continue
+    [[ -z "$file" ]] && continue
     (( lines > max_file )) && found+="$file (file) $lines"$'\n'
-done < <(files '*.cpp' '*.h' '*.glsl' '*.comp' '*.sh' '*.cmake' '*.js' | grep -v '^build' | xargs -r wc -l)
+done <<< "$line_counts"
 
 functions_over() {
     awk -v limit="$max_function" '
@@ -68,8 +71,8 @@ while read -r file name lines; do
     fi
 done <<< "$found"
 while read -r lines file; do
-    [[ "$file" == total ]] && continue
+    [[ -z "$file" ]] && continue
     (( lines * 100 >= max_file * 95 && lines <= max_file )) &&
         echo "note: $file is $lines lines, near the guide of $max_file: split it before it is full"
-done < <(files '*.cpp' '*.h' '*.glsl' '*.comp' '*.sh' '*.cmake' '*.js' | grep -v '^build' | xargs -r wc -l)
+done <<< "$line_counts"
 exit $status

@@ -1,7 +1,7 @@
 // rt export-shadertoy's entry point: the tracer (trace.glsl) as a Shadertoy fragment shader. The
-// command writes, before this file, the scene's #defines, its structs (scene_layout.glsl without
-// the storage buffers) and the whole scene as constants of the same names the compute shader
-// reads from its buffers and uniforms (framework/render/shadertoy_export.cpp).
+// command writes, before this file, the scene's #defines, its structs (scene_layout.glsl) and the
+// whole scene as constant arrays with their accessors, name_at(i) as every shader reads them
+// (scene_buffers.glsl), and the uniforms as constants (framework/render/gpu/shadertoy_export.cpp).
 
 ivec2 image_size;  // the canvas: mainImage sets it from Shadertoy's iResolution
 

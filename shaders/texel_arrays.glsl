@@ -2,8 +2,9 @@
 // texel fetches from buffer textures over the very storage buffers (one texture unit each, at the
 // storage buffer's binding: gpu_render.cpp's texel_views). This form is llvmpipe's: it loads a
 // storage buffer's word one invocation at a time but a texel for all eight lanes at once, which
-// measured 1.7x the BVH scene's rate (docs/performance.md, the GPU stage on llvmpipe). Every
-// texel is four words (RGBA32UI) but the BVH's primitive indices' (R32UI) and uvs' (RG32UI).
+// took the BVH mesh scene from 1.10 to 1.37-1.46 Mrays/s (rt-bench gpu, large_icosphere;
+// docs/performance-log.md, 2026-12-05). Every texel is four words (RGBA32UI) but the BVH's
+// primitive indices' (R32UI) and uvs' (RG32UI).
 #ifdef HAS_MOTION_BLUR
 // The spheres at time 0; spheres_at reads the invocation's moved copy (compute_io.glsl).
 layout(std430, binding = RT_BINDING_SPHERES) readonly buffer Spheres { Sphere spheres_at_rest[]; };

@@ -5,7 +5,7 @@
 // scene/texture.h's TextureWrap, TextureFilter, TextureKind; scene/environment.h's kinds.
 // kWrap*, kFilter*, kTexture* and kEnvironment* are the prelude's (framework/gpu/shader_constants.h).
 
-// One image of the texture table (scene/texture.h's TextureView): texels[first ...], row 0 at
+// One image of the texture table (scene/texture.h's TextureView): texels_at(first ...), row 0 at
 // the top; srgb: the stored values are sRGB-encoded (decode before filtering).
 struct TextureView {
     int first;

@@ -18,7 +18,8 @@
 
 namespace rt::gpu {
 
-// Storage-buffer bindings of the packed scene (the same numbers as in scene_layout.glsl).
+// Storage-buffer bindings of the packed scene (scene_buffers.glsl and texel_arrays.glsl use them
+// through the prelude's RT_BINDING_* names).
 enum Binding : int {
     kSpheres = 0,
     kPlanes = 1,

@@ -37,6 +37,12 @@ void check_decoded(Reader& r, RayNode& v) {
     if (int(v.kind) < 0 || int(v.kind) > int(RayNode::Kind::Refraction)) r.fail();
 }
 
+// Every instance places an object the scene has.
+void check_decoded(Reader& r, Scene& v) {
+    for (const Instance& instance : v.instances)
+        if (instance.object >= v.objects.size()) r.fail();
+}
+
 // A render's options without its cancel flag (nothing in a test cancels across processes).
 void put(Writer& w, const RenderOptions& v) {
     put(w, v.threads);
@@ -111,6 +117,8 @@ void get(Reader& r, PreparedScene& v) {
     get(r, v.features);
     get(r, v.bvh);
     get(r, v.prepared_objects);
+    // nearest_hit looks an instance's object up in prepared_objects.
+    if (!v.instances.empty() && v.prepared_objects.size() != v.objects.size()) r.fail();
 }
 
 namespace {
@@ -121,16 +129,25 @@ void put_shared(Writer& w, const std::shared_ptr<const S>& v) {
     if (v) put(w, *v);
 }
 
+// How deep the object being decoded is. An object holds surfaces only (instances are one level
+// deep), so an object inside an object is refused: a sender cannot make the decoder recurse
+// without bound. A null object is refused too (nothing ever sends one).
+thread_local int g_object_depth = 0;
+
 template <class S>
 void get_shared(Reader& r, std::shared_ptr<const S>& v) {
     bool present = false;
     get(r, present);
     v.reset();
-    if (present) {
-        auto decoded = std::make_shared<S>();
-        get(r, *decoded);
-        v = std::move(decoded);
+    if (!present || g_object_depth > 0) {
+        r.fail();
+        return;
     }
+    ++g_object_depth;
+    auto decoded = std::make_shared<S>();
+    get(r, *decoded);
+    --g_object_depth;
+    v = std::move(decoded);
 }
 
 }  // namespace

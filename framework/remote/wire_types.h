@@ -108,6 +108,7 @@ void check_decoded(Reader&, T&) {}
 void check_decoded(Reader& r, Image& v);
 void check_decoded(Reader& r, Image8& v);
 void check_decoded(Reader& r, RayNode& v);
+void check_decoded(Reader& r, Scene& v);
 
 template <Fielded T>
 void put(Writer& w, const T& v) {

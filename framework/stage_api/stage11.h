@@ -76,7 +76,7 @@ Real power_heuristic(Real pdf_f, Real pdf_g);
 
 // Next-event estimation at `at`: one area light chosen uniformly (light floor(u_light * N) of
 // the scene's N), one point on it by stage 10's sample_rectangle / sample_sphere, a shadow ray
-// (nearest_hit, stage 06; area lights never block it) and the one-sample estimate
+// (nearest_hit, render/nearest_hit.h; area lights never block it) and the one-sample estimate
 // f(wo, wi) L |wi.z| / p_light times the power heuristic of p_light against bsdf_pdf, where
 // p_light = that point's solid-angle pdf / N. `frame`: the local shading frame (z outward);
 // wo local. 0 without area lights, for the back of a rectangle, or a delta material.

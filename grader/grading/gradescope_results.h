@@ -16,8 +16,8 @@ struct GradescopeTest {
     double score = 0, max_score = 0;
     std::string output;
     std::vector<std::string> tags;
-    std::string
-        visibility;  // "visible", "hidden", "after_due_date", "after_published"; "": left out
+    // "visible", "hidden", "after_due_date" or "after_published"; "": left out.
+    std::string visibility;
 };
 
 // One column of Gradescope's leaderboard ("order": "asc" when lower is better).
@@ -33,8 +33,9 @@ struct GradescopeResults {
     std::string output;         // shown above the tests; the build log stays hidden
     std::vector<GradescopeTest> tests;
     std::vector<LeaderboardEntry> leaderboard;  // empty: no "leaderboard"
-    // A submission the rate limit refused: when the next graded one is possible (ISO 8601, UTC);
-    // written as extra_data.rate_limited and next_graded_at. "": graded.
+    // A submission the rate limit refused: when the next graded one is possible, as rate_limit.cpp
+    // writes it ("2026-12-05 08:00 UTC"); written as extra_data.rate_limited and next_graded_at.
+    // "": graded.
     std::string next_graded_at;
 };
 

@@ -127,15 +127,20 @@ std::optional<std::string> rate_limited_results(const fs::path& metadata_file,
         graded[graded.size() - std::size_t(limit.max_graded)].time + limit.window.count();
     const Graded& latest = graded.back();
     GradescopeResults out;
+    out.score = latest.score;
+    out.output = refusal(graded, now, next, limit);
     std::string why;
     if (latest.results) {  // its tests and leaderboard, when Gradescope kept its results
         if (const auto earlier = read_results_json(latest.results->dump(), why)) {
             out.tests = earlier->tests;
             out.leaderboard = earlier->leaderboard;
+        } else {
+            out.output +=
+                "(Its tests cannot be shown: Gradescope's copy of its results is "
+                "unreadable: " +
+                why + ".)\n";
         }
     }
-    out.score = latest.score;
-    out.output = refusal(graded, now, next, limit);
     out.next_graded_at = utc_text(next);
     return results_json_text(out);
 }

@@ -1,7 +1,5 @@
 #include "grading/report.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +7,6 @@
 #include "util.h"
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 namespace rt::grader {
 namespace {

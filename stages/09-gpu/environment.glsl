@@ -1,6 +1,6 @@
 // Stage 09, environment maps: stage 08 (stages/08-environment/environment.cpp) in GLSL.
 // Handout: stages/09-gpu/README.md#environment-maps. Conventions:
-// docs/conventions.md#environment-maps. The environment is environment_at(0) (scene_layout.glsl);
+// docs/conventions.md#environment-maps. The environment is environment_at(0) (scene_buffers.glsl);
 // the image lookup is your sample_bilinear (textures.glsl). Compiled only for scenes with an
 // environment (HAS_ENVIRONMENT); the framework's background() calls environment_radiance.
 

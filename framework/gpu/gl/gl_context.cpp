@@ -46,7 +46,7 @@ std::string GlContext::finish(GlProcLoader loader, std::string platform) {
         return std::string(to_string(kind_)) + ": only " +
                std::to_string(limits_.compute_storage_blocks) +
                " storage buffers in a compute shader; the scene needs 16 "
-               "(shaders/scene_layout.glsl)";
+               "(shaders/scene_buffers.glsl)";
     return "";
 }
 

@@ -90,18 +90,25 @@ std::string array_accessors(const std::string& type, const std::string& name) {
            "_at(uint i) { return " + name + "[i]; }\n";
 }
 
+// How an array is declared: `writable` leaves `const` out (the web page's term switches change
+// the materials and the environment); `accessors` adds name_at(i) (all but the moving spheres'
+// rest positions, which shadertoy.glsl copies into the moved spheres the accessors read).
+struct ArrayForm {
+    bool writable = false;
+    bool accessors = true;
+};
+
 // `const T name[N] = T[N](...)`, one element a line, and its accessors. GLSL has no empty
 // arrays: an empty one gets `dummy` (the counts keep the shader from reading it).
-// `writable` leaves `const` out (the web page's term switches change materials and environment).
 template <typename T, typename F>
 std::string const_array(const char* type, const char* name, const std::vector<T>& items, F format,
-                        const std::string& dummy, bool writable = false) {
+                        const std::string& dummy, ArrayForm form = {}) {
     const std::size_t n = std::max<std::size_t>(1, items.size());
-    std::string s = (writable ? "" : "const ") + std::string(type) + " " + name + "[" +
+    std::string s = (form.writable ? "" : "const ") + std::string(type) + " " + name + "[" +
                     std::to_string(n) + "] = " + type + "[" + std::to_string(n) + "](\n";
     for (std::size_t i = 0; i < n; ++i)
         s += "    " + (items.empty() ? dummy : format(items[i])) + (i + 1 < n ? ",\n" : ");\n");
-    if (std::string(name) != "spheres_at_rest") s += array_accessors(type, name);
+    if (form.accessors) s += array_accessors(type, name);
     return s;
 }
 
@@ -147,20 +154,19 @@ std::string uniform_constants(const PreparedScene& scene, RenderMode mode, bool 
 
 // `const_array`'s text, or nothing for an array the page reads from a data texture.
 template <typename F>
-std::string unless_data(bool data_textures, const char* name, F text) {
-    return data_textures && is_web_data_array(name) ? "" : text();
+std::string unless_data(bool page, const char* name, F text) {
+    return page && is_web_data_array(name) ? "" : text();
 }
 
 // The geometry arrays: spheres, triangles and their vertices.
-std::string geometry_constants(const gpu::GpuScene& g, bool data, bool moving) {
+std::string geometry_constants(const gpu::GpuScene& g, bool page, bool moving) {
     std::string s;
-    s += const_array(
-        "Sphere", moving ? "spheres_at_rest" : "spheres", g.spheres,
-        [](const gpu::GpuSphere& x) {
-            return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
-        },
-        "Sphere(" + kZero4 + ", " + kZeroInt4 + ")");
-    s += unless_data(data, "triangles", [&] {
+    s += const_array("Sphere", moving ? "spheres_at_rest" : "spheres", g.spheres,
+                     [](const gpu::GpuSphere& x) {
+                         return "Sphere(" + v4(x.center_radius) + ", " + iv4(x.material) + ")";
+                     },
+                     "Sphere(" + kZero4 + ", " + kZeroInt4 + ")", {.accessors = !moving});
+    s += unless_data(page, "triangles", [&] {
         return const_array(
             "Triangle", "triangles", g.triangles,
             [](const gpu::GpuTriangle& x) {
@@ -168,12 +174,12 @@ std::string geometry_constants(const gpu::GpuScene& g, bool data, bool moving) {
             },
             "Triangle(uvec4(0u))");
     });
-    s += unless_data(data, "positions", [&] {
+    s += unless_data(page, "positions", [&] {
         return const_array("vec4", "positions", g.positions, vec4_item, kZero4);
     });
-    s += unless_data(data, "normals",
+    s += unless_data(page, "normals",
                      [&] { return const_array("vec4", "normals", g.normals, vec4_item, kZero4); });
-    s += unless_data(data, "uvs", [&] {
+    s += unless_data(page, "uvs", [&] {
         return const_array(
             "vec2", "uvs", g.uvs, [](const glm::vec2& x) { return vec("vec2", x, 2); },
             "vec2(0.0)");
@@ -182,23 +188,23 @@ std::string geometry_constants(const gpu::GpuScene& g, bool data, bool moving) {
 }
 
 // Materials, the BVH, textures and the environment.
-std::string material_constants(const gpu::GpuScene& g, bool data) {
+std::string material_constants(const gpu::GpuScene& g, bool page) {
     std::string s;
-    s += const_array(
-        "Material", "materials", g.materials,
-        [](const gpu::GpuMaterial& m) {
-            std::string t = "Material(" + v4(m.ambient) + ", " + v4(m.diffuse) + ", " +
-                            v4(m.specular_shininess) + ", " + v4(m.emissive) + ", " +
-                            v4(m.reflective) + ", " + v4(m.transmissive_ior) + ", " + iv4(m.maps) +
-                            ", vec4[4](";
-            for (int i = 0; i < 4; ++i) t += v4(m.map_transform[i]) + (i < 3 ? ", " : "))");
-            return t;
-        },
-        "Material(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 +
-            ", " + kZero4 + ", " + kZeroInt4 + ", vec4[4](" + kZero4 + ", " + kZero4 + ", " +
-            kZero4 + ", " + kZero4 + "))",
-        data);
-    s += unless_data(data, "bvh_nodes", [&] {
+    s += const_array("Material", "materials", g.materials,
+                     [](const gpu::GpuMaterial& m) {
+                         std::string t = "Material(" + v4(m.ambient) + ", " + v4(m.diffuse) + ", " +
+                                         v4(m.specular_shininess) + ", " + v4(m.emissive) + ", " +
+                                         v4(m.reflective) + ", " + v4(m.transmissive_ior) + ", " +
+                                         iv4(m.maps) + ", vec4[4](";
+                         for (int i = 0; i < 4; ++i)
+                             t += v4(m.map_transform[i]) + (i < 3 ? ", " : "))");
+                         return t;
+                     },
+                     "Material(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " +
+                         kZero4 + ", " + kZero4 + ", " + kZeroInt4 + ", vec4[4](" + kZero4 + ", " +
+                         kZero4 + ", " + kZero4 + ", " + kZero4 + "))",
+                     {.writable = page});
+    s += unless_data(page, "bvh_nodes", [&] {
         return const_array(
             "BvhNode", "bvh_nodes", g.bvh_nodes,
             [](const BvhNode& n) {
@@ -207,7 +213,7 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
             },
             "BvhNode(vec3(0.0), 0u, vec3(0.0), 0u)");
     });
-    s += unless_data(data, "bvh_primitives", [&] {
+    s += unless_data(page, "bvh_primitives", [&] {
         return const_array(
             "uint", "bvh_primitives", g.bvh_primitives, [](std::uint32_t x) { return literal(x); },
             "0u");
@@ -219,7 +225,7 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
                    v4(t.b_scale) + ")";
         },
         "Texture(" + kZeroInt4 + ", " + kZero4 + ", " + kZero4 + ")");
-    s += unless_data(data, "texture_images", [&] {
+    s += unless_data(page, "texture_images", [&] {
         return const_array(
             "TextureImage", "texture_images", g.texture_images,
             [](const gpu::GpuTextureImage& t) {
@@ -227,7 +233,7 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
             },
             "TextureImage(" + kZeroInt4 + ")");
     });
-    s += unless_data(data, "texels",
+    s += unless_data(page, "texels",
                      [&] { return const_array("vec4", "texels", g.texels, vec4_item, kZero4); });
     s += const_array(
         "Environment", "environment", g.environment,
@@ -236,7 +242,7 @@ std::string material_constants(const gpu::GpuScene& g, bool data) {
                    iv4(e.faces_pz_nz) + ", " + v4(e.intensity_rotate_y) + ")";
         },
         "Environment(" + kZeroInt4 + ", " + kZeroInt4 + ", " + kZeroInt4 + ", " + kZero4 + ")",
-        data);
+        {.writable = page});
 
     return s;
 }
@@ -267,17 +273,17 @@ std::string plane_box_light_constants(const gpu::GpuScene& g) {
 }
 
 std::string scene_constants(const PreparedScene& scene, RenderMode mode, const gpu::GpuScene& g,
-                            bool data) {
+                            bool page) {
     // Stage 10 (rt export-web only): the sampled scene's uniform block, which the page fills with
     // gpu::sampled_block's bytes, and the moving spheres' rest positions.
-    const bool sampled = data && mode == RenderMode::Shaded && scene.features.sampled();
+    const bool sampled = page && mode == RenderMode::Shaded && scene.features.sampled();
     const std::string block =
         "layout(std140) uniform SampledScene { Sampling sampling; AreaLight "
         "area_lights[MAX_AREA_LIGHTS]; MovingSphere moving_spheres[MAX_MOVING_SPHERES]; };\n";
-    return uniform_constants(scene, mode, data) +
-           geometry_constants(g, data, sampled && scene.features.motion_blur) +
-           material_constants(g, data) + plane_box_light_constants(g) +
-           (data ? web_data_accessors() : "") + (sampled ? block : "");
+    return uniform_constants(scene, mode, page) +
+           geometry_constants(g, page, sampled && scene.features.motion_blur) +
+           material_constants(g, page) + plane_box_light_constants(g) +
+           (page ? web_data_accessors() : "") + (sampled ? block : "");
 }
 
 // Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
@@ -314,7 +320,8 @@ void for_shadertoy(const AssembledShader& shader, std::string& out,
     }
 }
 
-// scene_layout.glsl's structs, without its storage buffers (the export's arrays are constants).
+// scene_layout.glsl's structs (the storage buffers are scene_buffers.glsl's; the export's arrays
+// are constants with their accessors).
 std::string scene_structs() {
     const fs::path file = source_dir() / "shaders/scene_layout.glsl";
     std::string text;
@@ -327,19 +334,19 @@ std::string scene_structs() {
     return out;
 }
 
-void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_textures) {
+void check_exportable(const PreparedScene& scene, RenderMode mode, bool page) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (!data_textures && (mode == RenderMode::Depth || mode == RenderMode::BvhVisits))
+    if (!page && (mode == RenderMode::Depth || mode == RenderMode::BvhVisits))
         throw GpuError(where + ": mode \"" + to_string(mode) +
                        "\" scales each pixel by the whole image's range, which one Shadertoy "
                        "pixel cannot know; export it with --mode normals or --mode shaded");
-    if (!data_textures && scene.texels.size() > kMaxShadertoyTexels)
+    if (!page && scene.texels.size() > kMaxShadertoyTexels)
         throw GpuError(where + ": its images hold " + std::to_string(scene.texels.size()) +
                        " texels; Shadertoy cannot load the scene's image files and an export "
                        "bakes at most " +
                        std::to_string(kMaxShadertoyTexels) +
                        " as constants: use a checker or marble texture, or a smaller image");
-    if (!data_textures && mode == RenderMode::Shaded && scene.features.sampled())
+    if (!page && mode == RenderMode::Shaded && scene.features.sampled())
         throw GpuError(
             where +
             ": stage 10 (several camera samples per pixel, accumulated over "
@@ -347,7 +354,7 @@ void check_exportable(const PreparedScene& scene, RenderMode mode, bool data_tex
     check_gpu_supported(scene, mode);
 }
 
-// What Shadertoy puts before the Image tab's code (its uniforms), and a main of our own.
+// What Shadertoy puts before the Image tab's code (its uniforms).
 const char* const kShadertoyHead =
     "#version 300 es\n"
     "precision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
@@ -356,21 +363,16 @@ const char* const kShadertoyHead =
     "uniform vec3 iChannelResolution[4];\nuniform vec4 iMouse;\nuniform vec4 iDate;\n"
     "uniform float iSampleRate;\nuniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\n"
     "uniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
-const char* const kShadertoyTail =
-    "\nout vec4 rt_frag_color;\n"
-    "void main() {\n"
-    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
-    "    // Not Shadertoy's: the stub this pixel reached, for the test to report.\n"
-    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
-    "}\n";
-// A web page's main: the term switches first (shaders/page_terms.glsl), then as above.
-const char* const kPageTail =
-    "\nout vec4 rt_frag_color;\n"
-    "void main() {\n"
-    "    rt_apply_terms();\n"
-    "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
-    "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
-    "}\n";
+// A main of our own after the export: calls mainImage, then writes the stub this pixel reached
+// as alpha (not Shadertoy's: for the test to report). A web page's applies the term switches
+// first (shaders/page_terms.glsl).
+std::string main_function(bool page) {
+    return std::string("\nout vec4 rt_frag_color;\nvoid main() {\n") +
+           (page ? "    rt_apply_terms();\n" : "") +
+           "    mainImage(rt_frag_color, gl_FragCoord.xy);\n"
+           "    rt_frag_color.a = rt_first_stub >= 0 ? float(rt_first_stub) / 255.0 : 1.0;\n"
+           "}\n";
+}
 
 }  // namespace
 
@@ -407,12 +409,12 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
 }
 
 std::string wrap_shadertoy_export(const ShadertoyExport& shader) {
-    if (!shader.web_page) return kShadertoyHead + shader.text + kShadertoyTail;
+    if (!shader.web_page) return kShadertoyHead + shader.text + main_function(false);
     const fs::path terms = source_dir() / "shaders/page_terms.glsl";
     std::string terms_text;
     if (!read_text_if(terms, terms_text))
         throw GpuError(display_path(terms) + ": cannot read the shader file");
-    return kShadertoyHead + shader.text + "\n" + terms_text + kPageTail;
+    return kShadertoyHead + shader.text + "\n" + terms_text + main_function(true);
 }
 
 long shadertoy_wrapper_head_lines() {

@@ -128,8 +128,8 @@ nlohmann::json data_textures(const std::vector<DataArray>& arrays) {
     return out;
 }
 
-// Stage 10: how the page accumulates camera samples (framework/render/gpu/web/page_samples.js), and the bytes
-// of the uniform block SampledScene (as rt render --gpu uploads them); null for other scenes.
+// Stage 10: how the page accumulates camera samples (render/gpu/web/page_samples.js), and the
+// bytes of the uniform block SampledScene (as rt render --gpu uploads them); null for other scenes.
 nlohmann::json sampled_settings(const PreparedScene& scene, RenderMode mode) {
     if (mode != RenderMode::Shaded || !scene.features.sampled()) return nullptr;
     const std::vector<unsigned char> block =

@@ -1,8 +1,9 @@
 // rt export-web (issue 29): one self-contained HTML page that renders the scene in WebGL2 with the
-// student's stage 09 GLSL. The fragment shader is the Shadertoy export (shadertoy_export.h) in its
-// GLSL ES 3.00 wrapper, with the baked camera turned into a uniform so the page can orbit; the
-// page's markup and script are framework/render/gpu/web/page.html and page.js, inlined with the shader, the
-// scene's camera and stubs as JSON, and the CPU render as a PNG data URL. Nothing is fetched.
+// student's stage 09 GLSL. The fragment shader is the Shadertoy export in its web page form
+// (shadertoy_export.h, ShadertoyOptions::web_page: the camera and the panel's settings are
+// uniforms, so the page can orbit); the page's markup and scripts (render/gpu/web/) are inlined
+// with the shader, the scene's camera and stubs as JSON, and the CPU render as a PNG data URL.
+// Nothing is fetched.
 //
 // On the "calls student code" side: the GLSL it embeds is the student's.
 #pragma once
