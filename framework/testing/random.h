@@ -2,7 +2,7 @@
 // by hand. std::mt19937_64's sequence is fixed by the standard, but the standard distributions
 // differ between library implementations; this mapping does not, so every machine sees the same
 // numbers. Used by the exact reference cases (testing/exact_*), the accuracy lab (tools/bench)
-// and the stage 06 tests.
+// and every stage test that draws random cases.
 #pragma once
 
 #include <cstdint>

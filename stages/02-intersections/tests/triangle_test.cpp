@@ -1,8 +1,8 @@
 // Ray-triangle (Cramer's rule) tests with closed-form answers. Shared edges, vertices, slivers,
 // far geometry and comparisons with exact arithmetic are in cgal_exact_test.cpp.
-#include <random>
 
 #include "test_helpers.h"
+#include "testing/random.h"
 
 namespace rt::stage02 {
 namespace {
@@ -57,18 +57,20 @@ TEST_F(Triangle, EdgesAndVerticesCount) {
 // Rays aimed at a random point of a random triangle hit it, and the barycentrics reproduce both
 // the aimed-at weights and the hit point: p = (1 - beta - gamma) a + beta b + gamma c.
 TEST_F(Triangle, BarycentricsReproduceThePoint) {
-    std::mt19937 rng(2);
-    std::uniform_real_distribution<Real> u(-1, 1), w(Real(0.05), Real(0.9));
+    testing::Random random(2);
     int hits = 0;
     for (int i = 0; i < 500; ++i) {
-        const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
-        Real beta0 = w(rng), gamma0 = w(rng);
+        const Vec3 a = random.vec(-1, 1);
+        const Vec3 b = random.vec(-1, 1);
+        const Vec3 c = random.vec(-1, 1);
+        Real beta0 = Real(random.uniform(0.05, 0.9));
+        Real gamma0 = Real(random.uniform(0.05, 0.9));
         if (beta0 + gamma0 > Real(0.95)) {
             beta0 *= Real(0.5);
             gamma0 *= Real(0.5);
         }
         const Vec3 target = (1 - beta0 - gamma0) * a + beta0 * b + gamma0 * c;
-        const Vec3 origin(u(rng), u(rng), 4);
+        const Vec3 origin(Real(random.uniform(-1, 1)), Real(random.uniform(-1, 1)), 4);
         const Ray aimed{origin, target - origin};
         SCOPED_TRACE(::testing::Message()
                      << "random triangle " << i << ": a " << text(a) << ", b " << text(b) << ", c "

@@ -1,7 +1,6 @@
 // Stage 03 tests with closed-form answers: light samples, the Blinn-Phong terms, their sum, and
 // a rendered pixel of one sphere lit by one light.
 #include <cmath>
-#include <random>
 #include <source_location>
 #include <sstream>
 #include <string>
@@ -10,6 +9,7 @@
 #include "render/shade.h"
 #include "stage_api/stage03.h"
 #include "testing/expect_near.h"
+#include "testing/random.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -124,9 +124,8 @@ TEST_F(BlinnPhong, HalfVectorBelowSurfaceGivesNoHighlight) {
 
 // Never negative, never NaN: random unit vectors, including L = -V (a zero half vector).
 TEST_F(BlinnPhong, NeverNegativeOrNaN) {
-    std::mt19937 rng(1234);
-    std::normal_distribution<float> g;
-    auto unit = [&] { return glm::normalize(Vec3(g(rng), g(rng), g(rng))); };
+    testing::Random random(1234);
+    auto unit = [&random] { return random.unit(); };
     const Material m = material(Color(0.8f, 0.5f, 0.2f), Color(0.5f), 16);
     for (int i = 0; i < 2000; ++i) {
         const Vec3 n = unit(), v = unit();

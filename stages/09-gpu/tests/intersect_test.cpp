@@ -6,12 +6,12 @@
 // flip: at most 0.5 % of the cases (the conformance test's allowance for pixels).
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "render/gpu/gpu_cases.h"
 #include "stage_api/stage02.h"
+#include "testing/random.h"
 #include "testing/stage_test.h"
 
 namespace rt {
@@ -31,13 +31,12 @@ struct RandomCase {
 
 // 512 rays a kind from random origins towards random points near the primitive (about half hit).
 std::vector<RandomCase> random_cases() {
-    std::mt19937_64 random(20260902);
-    std::uniform_real_distribution<float> box(-4, 4), near(-1.6f, 1.6f);
+    testing::Random random(20260902);
     std::vector<RandomCase> cases;
     for (int kind = 0; kind < 4; ++kind)
         for (int i = 0; i < 512; ++i) {
-            const Vec3 o(box(random), box(random), box(random));
-            const Vec3 target(near(random), near(random), near(random));
+            const Vec3 o = random.vec(-4, 4);
+            const Vec3 target = random.vec(-1.6, 1.6);
             cases.push_back({Ray(o, Vec3(glm::vec3(target - o))), kind});  // d as uploaded
         }
     return cases;
