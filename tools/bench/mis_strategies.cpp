@@ -1,11 +1,14 @@
-// Stage 11's light strategies against time: see mis_strategies.h. The path loop follows
-// path_radiance's contract (framework/stage_api/stage11.h) step for step and draws the same
-// random numbers, so that only the light weights differ between the strategies.
+// Stage 11's light strategies against time: see mis_strategies.h. MIS is stage 11's own
+// path_radiance; BSDF sampling alone is path_radiance too, on the scene with its sphere lights made
+// emissive spheres (it then samples no light and meets each at full weight); next-event estimation
+// alone is this file's loop, which follows path_radiance's contract step for step and draws the
+// same random numbers, so that only the light weights differ between the strategies.
 #include "bench/mis_strategies.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "bench/sampling_error.h"
 #include "core/parallel_for.h"
@@ -28,14 +31,6 @@ namespace {
 const AreaLight& pick_light(const PreparedScene& scene, Real u_light) {
     const std::size_t count = scene.area_lights.size();
     return scene.area_lights[std::min(count - 1, std::size_t(u_light * Real(count)))];
-}
-
-// The solid-angle density with which next-event estimation picks `direction` (one light of N).
-Real light_pdf(const PreparedScene& scene, const AreaLight& light, const Vec3& from,
-               const Vec3& direction) {
-    const Real pdf = light.kind == AreaLightKind::Rectangle ? rectangle_pdf(light, from, direction)
-                                                            : sphere_pdf(light, from, direction);
-    return pdf / Real(scene.area_lights.size());
 }
 
 // Next-event estimation at full weight: sample_light_mis's estimate without the power heuristic.
@@ -63,36 +58,72 @@ Color sample_light_alone(const PreparedScene& scene, const SurfacePoint& at, con
     return f * light.radiance * float(std::abs(wi.z) / p_light);
 }
 
-// The weight of a light that a BSDF bounce meets. A camera ray or a delta bounce (full_weight)
-// had no light sample to compete with, so every strategy counts it in full.
-Real bounce_light_weight(const PreparedScene& scene, LightStrategy strategy, bool full_weight,
-                         Real bounce_pdf, const AreaLight& light, const Ray& ray) {
-    if (full_weight || strategy == LightStrategy::Bsdf) return 1;
-    if (strategy == LightStrategy::Nee) return 0;
-    return power_heuristic(bounce_pdf,
-                           light_pdf(scene, light, ray.origin, glm::normalize(ray.direction)));
-}
-
-// What the light sample adds at a vertex: nothing for BSDF sampling alone (the random numbers
-// are drawn all the same, so that the strategies walk the same paths).
-Color light_sample(const PreparedScene& scene, LightStrategy strategy, const SurfacePoint& at,
-                   const Onb& frame, const Material& material, const Vec3& wo,
-                   SampleStream& stream) {
-    const Real u_light = stream.next();
-    const Vec2 u = stream.next2();
-    switch (strategy) {
-        case LightStrategy::Nee:
-            return sample_light_alone(scene, at, frame, material, wo, u_light, u);
-        case LightStrategy::Mis:
-            return sample_light_mis(scene, at, frame, material, wo, u_light, u);
-        case LightStrategy::Bsdf:
-            break;
+// The scene with each sphere light an emissive sphere, black but for its emission, and no area
+// lights: path_radiance then samples no light, and a bounce or camera ray that meets one counts its
+// emission in full, as a light found by BSDF sampling alone. (Veach's scene has sphere lights only.)
+PreparedScene lights_as_surfaces(const PreparedScene& scene) {
+    PreparedScene copy = scene;
+    for (const AreaLight& light : scene.area_lights) {
+        if (light.kind != AreaLightKind::Sphere)
+            throw std::runtime_error("the MIS lab makes sphere lights into spheres only");
+        Material glow;
+        glow.diffuse = Color(0);
+        glow.emissive = light.radiance;
+        copy.materials.push_back(glow);
+        copy.spheres.push_back({light.center, light.radius, int(copy.materials.size()) - 1});
     }
-    return Color(0);
+    copy.area_lights.clear();
+    refresh_features(copy);
+    return copy;
 }
 
-Image8 render_strategy(const PreparedScene& scene, LightStrategy strategy, int spp,
-                       std::uint64_t seed) {
+// Next-event estimation alone: path_radiance's loop with the light sample at full weight and a
+// light that a BSDF bounce meets counted only after the camera ray or a delta bounce, which had no
+// light sample to compete with.
+Color nee_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStream& stream) {
+    Color radiance(0), throughput(1);
+    Ray ray = camera_ray;
+    bool full_weight = true;
+    for (int depth = 0;; ++depth) {
+        Hit hit;
+        const bool found = nearest_hit(scene, ray, Interval{0, kInfinity}, hit);
+        const AreaLightHit light = nearest_area_light(scene, ray, Interval{0, hit.t});
+        if (light.light >= 0) {
+            if (full_weight) radiance += throughput * light.radiance;
+            break;
+        }
+        if (!found) {
+            radiance += throughput * scene.background;
+            break;
+        }
+        const SurfacePoint at = surface_point(scene, ray, hit);
+        const Material& material = scene.materials[std::size_t(hit.material)];
+        radiance += throughput * material.emissive;
+        if (depth >= scene.max_depth) break;
+        const Onb frame = onb_around(at.front_face ? at.normal : -at.normal);
+        const Vec3 wo = frame.to_local(-glm::normalize(ray.direction));
+        const Real u_light = stream.next();
+        const Vec2 u = stream.next2();
+        radiance += throughput * sample_light_alone(scene, at, frame, material, wo, u_light, u);
+        const Real u_lobe = stream.next();
+        const BsdfSample s = sample_bsdf(material, wo, u_lobe, stream.next2());
+        if (s.weight == Color(0)) break;
+        throughput *= s.weight;
+        full_weight = s.delta;
+        const Vec3 direction = frame.to_world(s.wi);
+        ray = spawn_ray(at, glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal, direction);
+        if (depth >= 3) {
+            const Real q =
+                std::min(Real(0.95), Real(std::max({throughput.r, throughput.g, throughput.b})));
+            if (stream.next() >= q) break;
+            throughput /= float(q);
+        }
+    }
+    return radiance;
+}
+
+Image8 render_strategy(const StrategyRenderer& renderer, int spp, std::uint64_t seed) {
+    const PreparedScene& scene = renderer.scene;
     const int width = scene.image.width, height = scene.image.height;
     Image image(width, height);
     parallel_for(std::size_t(height), resolve_thread_count(0), [&](std::size_t row) {
@@ -106,7 +137,7 @@ Image8 render_strategy(const PreparedScene& scene, LightStrategy strategy, int s
                 const Ray ray = camera_ray(scene.camera,
                                            Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)) + offset,
                                            scene.image);
-                sum += strategy_radiance(scene, ray, stream, strategy);
+                sum += renderer.radiance(ray, stream);
             }
             image.at(x, y) = sum / float(spp);
         }
@@ -128,49 +159,13 @@ const char* strategy_name(LightStrategy strategy) {
     return "?";
 }
 
-Color strategy_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStream& stream,
-                        LightStrategy strategy) {
-    Color radiance(0), throughput(1);
-    Ray ray = camera_ray;
-    bool full_weight = true;
-    Real bounce_pdf = 0;
-    for (int depth = 0;; ++depth) {
-        Hit hit;
-        const bool found = nearest_hit(scene, ray, Interval{0, kInfinity}, hit);
-        const AreaLightHit light = nearest_area_light(scene, ray, Interval{0, hit.t});
-        if (light.light >= 0) {
-            const AreaLight& l = scene.area_lights[std::size_t(light.light)];
-            const Real w = bounce_light_weight(scene, strategy, full_weight, bounce_pdf, l, ray);
-            radiance += throughput * light.radiance * float(w);
-            break;
-        }
-        if (!found) {
-            radiance += throughput * scene.background;
-            break;
-        }
-        const SurfacePoint at = surface_point(scene, ray, hit);
-        const Material& material = scene.materials[std::size_t(hit.material)];
-        radiance += throughput * material.emissive;
-        if (depth >= scene.max_depth) break;
-        const Onb frame = onb_around(at.front_face ? at.normal : -at.normal);
-        const Vec3 wo = frame.to_local(-glm::normalize(ray.direction));
-        radiance += throughput * light_sample(scene, strategy, at, frame, material, wo, stream);
-        const Real u_lobe = stream.next();
-        const BsdfSample s = sample_bsdf(material, wo, u_lobe, stream.next2());
-        if (s.weight == Color(0)) break;
-        throughput *= s.weight;
-        full_weight = s.delta;
-        bounce_pdf = s.pdf;
-        const Vec3 direction = frame.to_world(s.wi);
-        ray = spawn_ray(at, glm::dot(direction, at.normal) > 0 ? at.normal : -at.normal, direction);
-        if (depth >= 3) {
-            const Real q =
-                std::min(Real(0.95), Real(std::max({throughput.r, throughput.g, throughput.b})));
-            if (stream.next() >= q) break;
-            throughput /= float(q);
-        }
-    }
-    return radiance;
+StrategyRenderer::StrategyRenderer(const PreparedScene& original, LightStrategy strategy)
+    : scene(strategy == LightStrategy::Bsdf ? lights_as_surfaces(original) : original),
+      strategy(strategy) {}
+
+Color StrategyRenderer::radiance(const Ray& camera_ray, SampleStream& stream) const {
+    if (strategy == LightStrategy::Nee) return nee_radiance(scene, camera_ray, stream);
+    return path_radiance(scene, camera_ray, stream);
 }
 
 MisSeries measure_mis_strategies(const std::function<void(const std::string&)>& progress) {
@@ -185,12 +180,13 @@ MisSeries measure_mis_strategies(const std::function<void(const std::string&)>& 
     // The reference is the scene's seed at 2048 samples: another seed keeps the noise apart.
     const std::uint64_t seed = scene.sampling.seed + 1000;
     for (LightStrategy strategy : {LightStrategy::Nee, LightStrategy::Bsdf, LightStrategy::Mis}) {
+        const StrategyRenderer renderer(scene, strategy);
         for (int spp = 1; spp <= 256; spp *= 4) {
             MisPoint p;
             p.strategy = strategy_name(strategy);
             p.spp = spp;
             const auto start = std::chrono::steady_clock::now();
-            const Image8 image = render_strategy(scene, strategy, spp, seed);
+            const Image8 image = render_strategy(renderer, spp, seed);
             p.ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();

@@ -2,8 +2,9 @@
 // scene (stages/11-path-tracing/scenes/veach_mis.json) path traced with next-event estimation
 // alone, BSDF sampling alone and both combined by MIS, each at 1 to 256 samples per pixel, timed
 // and compared with the stage's reference image. The three differ only in how a light's
-// contribution is counted; every other step is the reference solution's (stage 11's bsdf.cpp and
-// stage 10's light sampling), so the curve measures the strategy and nothing else.
+// contribution is counted; every other step is the reference solution's (stage 11's path
+// tracer and bsdf.cpp, stage 10's light sampling), so the curve measures the strategy and nothing
+// else.
 #pragma once
 
 #include <functional>
@@ -12,10 +13,10 @@
 
 #include "core/ray.h"
 #include "core/real.h"
+#include "scene/prepared_scene.h"
 
 namespace rt {
-class SampleStream;    // core/sample_stream.h
-struct PreparedScene;  // scene/prepared_scene.h
+class SampleStream;  // core/sample_stream.h
 }  // namespace rt
 
 namespace rt::bench {
@@ -27,10 +28,16 @@ enum class LightStrategy {
 };
 const char* strategy_name(LightStrategy strategy);
 
-// One camera sample's radiance under `strategy`. With Mis it is path_radiance's, bit for bit
-// (Bench.Mis.MisIsThePathTracer checks it), so the lab's MIS line is the stage's own renderer.
-Color strategy_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStream& stream,
-                        LightStrategy strategy);
+// A scene rendered under one strategy. MIS is stage 11's path_radiance on the scene; BSDF sampling
+// alone is path_radiance on the scene with its sphere lights made emissive spheres; next-event
+// estimation alone is the lab's own loop (mis_strategies.cpp).
+struct StrategyRenderer {
+    StrategyRenderer(const PreparedScene& scene, LightStrategy strategy);
+    Color radiance(const Ray& camera_ray, SampleStream& stream) const;  // one camera sample
+
+    PreparedScene scene;  // as the strategy renders it
+    LightStrategy strategy;
+};
 
 struct MisPoint {
     std::string strategy;

@@ -399,10 +399,11 @@ void write_mis(std::ostream& m, const AccuracyResults& r, const std::string& svg
          "another seed than the reference's, against `"
       << s.reference
       << "` (2048 samples). *NEE*: next-event estimation only (a BSDF bounce that meets a light "
-         "adds nothing); *BSDF*: BSDF sampling only (no shadow rays); *MIS*: both, weighted by "
-         "the power heuristic, which is what stage 11's `path_radiance` computes "
-         "(`Bench.Mis.MisIsThePathTracer` checks that the lab's MIS is it, bit for bit). Every "
-         "other step, and every random number, is shared. RMSE in 8-bit sRGB units.\n\n"
+         "adds nothing; the lab's own loop); *BSDF*: BSDF sampling only, which is stage 11's "
+         "`path_radiance` on the scene with its sphere lights made emissive spheres (no light to "
+         "sample, each met at full weight); *MIS*: both, weighted by the power heuristic, which "
+         "is stage 11's `path_radiance` itself. Every other step, and every random number, is "
+         "shared. RMSE in 8-bit sRGB units.\n\n"
          "<!-- table:mis -->\n| strategy | spp | ms | RMSE |\n|---|--:|--:|--:|\n";
     for (const MisPoint& p : s.points)
         m << "| " << p.strategy << " | " << p.spp << " | " << fmt("%.1f", p.ms) << " | "
