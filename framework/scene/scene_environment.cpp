@@ -23,11 +23,15 @@ const SchemaElement kSky{"\"sky\"",
                           {"sun_radius_degrees"},
                           {"sun"},
                           {"resolution"}}};
-const SchemaElement kCubeFaces{
-    "\"cube\"",
-    "",
-    {"Environment"},
-    {{"px", true}, {"nx", true}, {"py", true}, {"ny", true}, {"pz", true}, {"nz", true}}};
+const SchemaElement kCubeFaces{"\"cube\"",
+                               "",
+                               {"Environment"},
+                               {{"px", kRequired},
+                                {"nx", kRequired},
+                                {"py", kRequired},
+                                {"ny", kRequired},
+                                {"pz", kRequired},
+                                {"nz", kRequired}}};
 }  // namespace rt::schema
 
 namespace rt::scene_internal {

@@ -13,7 +13,7 @@
 
 namespace rt::schema {
 const SchemaElement kHeightField{
-    "a height field", "", {"Height fields"}, {{"image", true}, {"height"}}};
+    "a height field", "", {"Height fields"}, {{"image", kRequired}, {"height"}}};
 }  // namespace rt::schema
 
 namespace rt::scene_internal {

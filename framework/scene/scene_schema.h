@@ -16,6 +16,7 @@ struct SchemaKey {
     const char* name;
     bool required = false;
 };
+inline constexpr bool kRequired = true;  // {"density", kRequired}: the element needs the key
 
 struct SchemaElement {
     const char* what;  // as messages name it: "\"camera\"", "a material", "a sphere"

@@ -33,26 +33,31 @@ const SchemaElement kCamera{"\"camera\"",
                              {"aperture"},
                              {"focus_distance"},
                              {"shutter"}}};
-const SchemaElement kFog{"\"fog\"", "", {"Fog"}, {{"density", true}, {"albedo"}, {"min"}, {"max"}}};
+const SchemaElement kFog{
+    "\"fog\"", "", {"Fog"}, {{"density", kRequired}, {"albedo"}, {"min"}, {"max"}}};
 const SchemaElement kPointLight{
     "a point light",
     "point",
     {"Lights"},
-    {{"type", true}, {"position", true}, {"intensity"}, {"attenuation"}}};
-const SchemaElement kDirectionalLight{"a directional light",
-                                      "directional",
-                                      {"Lights"},
-                                      {{"type", true}, {"direction", true}, {"intensity"}}};
-const SchemaElement kRectangleLight{
-    "a rectangle light",
-    "rectangle",
-    {"Lights", "Sampling"},
-    {{"type", true}, {"corner", true}, {"edge_u", true}, {"edge_v", true}, {"radiance"}}};
+    {{"type", kRequired}, {"position", kRequired}, {"intensity"}, {"attenuation"}}};
+const SchemaElement kDirectionalLight{
+    "a directional light",
+    "directional",
+    {"Lights"},
+    {{"type", kRequired}, {"direction", kRequired}, {"intensity"}}};
+const SchemaElement kRectangleLight{"a rectangle light",
+                                    "rectangle",
+                                    {"Lights", "Sampling"},
+                                    {{"type", kRequired},
+                                     {"corner", kRequired},
+                                     {"edge_u", kRequired},
+                                     {"edge_v", kRequired},
+                                     {"radiance"}}};
 const SchemaElement kSphereLight{
     "a sphere light",
     "sphere",
     {"Lights", "Sampling"},
-    {{"type", true}, {"center", true}, {"radius", true}, {"radiance"}}};
+    {{"type", kRequired}, {"center", kRequired}, {"radius", kRequired}, {"radiance"}}};
 }  // namespace rt::schema
 
 namespace rt::scene_internal {

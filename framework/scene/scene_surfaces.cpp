@@ -12,30 +12,34 @@ namespace rt::schema {
 const SchemaElement kSphere{"a sphere",
                             "sphere",
                             {"Surfaces", "Sampling"},
-                            {{"type", true},
-                             {"center", true},
-                             {"radius", true},
+                            {{"type", kRequired},
+                             {"center", kRequired},
+                             {"radius", kRequired},
                              {"velocity"},
                              {"transform"},
                              {"material"}}};
-const SchemaElement kPlane{
-    "a plane",
-    "plane",
+const SchemaElement kPlane{"a plane",
+                           "plane",
+                           {"Surfaces"},
+                           {{"type", kRequired},
+                            {"point", kRequired},
+                            {"normal", kRequired},
+                            {"transform"},
+                            {"material"}}};
+const SchemaElement kTriangle{
+    "a triangle",
+    "triangle",
     {"Surfaces"},
-    {{"type", true}, {"point", true}, {"normal", true}, {"transform"}, {"material"}}};
-const SchemaElement kTriangle{"a triangle",
-                              "triangle",
-                              {"Surfaces"},
-                              {{"type", true}, {"vertices", true}, {"transform"}, {"material"}}};
+    {{"type", kRequired}, {"vertices", kRequired}, {"transform"}, {"material"}}};
 const SchemaElement kBox{
     "a box",
     "box",
     {"Surfaces"},
-    {{"type", true}, {"min", true}, {"max", true}, {"transform"}, {"material"}}};
+    {{"type", kRequired}, {"min", kRequired}, {"max", kRequired}, {"transform"}, {"material"}}};
 const SchemaElement kMesh{"a mesh",
                           "mesh",
                           {"Surfaces"},
-                          {{"type", true},
+                          {{"type", kRequired},
                            {"file"},
                            {"procedural"},
                            {"heightfield"},
@@ -48,16 +52,17 @@ const SchemaElement kMesh{"a mesh",
 const SchemaElement kCheckerboard{"a checkerboard",
                                   "checkerboard",
                                   {"Surfaces"},
-                                  {{"type", true},
-                                   {"min", true},
-                                   {"max", true},
-                                   {"tiles", true},
+                                  {{"type", kRequired},
+                                   {"min", kRequired},
+                                   {"max", kRequired},
+                                   {"tiles", kRequired},
                                    {"transform"},
-                                   {"materials", true}}};
-const SchemaElement kInstance{"an instance",
-                              "instance",
-                              {"Surfaces", "Transforms and instances"},
-                              {{"type", true}, {"object", true}, {"transform"}, {"material"}}};
+                                   {"materials", kRequired}}};
+const SchemaElement kInstance{
+    "an instance",
+    "instance",
+    {"Surfaces", "Transforms and instances"},
+    {{"type", kRequired}, {"object", kRequired}, {"transform"}, {"material"}}};
 }  // namespace rt::schema
 
 namespace rt::scene_internal {

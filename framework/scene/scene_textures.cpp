@@ -12,7 +12,7 @@ namespace rt::schema {
 const SchemaElement kTexture{"a texture",
                              "",
                              {"Textures"},
-                             {{"name", true},
+                             {{"name", kRequired},
                               {"image"},
                               {"checker"},
                               {"checker_3d"},
@@ -22,7 +22,7 @@ const SchemaElement kTexture{"a texture",
                               {"color_space"},
                               {"colour_space"}}};
 const SchemaElement kTextureSlot{
-    "a texture slot", "", {"Materials"}, {{"texture", true}, {"scale"}, {"offset"}}};
+    "a texture slot", "", {"Materials"}, {{"texture", kRequired}, {"scale"}, {"offset"}}};
 const SchemaElement kCheckerTexture{"a checker texture", "", {"Textures"}, {{"a"}, {"b"}}};
 const SchemaElement kChecker3dTexture{
     "a checker_3d texture", "", {"Textures"}, {{"a"}, {"b"}, {"scale"}}};

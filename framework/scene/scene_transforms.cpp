@@ -13,7 +13,7 @@
 
 namespace rt::schema {
 const SchemaElement kObject{
-    "an object", "", {"Transforms and instances"}, {{"name", true}, {"surfaces", true}}};
+    "an object", "", {"Transforms and instances"}, {{"name", kRequired}, {"surfaces", kRequired}}};
 // A step has exactly one of these keys (read_transform_step says so when it has more).
 const SchemaElement kTransformStep{
     "a transform step",
@@ -21,7 +21,7 @@ const SchemaElement kTransformStep{
     {"Transforms and instances"},
     {{"translate"}, {"scale"}, {"rotate"}, {"euler_degrees"}, {"matrix"}}};
 const SchemaElement kRotation{
-    "a rotation", "", {"Transforms and instances"}, {{"axis", true}, {"degrees", true}}};
+    "a rotation", "", {"Transforms and instances"}, {{"axis", kRequired}, {"degrees", kRequired}}};
 }  // namespace rt::schema
 
 namespace rt::scene_internal {
