@@ -97,7 +97,15 @@ std::string results_json_text(const GradescopeResults& r) {
 
 std::optional<GradescopeResults> read_results_json(const std::string& body, std::string& why) {
     const json j = json::parse(body, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
+    if (j.is_discarded()) {
+        why = "not valid JSON";
+        return std::nullopt;
+    }
+    return read_results_json(j, why);
+}
+
+std::optional<GradescopeResults> read_results_json(const json& j, std::string& why) {
+    if (!j.is_object()) {
         why = "not valid JSON";
         return std::nullopt;
     }

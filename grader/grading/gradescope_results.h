@@ -4,6 +4,8 @@
 // a batch's back (cmd/dashboard.h).
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,5 +49,7 @@ std::string results_json_text(const GradescopeResults& results);
 // written as a string ("20.0", as Gradescope's metadata has it) as its number. nullopt, with
 // `why`, when `text` is not a JSON object with a "tests" list of named tests.
 std::optional<GradescopeResults> read_results_json(const std::string& text, std::string& why);
+// The same for results already parsed (Gradescope's metadata holds them inside its own JSON).
+std::optional<GradescopeResults> read_results_json(const nlohmann::json& results, std::string& why);
 
 }  // namespace rt::grader
