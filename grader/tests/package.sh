@@ -57,7 +57,19 @@ case $case in
     "$bin/results_check" "$root/results/results.json" --contains "This submission was not graded" > /dev/null ||
       { jq . "$root/results/results.json" | head -20; fail "the fourth submission in a day was graded"; }
     printf '{"created_at": "%s", "previous_submissions": []}\n' "$now" > "$root/submission_metadata.json"
-    # Gradescope's timeout near: rt-grade stopped at the deadline still leaves valid results.
+    # Gradescope's timeout near: rt-grade stopped at the deadline still leaves valid results. The
+    # submission waits 3 s in every test process, so the grading outlasts its 1 s deadline however
+    # fast the machine (stage 01 alone can grade within a second).
+    cat >> "$root/submission/camera_rays.cpp" << 'EOF_SLOW'
+#include <chrono>
+#include <thread>
+namespace {
+[[maybe_unused]] const bool kSlowOnPurpose = [] {
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    return true;
+}();
+}  // namespace
+EOF_SLOW
     sed -i 's/^deadline_seconds=[0-9]*/deadline_seconds=1/' "$root/source/rt-grade/settings.sh"
     RT_AUTOGRADER_ROOT=$root "$root/run_autograder" > "$work/run.log" 2>&1
     "$bin/results_check" "$root/results/results.json" --contains "Grading was interrupted" > /dev/null ||
