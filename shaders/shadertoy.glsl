@@ -13,12 +13,7 @@ void rt_not_implemented(int stub) {
     if (rt_first_stub < 0) rt_first_stub = stub;
     rt_stub_reached = true;
 }
-// compute_io.glsl's guard of a student's while loop.
-bool rt_loop_guard(int iteration, int loop) {
-    if (iteration < kLoopLimit) return true;
-    rt_not_implemented(loop);
-    return false;
-}
+#include "student_checks.glsl"
 
 #ifdef HAS_SAMPLING
 // Stage 10, in rt export-web's pages only (Shadertoy's export refuses it): each frame draws camera

@@ -1,5 +1,5 @@
 // GLSL assembly on the host (gpu/gl/shader_source.h): includes expanded once each, #line numbers that
-// carry the file, stubs turned into rt_not_implemented(k), compiler logs mapped to file:line.
+// carry the file, stubs and loops listed (never rewritten), compiler logs mapped to file:line.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -29,11 +29,11 @@ class ShaderSource : public ::testing::Test {
     fs::path dir_;
 };
 
-TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreNumbered) {
+TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreListed) {
     write("main.comp", "#version 430\n#include \"a.glsl\"\n#include \"a.glsl\"\nvoid main() {}\n");
     write("student/a.glsl",
-          "float f(float x) {\n    // RT_NOT_IMPLEMENTED(\"x.md#commented\");\n"
-          "    RT_NOT_IMPLEMENTED(\"stages/09-gpu/README.md#f\");\n    return x;\n}\n");
+          "float f(float x) {\n    // RT_NOT_IMPLEMENTED();  // x.md#commented\n"
+          "    RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#f\n    return x;\n}\n");
     const AssembledShader s =
         assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "#define A\n");
     ASSERT_EQ(s.error, "");
@@ -43,12 +43,41 @@ TEST_F(ShaderSource, IncludesGetLineDirectivesAndStubsAreNumbered) {
               0u)
         << s.text;
     EXPECT_NE(s.text.find("#line 100001 1\nfloat f"), std::string::npos) << s.text;
-    EXPECT_NE(s.text.find("    rt_not_implemented(0);\n"), std::string::npos) << s.text;
+    // The stub's line as written (the macro of shaders/student_checks.glsl reports it).
+    EXPECT_NE(s.text.find("\n    RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#f\n"),
+              std::string::npos)
+        << s.text;
     EXPECT_NE(s.text.find("#line 4 0\nvoid main"), std::string::npos) << s.text;
     ASSERT_EQ(s.stubs.size(), 1u);  // the commented one is not live
     EXPECT_EQ(s.stubs[0].function, "f");
     EXPECT_EQ(s.stubs[0].line, 3);
+    EXPECT_EQ(s.stubs[0].key, 100003);  // __LINE__ there: file 1, line 3
     EXPECT_EQ(s.stubs[0].handout, "stages/09-gpu/README.md#f");
+    // The table that maps __LINE__ back to the entry ends the shader.
+    EXPECT_NE(s.text.find("int rt_stub_index(int line) {\n    if (line == 100003) return 0;"),
+              std::string::npos)
+        << s.text;
+}
+
+// A while loop is listed, as written, for the guard's report; a do-while, which the `while`
+// macro cannot guard, is refused in one line that names the file and line.
+TEST_F(ShaderSource, LoopsAreListedAndDoWhileIsRefused) {
+    write("main.comp", "#version 430\n#include \"a.glsl\"\nvoid main() {}\n");
+    write("student/a.glsl", "int f(int n) {\n    while (n > 1) n /= 2;\n    return n;\n}\n");
+    const AssembledShader s = assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "");
+    ASSERT_EQ(s.error, "");
+    ASSERT_EQ(s.stubs.size(), 1u);
+    EXPECT_TRUE(s.stubs[0].loop);
+    EXPECT_EQ(s.stubs[0].key, 100002);
+    EXPECT_NE(s.text.find("\n    while (n > 1) n /= 2;\n"), std::string::npos) << s.text;
+
+    write("student/a.glsl",
+          "int f(int n) {\n    do {\n        n /= 2;\n    } while (n > 1);\n"
+          "    return n;\n}\n");
+    const AssembledShader refused = assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "");
+    EXPECT_NE(refused.error.find("student/a.glsl:2: error: a do-while loop; write it as a while"),
+              std::string::npos)
+        << refused.error;
 }
 
 // An include right under a guard the host's defines (or the shader's own #defines under their
@@ -61,7 +90,7 @@ TEST_F(ShaderSource, GuardedIncludesAndTheirStubsFollowTheDefines) {
           "#ifdef ENV\n#include \"e.glsl\"\n#endif\nvoid main() {}\n");
     for (const char* f : {"t", "u", "e"})
         write(std::string("student/") + f + ".glsl",
-              std::string("void ") + f + "() {\n    RT_NOT_IMPLEMENTED(\"x.md#y\");\n}\n");
+              std::string("void ") + f + "() {\n    RT_NOT_IMPLEMENTED();  // x.md#y\n}\n");
     const auto stubs = [&](const std::string& defines) {
         std::string names;
         for (const ShaderStub& s :

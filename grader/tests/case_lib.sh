@@ -19,7 +19,12 @@ mapfile -t files < <(for g in "$src"/stages/[0-9][0-9]-*/grading.json; do
 stage_tag() { printf 'stage%02d' "$1"; }  # results.json's tag of stage N
 # Handout sections of the graded stubs. An optional part (a section named "#optional-...", such
 # as stage 10's fog) is left out of grading.json, so no graded test reaches its stubs.
-sections() { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/' | grep -v '#optional-' | sort -u; }
+# C++ stubs name theirs in a string, GLSL ones in a comment after the call (GLSL has no strings).
+sections() {
+    { grep -ho 'RT_NOT_IMPLEMENTED("[^"]*")' "${files[@]/#/$src/}" | sed 's/.*("\(.*\)")/\1/'
+      grep -ho 'RT_NOT_IMPLEMENTED(); *// [^ ]*' "${files[@]/#/$src/}" | sed 's|.*// ||'
+    } | grep -v '#optional-' | sort -u
+}
 
 source "$(dirname "${BASH_SOURCE[0]}")/stub.sh"  # stub FILE: the starter version
 solution1() { cp "$src/$s1/camera_rays.cpp" "$sub/$s1/camera_rays.cpp"; }

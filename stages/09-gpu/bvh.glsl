@@ -29,7 +29,7 @@ bool intersect_node(BvhNode node, Ray ray, vec3 inv_direction, Interval t_range,
     t_entry = t0;
     return t0 <= t1;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#bvh-traversal
     // t_entry = 0.0;
     // return false;
     // END SOLUTION
@@ -104,7 +104,7 @@ bool bvh_intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
     }
     return found;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#bvh-traversal
     // return false;
     // END SOLUTION
 }
@@ -146,7 +146,7 @@ bool bvh_intersect_any(Ray ray, Interval t_range) {
     }
     return found;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#bvh-traversal");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#bvh-traversal
     // return false;
     // END SOLUTION
 }

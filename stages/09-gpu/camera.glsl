@@ -13,7 +13,7 @@ Ray perspective_ray(vec2 pixel) {
     const vec3 direction = s * half_width * camera.u + t * half_height * camera.v - camera.w;
     return Ray(camera.eye, normalize(direction));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#camera-rays");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#camera-rays
     // return Ray(camera.eye, vec3(0));
     // END SOLUTION
 }
@@ -28,7 +28,7 @@ Ray orthographic_ray(vec2 pixel) {
     const float t = 1.0 - 2.0 * pixel.y / float(image_size.y);
     return Ray(camera.eye + s * half_width * camera.u + t * half_height * camera.v, -camera.w);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#camera-rays");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#camera-rays
     // return Ray(camera.eye, vec3(0));
     // END SOLUTION
 }

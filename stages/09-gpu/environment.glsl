@@ -12,7 +12,7 @@ vec2 latlong_uv(vec3 direction) {
     if (u >= 1.0) u = 0.0;  // atan(+0, negative) is +pi: u = 1 is the seam, u = 0
     return vec2(u, acos(clamp(d.y, -1.0, 1.0)) / kPi);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#environment-maps");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#environment-maps
     // return vec2(0);
     // END SOLUTION
 }
@@ -50,7 +50,7 @@ CubeFaceUv cube_face_uv(vec3 direction) {
     r.uv = clamp((vec2(sc, tc) / ma + 1.0) / 2.0, 0.0, 1.0);
     return r;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#environment-maps");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#environment-maps
     // return CubeFaceUv(0, vec2(0.5));
     // END SOLUTION
 }
@@ -80,7 +80,7 @@ vec3 environment_radiance(vec3 direction) {
     }
     return radiance * env.intensity_rotate_y.x;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#environment-maps");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#environment-maps
     // return vec3(0);
     // END SOLUTION
 }

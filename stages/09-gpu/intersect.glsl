@@ -41,7 +41,7 @@ bool intersect_sphere(Ray ray, vec4 center_radius, Interval t_range, inout Hit h
     hit.uv = vec2(0);  // a texture's (u, v) are sphere_texcoord's, at the shaded hit only
     return true;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#intersections
     // return false;
     // END SOLUTION
 }
@@ -59,7 +59,7 @@ bool intersect_plane(Ray ray, vec3 point, vec3 normal, Interval t_range, inout H
     hit.uv = vec2(0);
     return true;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#intersections
     // return false;
     // END SOLUTION
 }
@@ -86,7 +86,7 @@ bool intersect_triangle(Ray ray, vec3 a, vec3 b, vec3 c, Interval t_range, inout
     hit.uv = vec2(beta, gamma);
     return true;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#intersections
     // return false;
     // END SOLUTION
 }
@@ -124,7 +124,7 @@ bool intersect_box(Ray ray, vec3 lo, vec3 hi, Interval t_range, inout Hit hit) {
     hit.uv = vec2(0);
     return true;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#intersections
     // return false;
     // END SOLUTION
 }
@@ -177,7 +177,7 @@ bool intersect_nearest(Ray ray, Interval t_range, inout Hit hit) {
 #endif
     return found;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#intersections");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#intersections
     // return false;
     // END SOLUTION
 }

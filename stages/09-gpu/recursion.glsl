@@ -9,7 +9,7 @@ vec3 reflect_direction(vec3 d, vec3 n) {
     // BEGIN SOLUTION
     return d - 2.0 * dot(d, n) * n;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#reflection-and-refraction");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#reflection-and-refraction
     // return d;
     // END SOLUTION
 }
@@ -25,7 +25,7 @@ bool refract_direction(vec3 d, vec3 n, float eta, inout vec3 refracted) {
     refracted = normalize(eta * d + (eta * cos_i - cos_t) * n);
     return true;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#reflection-and-refraction");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#reflection-and-refraction
     // return false;
     // END SOLUTION
 }
@@ -44,7 +44,7 @@ float schlick_reflectance(float cos_incident, float n1, float n2) {
     const float x = 1.0 - cosine;
     return r0 + (1.0 - r0) * x * x * x * x * x;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#reflection-and-refraction");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#reflection-and-refraction
     // return 0.0;
     // END SOLUTION
 }
@@ -94,7 +94,7 @@ SecondaryRays secondary_rays(Ray incoming, SurfacePoint at, Material material, b
             Ray(offset_ray_origin(at.point, at.error, n, refracted), refracted), k_t, true);
     return result;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#reflection-and-refraction");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#reflection-and-refraction
     // return result;
     // END SOLUTION
 }

@@ -21,7 +21,7 @@ LightSample illuminate(int light, vec3 point) {
     return LightSample(r > 0.0 ? to_light / r : vec3(0), r,
                        l.intensity.rgb / (a.x + a.y * r + a.z * r * r));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#direct-light-and-shadows
     // return LightSample(vec3(0), 0.0, vec3(0));
     // END SOLUTION
 }
@@ -40,7 +40,7 @@ vec3 blinn_phong(Material material, vec3 normal, vec3 to_viewer, vec3 to_light, 
     }
     return incident * reflected;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#direct-light-and-shadows
     // return vec3(0);
     // END SOLUTION
 }
@@ -57,7 +57,7 @@ vec3 direct_light(Material material, vec3 point, vec3 normal, vec3 to_viewer,
     }
     return color;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#direct-light-and-shadows
     // return vec3(0);
     // END SOLUTION
 }
@@ -79,7 +79,7 @@ ShadowRay shadow_ray(SurfacePoint at, LightSample s) {
     }
     return shadow;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#direct-light-and-shadows
     // return ShadowRay(Ray(at.point, s.direction), Interval(0.0, 0.0));
     // END SOLUTION
 }
@@ -104,7 +104,7 @@ vec3 light_transmittance(SurfacePoint at, LightSample s) {
     }
     return vec3(0);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#direct-light-and-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#direct-light-and-shadows
     // return vec3(1);
     // END SOLUTION
 }

@@ -14,7 +14,7 @@ vec2 sphere_texcoord(vec3 outward_normal) {
     const float theta = acos(clamp(outward_normal.y, -1.0, 1.0));
     return vec2(phi / (2.0 * kPi), theta / kPi);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec2(0);
     // END SOLUTION
 }
@@ -26,7 +26,7 @@ vec2 plane_texcoord(vec3 plane_point, vec3 plane_normal, vec3 point) {
     const vec3 d = point - plane_point;
     return vec2(dot(d, f.t), dot(d, f.b));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec2(0);
     // END SOLUTION
 }
@@ -41,7 +41,7 @@ vec2 box_texcoord(vec3 box_min, vec3 box_max, vec3 point, vec3 outward_normal) {
     const float width = dot(abs(f.t), size), height = dot(abs(f.b), size);
     return vec2(0.5 + dot(d, f.t) / width, 0.5 + dot(d, f.b) / height);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec2(0);
     // END SOLUTION
 }
@@ -52,7 +52,7 @@ vec2 triangle_texcoord(vec2 uv_a, vec2 uv_b, vec2 uv_c, vec2 barycentric) {
     const float beta = barycentric.x, gamma = barycentric.y, alpha = 1.0 - beta - gamma;
     return alpha * uv_a + beta * uv_b + gamma * uv_c;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec2(0);
     // END SOLUTION
 }
@@ -65,7 +65,7 @@ float srgb_to_linear_value(float encoded) {
     if (encoded <= 0.04045) return encoded / 12.92;
     return pow((encoded + 0.055) / 1.055, 2.4);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return 0.0;
     // END SOLUTION
 }
@@ -77,7 +77,7 @@ vec3 decoded_texel(TextureView image, int i, int j) {
     if (!image.srgb) return s;
     return vec3(srgb_to_linear_value(s.r), srgb_to_linear_value(s.g), srgb_to_linear_value(s.b));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -90,7 +90,7 @@ int wrap_texel(int i, int n, int wrap) {
     const int k = i >= 0 ? i % period : period - 1 - (-(i + 1)) % period;  // in [0, period)
     return k < n ? k : 2 * n - 1 - k;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return 0;
     // END SOLUTION
 }
@@ -107,7 +107,7 @@ int texel_index(float c, int n, int wrap) {
     c = wrap == kWrapClamp ? clamp(c, -1.0, float(n)) : mod(c, 2.0 * float(n));
     return wrap_texel(int(c), n, wrap);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return 0;
     // END SOLUTION
 }
@@ -119,7 +119,7 @@ vec3 sample_nearest(TextureView image, vec2 uv, int wrap) {
     const int j = texel_index(floor(uv.y * float(image.height)), image.height, wrap);
     return decoded_texel(image, i, j);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -140,7 +140,7 @@ vec3 sample_bilinear(TextureView image, vec2 uv, int wrap) {
         (1.0 - fx) * decoded_texel(image, i, j1) + fx * decoded_texel(image, i1, j1);
     return (1.0 - fy) * top + fy * bottom;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -153,7 +153,7 @@ vec3 checker_2d(vec2 uv, vec3 a, vec3 b) {
     const int sum = int(floor(uv.x)) + int(floor(uv.y));
     return (sum & 1) == 0 ? a : b;  // & 1, not % 2: GLSL's % of a negative is undefined
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -165,7 +165,7 @@ vec3 checker_3d(vec3 point, vec3 a, vec3 b, float size) {
     const int sum = int(cell.x) + int(cell.y) + int(cell.z);
     return (sum & 1) == 0 ? a : b;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -194,7 +194,7 @@ float gradient_noise(vec3 point) {
     const float y0 = x00 + w.y * (x10 - x00), y1 = x01 + w.y * (x11 - x01);
     return y0 + w.z * (y1 - y0);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return 0.0;
     // END SOLUTION
 }
@@ -211,7 +211,7 @@ vec3 marble(vec3 point, vec3 a, vec3 b, float scale) {
     const float s = 0.5 + 0.5 * sin((p.x + 4.0 * turbulence) * kPi);
     return a * (1.0 - s) + b * s;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return vec3(0);
     // END SOLUTION
 }
@@ -237,7 +237,7 @@ vec3 normal_from_map(vec3 normal, vec3 tangent, vec3 texel, vec3 to_viewer) {
     }
     return n;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#textures");
+    // RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#textures
     // return normal;
     // END SOLUTION
 }

@@ -18,7 +18,7 @@ vec2 stratified_sample(int index, int count, vec2 u) {
     if (index < 0 || index >= n * n) return u;
     return (vec2(float(index % n), float(index / n)) + u) / float(n);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#1-pixel-samples-and-filters");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#1-pixel-samples-and-filters
     // return u;
     // END SOLUTION
 }
@@ -27,7 +27,7 @@ vec2 box_filter_offset(vec2 u) {
     // BEGIN SOLUTION
     return u - 0.5;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#1-pixel-samples-and-filters");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#1-pixel-samples-and-filters
     // return vec2(0);
     // END SOLUTION
 }
@@ -38,7 +38,7 @@ vec2 tent_filter_offset(vec2 u) {
     const vec2 below = sqrt(2.0 * u) - 1.0, above = 1.0 - sqrt(max(vec2(0), 2.0 - 2.0 * u));
     return vec2(low.x ? below.x : above.x, low.y ? below.y : above.y);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#1-pixel-samples-and-filters");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#1-pixel-samples-and-filters
     // return vec2(0);
     // END SOLUTION
 }
@@ -48,7 +48,7 @@ vec2 sample_uniform_disk(vec2 u) {
     const float r = sqrt(u.x), phi = 2.0 * kPi * u.y;
     return r * vec2(cos(phi), sin(phi));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#2-disk-hemisphere-and-sphere");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#2-disk-hemisphere-and-sphere
     // return vec2(0);
     // END SOLUTION
 }
@@ -58,7 +58,7 @@ vec3 sample_cosine_hemisphere(vec2 u) {
     const vec2 d = sample_uniform_disk(u);
     return vec3(d, sqrt(max(0.0, 1.0 - dot(d, d))));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#2-disk-hemisphere-and-sphere");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#2-disk-hemisphere-and-sphere
     // return vec3(0, 0, 1);
     // END SOLUTION
 }
@@ -67,7 +67,7 @@ float cosine_hemisphere_pdf(vec3 direction) {
     // BEGIN SOLUTION
     return direction.z > 0.0 ? direction.z / kPi : 0.0;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#2-disk-hemisphere-and-sphere");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#2-disk-hemisphere-and-sphere
     // return 0.0;
     // END SOLUTION
 }
@@ -77,7 +77,7 @@ vec3 sample_uniform_sphere(vec2 u) {
     const float z = 1.0 - 2.0 * u.x, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * u.y;
     return vec3(r * cos(phi), r * sin(phi), z);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#2-disk-hemisphere-and-sphere");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#2-disk-hemisphere-and-sphere
     // return vec3(0, 0, 1);
     // END SOLUTION
 }
@@ -91,7 +91,7 @@ Ray thin_lens_ray(Ray pinhole, float aperture, float focus_distance, vec2 u) {
     const vec3 lens = camera.eye + d.x * camera.u + d.y * camera.v;
     return Ray(lens, normalize(focus - lens));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#3-depth-of-field-and-motion-blur");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#3-depth-of-field-and-motion-blur
     // return pinhole;
     // END SOLUTION
 }
@@ -100,7 +100,7 @@ float shutter_time(float open, float close, float u) {
     // BEGIN SOLUTION
     return open + u * (close - open);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#3-depth-of-field-and-motion-blur");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#3-depth-of-field-and-motion-blur
     // return open;
     // END SOLUTION
 }
@@ -126,7 +126,7 @@ AreaSample sample_rectangle(AreaLight light, vec3 from, vec2 u) {
     s.pdf = cosine > 0.0 ? distance2 / (cosine * area) : 0.0;
     return s;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#4-sampling-area-lights");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#4-sampling-area-lights
     // return s;
     // END SOLUTION
 }
@@ -146,7 +146,7 @@ float rectangle_pdf(AreaLight light, vec3 from, vec3 direction) {
     if (s < 0.0 || s > 1.0 || r < 0.0 || r > 1.0) return 0.0;
     return t * t / (abs(denominator) * area);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#4-sampling-area-lights");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#4-sampling-area-lights
     // return 0.0;
     // END SOLUTION
 }
@@ -184,7 +184,7 @@ AreaSample sample_sphere(AreaLight light, vec3 from, vec2 u) {
     s.pdf = 1.0 / (2.0 * kPi * one_minus_cos_max);
     return s;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#4-sampling-area-lights");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#4-sampling-area-lights
     // return s;
     // END SOLUTION
 }
@@ -200,7 +200,7 @@ float sphere_pdf(AreaLight light, vec3 from, vec3 direction) {
     if (dot(direction, to_center) / distance < cos_max) return 0.0;
     return 1.0 / (2.0 * kPi * sin2_max / (1.0 + cos_max));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#4-sampling-area-lights");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#4-sampling-area-lights
     // return 0.0;
     // END SOLUTION
 }
@@ -223,7 +223,7 @@ LightSample sample_area_light(AreaLight light, vec3 point, vec2 u) {
     out_sample.intensity = light.radiance.rgb / (kPi * s.pdf);
     return out_sample;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#5-soft-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#5-soft-shadows
     // return out_sample;
     // END SOLUTION
 }
@@ -238,7 +238,7 @@ vec3 area_light_estimate(Material material, SurfacePoint at, vec3 normal, vec3 t
     if (reflected == vec3(0)) return reflected;
     return reflected * light_transmittance(at, s);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#5-soft-shadows");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#5-soft-shadows
     // return vec3(0);
     // END SOLUTION
 }
@@ -247,7 +247,7 @@ vec3 glossy_direction(vec3 mirror, float fuzz, vec2 u) {
     // BEGIN SOLUTION
     return normalize(mirror + fuzz * sample_uniform_sphere(u));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#6-glossy-reflection");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#6-glossy-reflection
     // return mirror;
     // END SOLUTION
 }
@@ -261,7 +261,7 @@ Ray cosine_ray(SurfacePoint at, vec3 normal, vec2 u) {
     const vec3 direction = local.x * t + local.y * b + local.z * normal;
     return Ray(offset_ray_origin(at.point, at.error, at.normal, direction), direction);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light
     // return Ray(at.point, normal);
     // END SOLUTION
 }
@@ -273,7 +273,7 @@ float ambient_occlusion(SurfacePoint at, vec3 normal, float max_distance, vec2 u
     Hit hit = no_hit();
     return nearest_hit(cosine_ray(at, normal, u), Interval(0.0, max_distance), hit) ? 0.0 : 1.0;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light
     // return 1.0;
     // END SOLUTION
 }
@@ -284,7 +284,7 @@ vec3 indirect_diffuse(SurfacePoint at, vec3 normal, Material material, vec2 u) {
     // BEGIN SOLUTION
     return material.diffuse.rgb * incoming_radiance(cosine_ray(at, normal, u));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light");
+    // RT_NOT_IMPLEMENTED();  // stages/10-sampling/README.md#7-ambient-occlusion-and-indirect-light
     // return vec3(0);
     // END SOLUTION
 }

@@ -14,7 +14,7 @@ float ggx_d(vec3 h, float alpha) {
     const float t = h.z * h.z * (a2 - 1.0) + 1.0;
     return a2 / (kPi * t * t);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution
     // return 0.0;
     // END SOLUTION
 }
@@ -26,7 +26,7 @@ float ggx_g1(vec3 v, vec3 h, float alpha) {
     const float tan2 = max(0.0, 1.0 - cos2) / cos2;
     return 2.0 / (1.0 + sqrt(1.0 + alpha * alpha * tan2));
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution
     // return 0.0;
     // END SOLUTION
 }
@@ -39,7 +39,7 @@ vec3 sample_ggx_normal(float alpha, vec2 u) {
     const float phi = 2.0 * kPi * u.y;
     return vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#2-sampling-the-ggx-lobe");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#2-sampling-the-ggx-lobe
     // return vec3(0, 0, 1);
     // END SOLUTION
 }
@@ -48,7 +48,7 @@ float ggx_normal_pdf(vec3 h, float alpha) {
     // BEGIN SOLUTION
     return h.z > 0.0 ? ggx_d(h, alpha) * h.z : 0.0;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#2-sampling-the-ggx-lobe");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#2-sampling-the-ggx-lobe
     // return 0.0;
     // END SOLUTION
 }
@@ -59,7 +59,7 @@ vec3 schlick_fresnel(vec3 f0, float cos_theta) {
     const float m5 = m * m * m * m * m;
     return f0 + (vec3(1) - f0) * m5;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#1-the-ggx-microfacet-distribution
     // return f0;
     // END SOLUTION
 }
@@ -128,7 +128,7 @@ vec3 eval_bsdf(Material material, vec3 wo, vec3 wi) {
         f += ggx_brdf(material, o, i);
     return f;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#3-the-bsdf-of-a-material");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#3-the-bsdf-of-a-material
     // return vec3(0);
     // END SOLUTION
 }
@@ -142,7 +142,7 @@ float bsdf_pdf(Material material, vec3 wo, vec3 wi) {
     if (material_roughness(material) > 0.0 && p_s > 0.0) pdf += p_s * ggx_pdf(material, o, i);
     return pdf;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#3-the-bsdf-of-a-material");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#3-the-bsdf-of-a-material
     // return 0.0;
     // END SOLUTION
 }
@@ -174,7 +174,7 @@ BsdfSample sample_bsdf(Material material, vec3 wo, float u_lobe, vec2 u) {
     s.weight = eval_bsdf(material, wo, s.wi) * (i.z / s.pdf);
     return s;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#3-the-bsdf-of-a-material");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#3-the-bsdf-of-a-material
     // return s;
     // END SOLUTION
 }

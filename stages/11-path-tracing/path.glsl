@@ -12,7 +12,7 @@ float balance_heuristic(float pdf_f, float pdf_g) {
     // BEGIN SOLUTION
     return pdf_f + pdf_g > 0.0 ? pdf_f / (pdf_f + pdf_g) : 0.0;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#4-multiple-importance-sampling");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#4-multiple-importance-sampling
     // return 0.0;
     // END SOLUTION
 }
@@ -22,7 +22,7 @@ float power_heuristic(float pdf_f, float pdf_g) {
     const float f2 = pdf_f * pdf_f, g2 = pdf_g * pdf_g;
     return f2 + g2 > 0.0 ? f2 / (f2 + g2) : 0.0;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#4-multiple-importance-sampling");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#4-multiple-importance-sampling
     // return 0.0;
     // END SOLUTION
 }
@@ -71,7 +71,7 @@ vec3 sample_light_mis(SurfacePoint at, Onb frame, Material material, vec3 wo, fl
     const float weight = power_heuristic(p_light, bsdf_pdf(material, wo, wi));
     return f * light.radiance.rgb * (abs(wi.z) * weight / p_light);
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#5-next-event-estimation");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#5-next-event-estimation
     // return vec3(0);
     // END SOLUTION
 }
@@ -126,7 +126,7 @@ vec3 path_radiance(Ray camera_ray) {
     }
     return radiance;
     // STUB
-    // RT_NOT_IMPLEMENTED("stages/11-path-tracing/README.md#6-the-path-tracer");
+    // RT_NOT_IMPLEMENTED();  // stages/11-path-tracing/README.md#6-the-path-tracer
     // return radiance;
     // END SOLUTION
 }

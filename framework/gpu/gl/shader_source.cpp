@@ -60,7 +60,6 @@ class Assembler {
 
     // Appends `path` (source string `id`); false when an include failed (out_.error set).
     bool add(const fs::path& path, const std::string& defines, bool entry) {
-        if (entry) entry_dir_ = path.parent_path();
         std::string text;
         if (!read_text_if(path, text)) {
             out_.error = display_path(path) + ": cannot read the shader file";
@@ -70,14 +69,11 @@ class Assembler {
         out_.files.push_back(display_path(path));
         included_.insert(fs::weakly_canonical(path));
         if (!entry) out_.text += line_directive(1, id);
-        // The student's files are those found in the include folders, not beside the entry.
-        const bool student = !entry && path.parent_path() != entry_dir_;
         std::istringstream lines(text);
         std::string line, function;
         std::vector<std::string> guard;  // the names of the #ifdef or #if defined(..) || .. above
         int number = 0;
         static const std::regex include_re(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
-        static const std::regex stub_re(R"re(RT_NOT_IMPLEMENTED\(\s*"([^"]*)"\s*\))re");
         static const std::regex function_re(R"(^[A-Za-z_]\w*\s+([A-Za-z_]\w*)\s*\([^;]*$)");
         while (std::getline(lines, line)) {
             ++number;
@@ -115,40 +111,43 @@ class Assembler {
                 derived_.insert(m[1].str());
             guard = guard_names(line);
             if (std::regex_search(line, m, function_re) && line[0] != ' ') function = m[1].str();
-            if (student) line = guard_while_loop(line, function, id, number);
-            if (!trim_left(line).starts_with("//") && std::regex_search(line, m, stub_re)) {
-                const int k = int(out_.stubs.size());
-                out_.stubs.push_back({function, out_.files[std::size_t(id)], number, m[1].str()});
-                line = m.prefix().str() + "rt_not_implemented(" + std::to_string(k) + ")" +
-                       m.suffix().str();
-            }
+            if (!list_stubs_and_loops(line, function, id, number)) return false;
             out_.text += line + "\n";
         }
         return true;
     }
 
   private:
-    // `while (COND)` at the start of a line -> `for (int rt_loop_K = 0; rt_loop_guard(rt_loop_K++,
-    // K) && (COND);)`, the loop's stub entry K added. Left alone: a head that does not close on
-    // its line, and do-while's `while (COND);`.
-    std::string guard_while_loop(const std::string& line, const std::string& function, int id,
-                                 int number) {
-        static const std::regex while_re(R"(^(\s*)while\s*\()");
+    // Lists a stub (`RT_NOT_IMPLEMENTED();  // section`) or a `while` loop on this line, by the number
+    // __LINE__ has there, for rt_stub_index (student_checks.glsl); the line itself is left as
+    // written. False, with out_.error set, for a do-while loop, which the `while` macro would make
+    // into a syntax error.
+    bool list_stubs_and_loops(const std::string& line, const std::string& function, int id,
+                              int number) {
+        static const std::regex stub_re(R"(RT_NOT_IMPLEMENTED\(\s*\)\s*;?\s*(//\s*(\S+))?)");
+        static const std::regex while_re(R"(\bwhile\s*\()");
+        static const std::regex do_re(R"((^|[^\w])do\s*(\{|$))");
+        const std::string code = line.substr(0, line.find("//"));
+        if (trim_left(code).starts_with("#")) return true;  // a directive, such as the macros'
+        const std::string& file = out_.files[std::size_t(id)];
+        const long key = long(id) * kFileLines + number;
         std::smatch m;
-        if (!std::regex_search(line, m, while_re)) return line;
-        const std::size_t open = std::size_t(m.length(0)) - 1;
-        int depth = 0;
-        std::size_t close = open;
-        for (; close < line.size(); ++close) {
-            depth += line[close] == '(' ? 1 : line[close] == ')' ? -1 : 0;
-            if (depth == 0) break;
+        if (code.find("RT_NOT_IMPLEMENTED") != std::string::npos &&
+            std::regex_search(line, m, stub_re))
+            out_.stubs.push_back({function, file, number,
+                                  m[2].matched ? m[2].str() : "this stage's README.md", false,
+                                  key});
+        if (std::regex_search(code, do_re)) {
+            out_.error = file + ":" + std::to_string(number) +
+                         ": error: a do-while loop; write it as a while loop, which the framework "
+                         "guards against running forever (stages/09-gpu/README.md#what-changes-on-"
+                         "a-gpu)";
+            return false;
         }
-        if (close >= line.size() || trim_left(line.substr(close + 1)).starts_with(";")) return line;
-        const std::string k = std::to_string(out_.stubs.size());
-        out_.stubs.push_back({function, out_.files[std::size_t(id)], number,
-                              "stages/09-gpu/README.md#what-changes-on-a-gpu", true});
-        return m[1].str() + "for (int rt_loop_" + k + " = 0; rt_loop_guard(rt_loop_" + k + "++, " +
-               k + ") && " + line.substr(open, close + 1 - open) + ";)" + line.substr(close + 1);
+        if (std::regex_search(code, while_re))
+            out_.stubs.push_back({function, file, number,
+                                  "stages/09-gpu/README.md#what-changes-on-a-gpu", true, key});
+        return true;
     }
 
     // Whether a guard (guard_names) holds: one of its names is defined by the host's `defines`
@@ -170,7 +169,6 @@ class Assembler {
     AssembledShader& out_;
     std::set<fs::path> included_;
     std::set<std::string> derived_;  // names the shader #defines itself
-    fs::path entry_dir_;             // the framework's shaders/ (beside the entry file)
 };
 
 }  // namespace
@@ -178,8 +176,25 @@ class Assembler {
 AssembledShader assemble_shader(const fs::path& entry, const std::vector<fs::path>& include_dirs,
                                 const std::string& defines) {
     AssembledShader out;
-    Assembler(include_dirs, out).add(entry, defines, true);
+    if (!Assembler(include_dirs, out).add(entry, defines, true)) return out;
+    out.code_size = out.text.size();
+    std::vector<long> lines;
+    for (const ShaderStub& stub : out.stubs) lines.push_back(stub.key);
+    out.text += stub_index_function(out.stubs, lines);
     return out;
+}
+
+std::string stub_index_function(const std::vector<ShaderStub>& stubs,
+                                const std::vector<long>& lines) {
+    std::string text =
+        "\n// The stubs and loops the host listed (framework/gpu/gl/shader_source.h).\n"
+        "int rt_stub_index(int line) {\n";
+    for (std::size_t k = 0; k < stubs.size() && k < lines.size(); ++k) {
+        if (lines[k] <= 0) continue;
+        text += "    if (line == " + std::to_string(lines[k]) + ") return " + std::to_string(k) +
+                ";  // " + stubs[k].file + ":" + std::to_string(stubs[k].line) + "\n";
+    }
+    return text + "    return -1;\n}\n";
 }
 
 std::string display_path(const fs::path& path) {

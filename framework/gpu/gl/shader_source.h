@@ -7,9 +7,13 @@
 // compiler; file names in #line would need GL_ARB_shading_language_include (Mesa) or
 // GL_GOOGLE_cpp_style_line_directive (glslang), which not every driver has.
 //
-// Student stubs are written as in C++, RT_NOT_IMPLEMENTED("stages/09-gpu/README.md#section");
-// GLSL has no strings, so each live one becomes rt_not_implemented(k) and the host keeps
-// (function, file, line, section) as entry k, for the one-line report (core/not_implemented.h).
+// No line of a file is changed: the compiler sees the student's text as written. A student stub
+// is `RT_NOT_IMPLEMENTED();  // stages/09-gpu/README.md#section` (C++'s, with the section in a
+// comment: GLSL has no strings), and every `while` loop is guarded; both are macros of
+// shaders/student_checks.glsl that pass __LINE__. The
+// assembler lists each stub and loop it reads as entry k of `stubs` (function, file, line,
+// section), for the one-line report (core/not_implemented.h), and ends the shader with
+// rt_stub_index, which maps the line back to k.
 #pragma once
 
 #include <filesystem>
@@ -22,15 +26,17 @@ struct ShaderStub {
     std::string function, file;  // file as shown in messages
     int line = 0;
     std::string handout;
-    // Not a stub but a student's `while` loop, guarded: it reports when it runs kLoopLimit times
-    // in one invocation (llvmpipe would end it silently and go on with wrong values).
+    // Not a stub but a `while` loop, guarded: it reports when it runs kLoopLimit times in one
+    // invocation (llvmpipe would end it silently and go on with wrong values).
     bool loop = false;
+    long key = 0;  // __LINE__ on its line: the file's number * 100000 + the line
 };
 
 struct AssembledShader {
     std::string text;
     std::vector<std::string> files;  // by source-string number (0: the entry file)
     std::vector<ShaderStub> stubs;   // by rt_not_implemented's argument
+    std::size_t code_size = 0;       // the text before rt_stub_index, which ends it
     std::string error;               // one line when an include cannot be read
 };
 
@@ -40,12 +46,17 @@ struct AssembledShader {
 // on the line right after `#ifdef NAME` is expanded only when `defines` defines NAME (so a file
 // of one feature, such as stage 10's sampling.glsl, and its stubs are in only the shaders of
 // scenes with that feature); other conditionals are left to the GLSL preprocessor.
-// In the files found in `include_dirs` (the student's), each `while (COND)` loop whose head is on
-// one line becomes a for loop with a counter, `rt_loop_guard(count++, k) && (COND)`, k its entry
-// in `stubs` (loop = true): an endless loop ends with a report instead of a silent wrong picture.
+// A do-while loop is refused with a one-line error (the `while` macro cannot guard it).
 AssembledShader assemble_shader(const std::filesystem::path& entry,
                                 const std::vector<std::filesystem::path>& include_dirs,
                                 const std::string& defines);
+
+// rt_stub_index (shaders/student_checks.glsl): entry k of `stubs` for __LINE__ == lines[k], -1
+// for any other line (an entry whose line is 0 or less is left out). assemble_shader ends its
+// text with the one for its own numbering (ShaderStub::key); an export that numbers its lines
+// otherwise writes its own.
+std::string stub_index_function(const std::vector<ShaderStub>& stubs,
+                                const std::vector<long>& lines);
 
 // A path as messages show it: relative to the course tree when inside it.
 std::string display_path(const std::filesystem::path& path);

@@ -294,7 +294,7 @@ void for_shadertoy(const AssembledShader& shader, std::string& out,
     static const std::regex line_re(R"(^#line (\d+) (\d+)$)");
     static const std::regex local_const_re(R"(\bconst\s+)");
     constexpr long kFileLines = 100000;  // shader_source.cpp's encoding of the file in the line
-    std::istringstream lines(shader.text);
+    std::istringstream lines(shader.text.substr(0, shader.code_size));
     std::string line, file_name;
     long file_line = 0;
     int depth = 0;
@@ -318,6 +318,21 @@ void for_shadertoy(const AssembledShader& shader, std::string& out,
         origins.push_back(file_name.empty() ? "" : file_name + ":" + std::to_string(file_line));
         ++file_line;
     }
+}
+
+// __LINE__ at each stub and loop of the export, as our wrapper (and the web page) compiles it:
+// after the wrapper's head. Shadertoy's own head differs, but Shadertoy shows no report anyway.
+std::vector<long> export_lines(const std::vector<ShaderStub>& stubs,
+                               const std::vector<std::string>& origins) {
+    std::vector<long> lines;
+    for (const ShaderStub& stub : stubs) {
+        const auto at =
+            std::find(origins.begin(), origins.end(), stub.file + ":" + std::to_string(stub.line));
+        lines.push_back(at == origins.end()
+                            ? 0
+                            : shadertoy_wrapper_head_lines() + long(at - origins.begin()) + 1);
+    }
+    return lines;
 }
 
 // scene_layout.glsl's structs (the storage buffers are scene_buffers.glsl's; the export's arrays
@@ -396,6 +411,7 @@ ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                scene_constants(scene, mode, packed, options.web_page) + "\n";
     out.line_origins.assign(std::count(out.text.begin(), out.text.end(), '\n'), "");
     for_shadertoy(shader, out.text, out.line_origins);
+    out.text += stub_index_function(shader.stubs, export_lines(shader.stubs, out.line_origins));
     if (options.web_page) out.data_arrays = web_data_arrays(packed);
     out.web_page = options.web_page;
     if (out.text.size() > kMaxShadertoyBytes)
