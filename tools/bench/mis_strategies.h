@@ -1,10 +1,10 @@
 // The accuracy lab's stage 11 rows (docs/accuracy.md, "Multiple importance sampling"): Veach's
-// scene (stages/11-path-tracing/scenes/veach_mis.json) path traced with next-event estimation
-// alone, BSDF sampling alone and both combined by MIS, each at 1 to 256 samples per pixel, timed
-// and compared with the stage's reference image. The three differ only in how a light's
-// contribution is counted; every other step is the reference solution's (stage 11's path
-// tracer and bsdf.cpp, stage 10's light sampling), so the curve measures the strategy and nothing
-// else.
+// scene (stages/11-path-tracing/scenes/veach_mis.json), direct light only as in Veach's own
+// experiment, with next-event estimation alone, BSDF sampling alone and both combined by MIS, each
+// at 1 to 256 samples per pixel, timed and compared with MIS at 2048 samples. The three differ
+// only in how a light's contribution is counted; every other step is the reference solution's
+// (stage 11's path tracer and bsdf.cpp, stage 10's light sampling, stage 04's shadow test), so the
+// curve measures the strategy and nothing else.
 #pragma once
 
 #include <functional>
@@ -28,9 +28,10 @@ enum class LightStrategy {
 };
 const char* strategy_name(LightStrategy strategy);
 
-// A scene rendered under one strategy. MIS is stage 11's path_radiance on the scene; BSDF sampling
-// alone is path_radiance on the scene with its sphere lights made emissive spheres; next-event
-// estimation alone is the lab's own loop (mis_strategies.cpp).
+// A scene's direct light (max_depth 1) rendered under one strategy. MIS is stage 11's
+// path_radiance on the scene; BSDF sampling alone is path_radiance on the scene with its sphere
+// lights made emissive spheres; next-event estimation alone is one light sample at the first
+// surface (mis_strategies.cpp).
 struct StrategyRenderer {
     StrategyRenderer(const PreparedScene& scene, LightStrategy strategy);
     Color radiance(const Ray& camera_ray, SampleStream& stream) const;  // one camera sample
@@ -49,7 +50,8 @@ struct MisPoint {
 struct MisSeries {
     std::vector<MisPoint> points;
     int width = 0, height = 0, threads = 0;
-    std::string scene, reference;  // paths relative to the source tree
+    std::string scene;      // relative to the source tree
+    int reference_spp = 0;  // the reference: MIS at this many samples, at the scene's own seed
 };
 
 // The error the strategy's line would have at `ms` (log-log interpolation between its points; a
@@ -57,6 +59,8 @@ struct MisSeries {
 // rt_accuracy (report_data.cpp), with the report writers that print it; the rest of this header
 // is rt_sampling_bench's, which links the reference solution.
 double rmse_at_time(const std::vector<MisPoint>& points, const std::string& strategy, double ms);
+
+constexpr int kReferenceSamples = 2048;
 
 // Renders veach_mis at its own size with each strategy at 1, 4, 16, 64 and 256 samples per pixel
 // (another seed than the reference's, so their noise is independent).

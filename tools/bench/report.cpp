@@ -391,19 +391,19 @@ void write_mis(std::ostream& m, const AccuracyResults& r, const std::string& svg
           << "/mis.svg)\n\n";
     m << "Veach's scene (`" << s.scene << "`, " << s.width << "x" << s.height
       << "): four glossy plates, rough at the back and nearly mirror-smooth at the front, under "
-         "four sphere lights from small and bright to large and dim (and a dim fill light). Path "
-         "traced by the "
-         "reference solution ("
+         "four sphere lights from small and bright to large and dim (and a dim fill light). "
+         "Direct light only, as in Veach's experiment, rendered by the reference solution ("
       << s.threads
-      << " threads) with three ways of counting the lights, 1 to 256 samples per pixel at "
-         "another seed than the reference's, against `"
-      << s.reference
-      << "` (2048 samples). *NEE*: next-event estimation only (a BSDF bounce that meets a light "
-         "adds nothing; the lab's own loop); *BSDF*: BSDF sampling only, which is stage 11's "
-         "`path_radiance` on the scene with its sphere lights made emissive spheres (no light to "
-         "sample, each met at full weight); *MIS*: both, weighted by the power heuristic, which "
-         "is stage 11's `path_radiance` itself. Every other step, and every random number, is "
-         "shared. RMSE in 8-bit sRGB units.\n\n"
+      << " threads) with three ways of counting the lights, 1 to 256 samples per pixel, against "
+         "MIS at "
+      << s.reference_spp
+      << " samples and another seed. *NEE*: next-event estimation only, one light sample of "
+         "stage 10's `sample_area_light` at the first surface with stage 04's shadow test; "
+         "*BSDF*: BSDF sampling only, which is stage 11's `path_radiance` on the scene with its "
+         "sphere lights made emissive spheres (no light to sample, each met at full weight); "
+         "*MIS*: both, weighted by the power heuristic, which is stage 11's `path_radiance` "
+         "itself. Every other step, and every random number, is shared. RMSE in 8-bit sRGB "
+         "units.\n\n"
          "<!-- table:mis -->\n| strategy | spp | ms | RMSE |\n|---|--:|--:|--:|\n";
     for (const MisPoint& p : s.points)
         m << "| " << p.strategy << " | " << p.spp << " | " << fmt("%.1f", p.ms) << " | "
