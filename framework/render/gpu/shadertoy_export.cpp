@@ -286,18 +286,20 @@ std::string scene_constants(const PreparedScene& scene, RenderMode mode, const g
            (page ? web_data_accessors() : "") + (sampled ? block : "");
 }
 
-// Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts), `const`
-// dropped from declarations inside functions, wherever on the line (ES takes it only with
-// constant initialisers). Appends to `out` and, line for line, where each came from to `origins`.
+// Shadertoy's GLSL ES 3.00: `#line N K` out (a comment names each file as it starts). ES takes
+// `const` only with a constant initialiser, where the course's desktop GLSL marks any local that
+// does not change; a `#define const` before the shader's own code drops the qualifier through
+// GLSL's preprocessor, so every line stays as written. (The export's constants above it keep
+// theirs.) Appends to `out` and, line for line, where each came from to `origins`.
 void for_shadertoy(const AssembledShader& shader, std::string& out,
                    std::vector<std::string>& origins) {
     static const std::regex line_re(R"(^#line (\d+) (\d+)$)");
-    static const std::regex local_const_re(R"(\bconst\s+)");
     constexpr long kFileLines = 100000;  // shader_source.cpp's encoding of the file in the line
+    out += "#define const  // GLSL ES: const takes constant initialisers only\n";
+    origins.push_back("");
     std::istringstream lines(shader.text.substr(0, shader.code_size));
     std::string line, file_name;
     long file_line = 0;
-    int depth = 0;
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_match(line, m, line_re)) {
@@ -310,11 +312,7 @@ void for_shadertoy(const AssembledShader& shader, std::string& out,
             }
             continue;
         }
-        const std::size_t comment = line.find("//");
-        std::string code = line.substr(0, comment);
-        if (depth > 0) code = std::regex_replace(code, local_const_re, "");
-        for (char ch : code) depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
-        out += code + (comment == std::string::npos ? "" : line.substr(comment)) + "\n";
+        out += line + "\n";
         origins.push_back(file_name.empty() ? "" : file_name + ":" + std::to_string(file_line));
         ++file_line;
     }

@@ -1,8 +1,9 @@
 // rt export-shadertoy: the scene and the student's stage 09 GLSL as one self-contained fragment
 // shader in Shadertoy's form (mainImage, iResolution), the scene baked in as constants and only
 // the code the scene needs compiled in (the #defines of gpu_defines). Shadertoy compiles GLSL ES
-// 3.00, so the export drops `const` from local variables (ES allows it only on constant
-// initialisers) and writes no #line directives (its editor counts the file's own lines).
+// 3.00, which allows `const` only on constant initialisers: the export drops the qualifier with a
+// `#define const` before the shader's code, and writes no #line directives (its editor counts
+// the file's own lines). No line of a shader file is changed.
 //
 // On the "calls student code" side: the GLSL it writes is the student's.
 #pragma once

@@ -15,6 +15,7 @@
 #include "core/text_file.h"
 #include "gpu/gl/shader_source.h"
 #include "render/gpu/gpu_render.h"
+#include "render/gpu/shadertoy_export.h"
 #include "render/prepare.h"
 #include "scene/scene_loader.h"
 
@@ -111,6 +112,35 @@ TEST(GpuAssembly, StudentFilesReachTheCompilerAsWritten) {
     for (const std::string& problem : unexpected_changes(shader, student_files))
         ADD_FAILURE() << problem;
     EXPECT_EQ(student_files, 10) << "stage 09's seven files, stage 10's one, stage 11's two";
+}
+
+// The web page's shader (the GLSL ES export in page mode) holds the student's lines as written
+// too: each line the export says came from a student file is that line of the file.
+TEST(GpuAssembly, StudentFilesReachTheWebPageAsWritten) {
+    const PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/11-path-tracing/scenes/cornell_box.json"),
+                      {.width = 8, .height = 8});
+    const ShadertoyExport page = export_shadertoy(scene, RenderMode::Shaded, {.web_page = true});
+    const std::vector<std::string> exported = split_lines(page.text);
+    ASSERT_GE(exported.size(), page.line_origins.size());  // the export's own main comes last
+    std::map<std::string, std::vector<std::string>> files;
+    int compared = 0;
+    for (std::size_t i = 0; i < page.line_origins.size(); ++i) {
+        const std::string& origin = page.line_origins[i];
+        if (!origin.starts_with("stages/")) continue;
+        const std::string name = origin.substr(0, origin.rfind(':'));
+        const std::size_t line = std::stoul(origin.substr(origin.rfind(':') + 1));
+        if (!files.contains(name)) files[name] = split_lines(read_text(source_dir() / name));
+        ASSERT_LE(line, files[name].size()) << origin;
+        EXPECT_EQ(exported[i], files[name][line - 1]) << origin << " reached the page changed";
+        ++compared;
+    }
+    std::string names;
+    for (const auto& [name, lines] : files) names += " " + name;
+    // Stage 09's intersect, bvh, camera, shade and recursion, stage 10's sampling, stage 11's
+    // bsdf and path: all but textures.glsl and environment.glsl (the box has neither).
+    EXPECT_EQ(files.size(), 8u) << names;
+    EXPECT_GT(compared, 500);
 }
 
 // The check catches a rewrite such as the old one of name[i] into name_at(i): the assembled text

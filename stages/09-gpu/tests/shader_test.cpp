@@ -359,16 +359,19 @@ TEST(GpuShader, EndlessBvhLoopIsStoppedAndNamed) {
     EXPECT_NE(err.find(where), std::string::npos) << "expected " << where << " in\n" << err;
 }
 
-// Shadertoy's GLSL ES takes `const` on a local only with a constant initialiser, so the export
-// drops it from every local declaration, also one in the middle of a line.
-TEST(GpuShader, ShadertoyExportDropsLocalConstAnywhereOnTheLine) {
+// Shadertoy's GLSL ES takes `const` on a local only with a constant initialiser; the export keeps
+// the student's line as written, also a const in the middle of one, and drops the qualifier
+// with a #define.
+TEST(GpuShader, ShadertoyExportKeepsLocalConstAsWritten) {
     StudentCopy copy("const");
     insert_in_intersect_plane(copy.dir() / "intersect.glsl",
                               "    float st_a = ray.origin.x; const float st_b = st_a;");
     const PreparedScene scene = small_scene("02-intersections/scenes/spheres_normals.json");
     const std::string text =
         export_shadertoy(scene, RenderMode::Normals, {.student_dir = copy.dir()}).text;
-    EXPECT_NE(text.find("float st_a = ray.origin.x; float st_b = st_a;"), std::string::npos);
+    EXPECT_NE(text.find("float st_a = ray.origin.x; const float st_b = st_a;"), std::string::npos);
+    // GLSL ES's preprocessor drops the qualifier, before the shader's own code.
+    EXPECT_NE(text.find("\n#define const  //"), std::string::npos);
 }
 
 // A compile error in a Shadertoy export names the student's file and line, not the line of a
