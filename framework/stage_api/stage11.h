@@ -91,7 +91,9 @@ Color sample_light_mis(const PreparedScene& scene, const SurfacePoint& at, const
 // sampled at the path's 4th surface (and every later one) has multiplied the throughput: survive
 // with q = min(max component of the throughput, 0.95), divide the throughput by q.
 // Random numbers per bounce, in this order: u_light, u (sample_light_mis), u_lobe, u
-// (sample_bsdf), then the roulette's. A ray that escapes sees scene.background.
+// (sample_bsdf), then the roulette's. A ray that escapes brings back background(scene, its
+// direction) (render/background.h): the scene's environment (stage 08) when it has one, else its
+// background colour.
 Color path_radiance(const PreparedScene& scene, const Ray& ray, SampleStream& stream);
 
 }  // namespace rt

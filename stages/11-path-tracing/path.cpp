@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/not_implemented.h"
+#include "render/background.h"
 #include "render/nearest_hit.h"
 #include "scene/area_light_hit.h"
 #include "stage_api/stage06.h"
@@ -108,7 +109,7 @@ Color path_radiance(const PreparedScene& scene, const Ray& camera_ray, SampleStr
             break;
         }
         if (!found) {
-            radiance += throughput * scene.background;
+            radiance += throughput * background(scene, ray.direction);  // the sky, if any
             break;
         }
         const SurfacePoint at = surface_point(scene, ray, hit);

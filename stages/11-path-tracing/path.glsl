@@ -4,8 +4,8 @@
 // rectangle_pdf, sphere_pdf) and stage 09's nearest_hit. shaders/path_support.glsl gives Onb
 // (onb_around, to_local, to_world), spawn_ray and nearest_area_light. The scene is global: the
 // area lights are area_lights[i] for i < int(sampling.seed_counts.z) (corner_kind.w's int bits:
-// 0 rectangle, 1 sphere), max_depth and background_color are uniforms, material_at(hit.material)
-// is a hit's material. The random numbers are rng_next() and rng_next2(), drawn in the order of
+// 0 rectangle, 1 sphere), max_depth is a uniform, background(direction) is the sky (stage 09's
+// environment_radiance) or background_color, material_at(hit.material) is a hit's material. The random numbers are rng_next() and rng_next2(), drawn in the order of
 // stage_api/stage11.h's path_radiance. The contracts are stage_api/stage11.h's, in float.
 
 float balance_heuristic(float pdf_f, float pdf_g) {
@@ -98,7 +98,7 @@ vec3 path_radiance(Ray camera_ray) {
             break;
         }
         if (!found) {
-            radiance += throughput * background_color;
+            radiance += throughput * background(ray.direction);  // the sky, if any
             break;
         }
         const SurfacePoint at = surface_point(ray, hit);

@@ -1,10 +1,12 @@
 // Stage 11 on the GPU (the optional part: stages/11-path-tracing/bsdf.glsl and path.glsl with
-// the GLSL of stages 09 and 10): both scenes rendered by `rt render --gpu`'s path against the CPU.
+// the GLSL of stages 09 and 10): the stage's scenes rendered by `rt render --gpu`'s path against
+// the CPU, and the sky's closed forms of path_test.cpp's Sky tests.
 //
 // The CPU image is the stage's reference, reference_images/11-path-tracing/<scene>.png: the CPU
 // reference solution at 2048 samples per pixel (`rt render SCENE --spp 2048`, docs/grading.md),
 // which rt-grade grades the CPU renders against. The GPU renders each scene at its own size and
-// samples (cornell_box 120 x 120 at 128, veach_mis 160 x 120 at 64), as `rt render --gpu` does,
+// samples (cornell_box 120 x 120 at 128, veach_mis and sky_spheres 160 x 120 and 160 x 100 at
+// 64), as `rt render --gpu` does,
 // and must pass the metric the CPU renders are graded with (stage 10's, grading.json): the mean
 // linear colour of each 8 x 8 block, re-encoded to 8-bit sRGB, may differ by at most 6 steps, in
 // at most 1.5 % of the pixels. Calibrated (2026-12, llvmpipe): the GPU with seeds 101-105 and the
@@ -22,6 +24,7 @@
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
 #include "scene/scene_loader.h"
+#include "sky_scene.h"
 #include "testing/gpu_sampled_runs.h"
 #include "testing/stage_test.h"
 #include "testing/temp_dir.h"
@@ -63,7 +66,26 @@ TEST_P(GpuPath, GpuMatchesCpu) {
                           << " (GPU against the CPU, 8x8 block means): " << r.summary();
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GpuPath, ::testing::Values("cornell_box", "veach_mis"),
+// Sky.* on the GPU: a Lambertian sphere under a constant sky is albedo x sky in every pixel it
+// covers, the sky elsewhere (path.glsl's escaped paths gather background(direction)); white in
+// white, the sphere disappears.
+TEST(GpuSky, ConvexSphereUnderAConstantSkyIsItsAlbedoTimesTheSky) {
+    const Image image = render_gpu(sphere_under_sky(0.6f, 0.8f), RenderMode::Shaded);
+    EXPECT_NEAR(image.at(16, 16).g, 0.6 * 0.8, 1e-3)
+        << "the sphere's centre: albedo x sky. 0 means path.glsl drops the sky: a path that "
+           "escapes brings back background(ray.direction)";
+    EXPECT_NEAR(image.at(0, 0).g, 0.8, 1e-3) << "a corner sees the sky";
+}
+
+TEST(GpuSky, WhiteFurnaceSphereDisappears) {
+    const Image image = render_gpu(sphere_under_sky(1, 0.5f), RenderMode::Shaded);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            ASSERT_NEAR(image.at(x, y).g, 0.5, 1e-3) << "pixel " << x << ", " << y;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GpuPath,
+                         ::testing::Values("cornell_box", "veach_mis", "sky_spheres"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
                          });

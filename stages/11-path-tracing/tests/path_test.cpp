@@ -1,13 +1,14 @@
 // Stage 11 tests of path.cpp: MIS weights sum to 1; white furnaces (closed white spheres whose
 // radiance is known in closed form) for emission, Russian roulette and next-event estimation
-// with MIS; and the direct light of a rectangle against stage 10's estimator (t-test). Each
-// test names the mistake it is built to catch. statistics.h (stage 10): false-failure rates.
+// with MIS; a sphere under a constant sky (closed form); and the direct light of a rectangle
+// against stage 10's estimator (t-test). Each test names the mistake it is built to catch. statistics.h (stage 10): false-failure rates.
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
 #include "remote/call_each.h"
 #include "render/prepare.h"
+#include "sky_scene.h"
 #include "sphere_bins.h"
 #include "stage_api/stage10.h"
 #include "stage_api/stage11.h"
@@ -128,6 +129,51 @@ TEST_F(Furnace, SphereLightInsideAWhiteSphereMatchesTheClosedForm) {
                   "missing cosine in next-event estimation? It returns f L |cos theta_i| / p_light"
                 : ": too dark. A light missed, a MIS weight too small, or roulette without the "
                   "division?");
+}
+
+RT_TEST_SUITE(Sky, "7-lit-by-the-sky");
+
+// path_radiance of camera rays from (0, 0, 4) that meet the sphere (within 0.2 of its centre's
+// direction), kSamples times (green channel).
+std::vector<double> sky_samples(const PreparedScene& scene, std::uint64_t seed) {
+    stats::Uniform random(seed);
+    const auto colors = testing::call_for<&path_radiance>(kSamples, [&](int i) {
+        const Vec2 u = random.next2();
+        const Vec3 aim(Real(0.4) * u.x - Real(0.2), Real(0.4) * u.y - Real(0.2), 0);
+        const Ray ray{Vec3(0, 0, 4), glm::normalize(aim - Vec3(0, 0, 4))};
+        return std::tuple(std::cref(scene), ray, SampleStream(seed, 0, std::uint64_t(i)));
+    });
+    std::vector<double> values;
+    for (const Color& c : colors) values.push_back(c.g);
+    return values;
+}
+
+TEST_F(Sky, ConvexSphereUnderAConstantSkyIsItsAlbedoTimesTheSky) {
+    // Every bounce off a convex sphere leaves it and meets the sky, radiance L in every
+    // direction, so each sample is exactly a L (the diffuse lobe's weight is its albedo a):
+    // closed form, no noise. A path that escapes must bring back background(scene, direction)
+    // (render/background.h), the sky; scene.background is black here.
+    const PreparedScene scene = sphere_under_sky(0.6f, 0.8f);
+    const stats::Estimate e = stats::estimate(sky_samples(scene, 83));
+    const double expected = 0.6 * 0.8;
+    EXPECT_NEAR(e.mean, expected, 1e-3)
+        << "the sphere's radiance is " << e.mean << ", expected albedo x sky = " << expected
+        << (e.mean < 0.01 ? ": black. A path that escapes brings back the sky, "
+                            "background(scene, ray.direction), not scene.background"
+                          : ": the sky found, but not a L: is the bounce's weight the albedo?");
+}
+
+TEST_F(Sky, WhiteFurnaceSphereDisappears) {
+    // The furnace test: a white sphere (albedo 1) in a white sky reflects all it receives, so it
+    // has the sky's radiance and cannot be told from it.
+    const PreparedScene scene = sphere_under_sky(1, 0.5f);
+    const stats::Estimate e = stats::estimate(sky_samples(scene, 84));
+    EXPECT_NEAR(e.mean, 0.5, 1e-3) << "a white sphere in a white sky has the sky's radiance 0.5; "
+                                      "it is "
+                                   << e.mean
+                                   << (e.mean < 0.01 ? ": the sky is not gathered by paths that "
+                                                       "escape (background(scene, direction))"
+                                                     : ": energy lost or gained at a bounce");
 }
 
 // The direct-light tests' scene: a grey Lambertian floor (k_d 0.6, no specular) at y = 0 under
