@@ -71,6 +71,17 @@ TEST_F(ShaderSource, LoopsAreListedAndDoWhileIsRefused) {
     EXPECT_EQ(s.stubs[0].key, 100002);
     EXPECT_NE(s.text.find("\n    while (n > 1) n /= 2;\n"), std::string::npos) << s.text;
 
+    // A head over two lines: Mesa's __LINE__ in the macro call is its last line, so the entry
+    // covers both.
+    write("student/a.glsl",
+          "int f(int n) {\n    while (n >\n           1) n /= 2;\n    return n;\n}\n");
+    const AssembledShader two = assemble_shader(dir_ / "main.comp", {dir_ / "student"}, "");
+    ASSERT_EQ(two.stubs.size(), 1u);
+    EXPECT_EQ(two.stubs[0].lines, 2);
+    EXPECT_NE(two.text.find("if (line >= 100002 && line < 100002 + 2) return 0;"),
+              std::string::npos)
+        << two.text;
+
     write("student/a.glsl",
           "int f(int n) {\n    do {\n        n /= 2;\n    } while (n > 1);\n"
           "    return n;\n}\n");

@@ -144,10 +144,25 @@ class Assembler {
                          "a-gpu)";
             return false;
         }
-        if (std::regex_search(code, while_re))
+        if (open_loop_ >= 0) {  // a while head that did not close on its line: its next line
+            out_.stubs[std::size_t(open_loop_)].lines += 1;
+            open_depth_ += paren_depth(code);
+            if (open_depth_ <= 0) open_loop_ = -1;
+        } else if (std::regex_search(code, m, while_re)) {
             out_.stubs.push_back({function, file, number,
                                   "stages/09-gpu/README.md#what-changes-on-a-gpu", true, key});
+            // GLSL's __LINE__ in a macro call that spans lines may be any of them (Mesa's is the
+            // last): the entry covers the whole head.
+            open_depth_ = paren_depth(code.substr(std::size_t(m.position(0))));
+            if (open_depth_ > 0) open_loop_ = int(out_.stubs.size()) - 1;
+        }
         return true;
+    }
+
+    // Opening minus closing parentheses.
+    static int paren_depth(const std::string& code) {
+        return int(std::count(code.begin(), code.end(), '(')) -
+               int(std::count(code.begin(), code.end(), ')'));
     }
 
     // Whether a guard (guard_names) holds: one of its names is defined by the host's `defines`
@@ -169,6 +184,8 @@ class Assembler {
     AssembledShader& out_;
     std::set<fs::path> included_;
     std::set<std::string> derived_;  // names the shader #defines itself
+    int open_loop_ = -1;             // the stub entry of a while head still open, or -1
+    int open_depth_ = 0;             // its parentheses still open
 };
 
 }  // namespace
@@ -191,8 +208,12 @@ std::string stub_index_function(const std::vector<ShaderStub>& stubs,
         "int rt_stub_index(int line) {\n";
     for (std::size_t k = 0; k < stubs.size() && k < lines.size(); ++k) {
         if (lines[k] <= 0) continue;
-        text += "    if (line == " + std::to_string(lines[k]) + ") return " + std::to_string(k) +
-                ";  // " + stubs[k].file + ":" + std::to_string(stubs[k].line) + "\n";
+        const std::string first = std::to_string(lines[k]);
+        const std::string where = stubs[k].lines == 1 ? "line == " + first
+                                                      : "line >= " + first + " && line < " + first +
+                                                            " + " + std::to_string(stubs[k].lines);
+        text += "    if (" + where + ") return " + std::to_string(k) + ";  // " + stubs[k].file +
+                ":" + std::to_string(stubs[k].line) + "\n";
     }
     return text + "    return -1;\n}\n";
 }

@@ -29,7 +29,8 @@ struct ShaderStub {
     // Not a stub but a `while` loop, guarded: it reports when it runs kLoopLimit times in one
     // invocation (llvmpipe would end it silently and go on with wrong values).
     bool loop = false;
-    long key = 0;  // __LINE__ on its line: the file's number * 100000 + the line
+    long key = 0;   // __LINE__ on its line: the file's number * 100000 + the line
+    int lines = 1;  // the lines it spans (a while head may go on over several)
 };
 
 struct AssembledShader {
