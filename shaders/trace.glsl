@@ -99,6 +99,7 @@ bool nonzero(vec3 c) { return c.r > 0.0 || c.g > 0.0 || c.b > 0.0; }
 // as its maps colour it there, the normal it is lit with.
 struct PreparedHit {
     SurfacePoint at;
+    int material_index;  // for light linking
     Material material;
     vec3 lighting_normal;
     vec3 to_viewer;
@@ -107,6 +108,7 @@ struct PreparedHit {
 PreparedHit prepare_hit(Ray ray, Hit hit) {
     PreparedHit p;
     p.material = material_at(hit.material);
+    p.material_index = hit.material;
     p.at = surface_point(ray, hit);
     p.to_viewer = -normalize(ray.direction);
     p.lighting_normal = p.at.normal;
@@ -180,6 +182,20 @@ vec3 sampled_direct(PreparedHit p) {
 }
 #endif
 
+#ifdef HAS_LIGHT_LINKS
+// Light linking (scene/scene.h's light_reaches): GpuLight's direction.w holds the mask of the
+// first kLinkedMaterials materials the light lights, intensity.w its flags.
+bool light_reaches(int light, int material) {
+    const Light l = lights_at(light);
+    if (material >= kLinkedMaterials)
+        return (floatBitsToInt(l.intensity.w) & kLightReachRest) != 0;
+    return ((floatBitsToUint(l.direction.w) >> uint(material)) & 1u) != 0u;
+}
+bool light_casts_shadows(int light) {
+    return (floatBitsToInt(lights_at(light).intensity.w) & kLightCastsShadows) != 0;
+}
+#endif
+
 // The light a hit sends back before reflected and refracted rays (render/shade.cpp's
 // local_light without the bounce): direct light with the shadows, and stage 10's area lights
 // and ambient occlusion, which replaces the ambient term as the bounce does.
@@ -190,9 +206,17 @@ vec3 local_light(PreparedHit p) {
 #endif
     vec3 visibility[MAX_LIGHTS];
     for (int i = 0; i < MAX_LIGHTS; ++i) visibility[i] = vec3(1);
+#ifdef HAS_LIGHT_LINKS
+    for (int i = 0; i < light_count; ++i)
+        if (!light_reaches(i, p.material_index)) visibility[i] = vec3(0);
+#endif
 #ifdef HAS_SHADOWS
-    // Only lights whose Blinn-Phong term is not zero get a shadow ray.
+    // Only lights whose Blinn-Phong term is not zero get a shadow ray; with light linking, not
+    // an unlinked light (it stays dark) or a shadowless one (it stays lit).
     for (int i = 0; i < light_count && scene_has(kFeatureShadows); ++i) {
+#ifdef HAS_LIGHT_LINKS
+        if (visibility[i] == vec3(0) || !light_casts_shadows(i)) continue;
+#endif
         const LightSample s = illuminate(i, p.at.point);
         visibility[i] = vec3(0);
         if (blinn_phong(material, p.lighting_normal, p.to_viewer, s.direction, s.intensity) ==

@@ -54,9 +54,18 @@ GpuScene pack_scene(const PreparedScene& scene) {
                              glm::ivec4(e.faces[0], e.faces[1], e.faces[2], e.faces[3]),
                              glm::ivec4(e.faces[4], e.faces[5], 0, 0),
                              glm::vec4(e.intensity, e.rotate_y, 0, 0)});
-    for (const Light& l : scene.lights)
+    // The reach mask of the scene's own materials only: a small int for a scene of few of them
+    // (a Shadertoy export bakes it as a float's bits, which must not be a NaN).
+    const std::size_t materials = std::min<std::size_t>(scene.materials.size(), kLinkedMaterials);
+    const std::uint32_t present =
+        materials == kLinkedMaterials ? ~std::uint32_t(0) : (std::uint32_t(1) << materials) - 1;
+    for (const Light& l : scene.lights) {
+        const int links =
+            (l.reach_rest ? kLightReachRest : 0) | (l.casts_shadows ? kLightCastsShadows : 0);
         g.lights.push_back({v4(l.position, int_bits(l.kind == LightKind::Point ? 0 : 1)),
-                            v4(l.direction), v4(l.intensity), v4(l.attenuation)});
+                            v4(l.direction, int_bits(int(l.reach_mask & present))),
+                            v4(l.intensity, int_bits(links)), v4(l.attenuation)});
+    }
     g.bvh_nodes = scene.bvh.nodes;
     g.bvh_primitives = scene.bvh.primitives;
     const SamplingSettings& s = scene.sampling;

@@ -80,10 +80,13 @@ struct alignas(16) GpuEnvironment {
 };
 struct alignas(16) GpuLight {
     glm::vec4 position_kind;  // xyz position, w kind (int bits: 0 point, 1 directional)
-    glm::vec4 direction;
-    glm::vec4 intensity;
+    glm::vec4 direction;      // w: Light::reach_mask (int bits)
+    glm::vec4 intensity;      // w: the flags below (int bits)
     glm::vec4 attenuation;
 };
+// GpuLight::intensity.w's bits: Light::reach_rest and Light::casts_shadows.
+inline constexpr int kLightReachRest = 1;
+inline constexpr int kLightCastsShadows = 2;
 // BvhNode (accel/bvh.h) goes as it is: {vec3 min; uint first; vec3 max; uint count}.
 
 // Stage 10, in the uniform block SampledScene (binding 0, std140: only vec4 members, so the same

@@ -89,6 +89,9 @@ std::string shader_prelude() {
                       named("kProjectionOrthographic", Projection::Orthographic),
                       named("kLightPoint", LightKind::Point),
                       named("kLightDirectional", LightKind::Directional),
+                      named("kLightReachRest", kLightReachRest),
+                      named("kLightCastsShadows", kLightCastsShadows),
+                      named("kLinkedMaterials", kLinkedMaterials),
                       named("kPixelFilterBox", PixelFilter::Box),
                       named("kPixelFilterTent", PixelFilter::Tent)}) +
            constants({named("kDebugValue", kDebugValue), named("kDebugRay", kDebugRay),

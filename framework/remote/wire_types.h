@@ -50,6 +50,7 @@ RT_WIRE_BOOLS(SurfacePoint, v.front_face)
 RT_WIRE_BOOLS(SecondaryRays, v.reflected.valid, v.refracted.valid, v.total_internal_reflection)
 RT_WIRE_BOOLS(FogEvent, v.scattered)
 RT_WIRE_BOOLS(BsdfSample, v.delta)
+RT_WIRE_BOOLS(Light, v.reach_rest, v.casts_shadows)
 #undef RT_WIRE_BOOLS
 template <class T>
 requires kBytesWithBools<T>

@@ -63,8 +63,10 @@ void shadow_lights(const PreparedScene& scene, const SurfacePoint& at, const Mat
                    const Vec3& normal, const Vec3& to_viewer, std::vector<Color>& visibility,
                    TraceObserver* observer) {
     const bool any_hit_shadows = uses_bvh(scene) && !scene.features.refraction;
-    visibility.assign(scene.lights.size(), Color(0));
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        // Light linking (link_lights): an unlinked light stays dark, a shadowless one lit.
+        if (visibility[i] == Color(0) || !scene.lights[i].casts_shadows) continue;
+        visibility[i] = Color(0);
         const LightSample sample = illuminate(scene.lights[i], at.point);
         if (blinn_phong(material, normal, to_viewer, sample.direction, sample.intensity) ==
             Color(0))
@@ -80,6 +82,15 @@ void shadow_lights(const PreparedScene& scene, const SurfacePoint& at, const Mat
         if (observer) observer->shadow(at, i, sample, transmittance);
         visibility[i] = transmittance;
     }
+}
+
+// Light linking: each light's visibility 1 where it lights the hit's material, 0 where it does
+// not (Light::reach_mask); shadows then darken the linked ones.
+void link_lights(const PreparedScene& scene, int material, std::vector<Color>& visibility) {
+    visibility.assign(scene.lights.size(), Color(1));
+    if (!scene.features.light_links) return;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        if (!light_reaches(scene.lights[i], material)) visibility[i] = Color(0);
 }
 
 // Stage 10's fog (optional): each light's visibility from `at` times the fraction of its light
@@ -118,6 +129,7 @@ Color fog_scattering(const PreparedScene& scene, const Vec3& point) {
 // the normal it is lit with.
 struct PreparedHit {
     SurfacePoint at;
+    int material_index = 0;              // for light linking
     const Material* material = nullptr;  // the scene's, or `textured`
     Material textured;
     Vec3 lighting_normal{0};
@@ -162,6 +174,7 @@ void prepare_hit(const PreparedScene& scene, const Ray& ray, const Hit& hit,
     // Stage 07: the material as its maps colour it here, and the normal-mapped normal. Only
     // textured scenes pay for the copy (and run stage 07 code).
     p.material = &scene_material;
+    p.material_index = known ? hit.material : 0;
     if (scene.features.textures || scene.features.normal_maps) {
         p.textured = scene_material;
         apply_textures(scene, hit, p.at, p.to_viewer, p.textured, p.lighting_normal, rays);
@@ -186,14 +199,13 @@ Color local_light(const PreparedScene& scene, const PreparedHit& p, TraceObserve
         material = &without_ambient;
     }
     Color local;
-    if (scene.features.shadows || scene.features.fog) {
+    if (scene.features.shadows || scene.features.fog || scene.features.light_links) {
         // One scratch array a thread: no allocation per hit once it has grown.
         thread_local std::vector<Color> visibility;
+        link_lights(scene, p.material_index, visibility);
         if (scene.features.shadows)
             shadow_lights(scene, p.at, *material, p.lighting_normal, p.to_viewer, visibility,
                           observer);
-        else
-            visibility.assign(scene.lights.size(), Color(1));
         if (scene.features.fog) attenuate_by_fog(scene, p.at, visibility);
         local = direct_light(scene, *material, p.at.point, p.lighting_normal, p.to_viewer,
                              LightVisibility{visibility});

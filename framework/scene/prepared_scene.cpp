@@ -43,6 +43,7 @@ Features scene_features(const Scene& scene) {
     for (const Light& l : scene.lights) {
         f.point_lights |= l.kind == LightKind::Point;
         f.directional_lights |= l.kind == LightKind::Directional;
+        f.light_links |= l.reach_mask != ~std::uint32_t(0) || !l.reach_rest || !l.casts_shadows;
     }
     f.shadows = scene.shadows && !scene.lights.empty();
     f.environment = scene.environment.kind != EnvironmentKind::None;
@@ -87,6 +88,7 @@ std::string Features::describe() const {
     add(point_lights, "point");
     add(directional_lights, "directional");
     add(shadows, "shadows");
+    add(light_links, "linked");
     if (textures || normal_maps) {
         s += " |";
         add(textures, "textures");

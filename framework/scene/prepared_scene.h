@@ -18,6 +18,7 @@ struct Features {
     bool reflection = false, refraction = false;
     bool point_lights = false, directional_lights = false;
     bool shadows = false;      // the scene asks for shadows and has lights
+    bool light_links = false;  // a light lights some materials only, or casts no shadows
     bool textures = false;     // a material has a diffuse, specular or emissive map (stage 07)
     bool normal_maps = false;  // a material has a normal map (stage 07)
     // The kinds of texture the slots use (what a shader must compile): images, the two

@@ -74,7 +74,21 @@ struct Light {
     Vec3 direction{0, -1, 0};   // directional lights: unit direction the light travels
     Color intensity{1};         // I_L
     Vec3 attenuation{1, 0, 1};  // point lights: 1 / (c + l r + q r^2)
+    // Light linking (a fill light that lights some surfaces only): material m < kLinkedMaterials
+    // is lit when bit m of reach_mask is set, a later one when reach_rest is; casts_shadows
+    // false: nothing blocks this light. The framework applies both through the visibility it
+    // gives direct_light (render/shade.cpp), so no stage's code tests them.
+    std::uint32_t reach_mask = ~std::uint32_t(0);
+    bool reach_rest = true;
+    bool casts_shadows = true;
 };
+inline constexpr int kLinkedMaterials = 32;  // the materials a light's "only"/"except" may name
+
+// Whether `light` lights a surface of material `material` (light linking).
+inline bool light_reaches(const Light& light, int material) {
+    if (material >= kLinkedMaterials) return light.reach_rest;
+    return ((light.reach_mask >> material) & 1u) != 0;
+}
 
 // Stage 10: lights with an area, sampled for soft shadows. They emit `radiance` (L_e, the same
 // in every direction of their lit side) and are not surfaces: rays that miss everything else

@@ -44,6 +44,7 @@ class SceneSections : public SceneReader {
     void read_lights(const json& root);
     void read_light(const json& object, const std::string& pointer);
     void read_area_light(const json& object, const std::string& pointer, AreaLightKind kind);
+    void read_light_links(const json& object, const std::string& pointer, Light& light) const;
     // Stage 10, optional: "fog" (after the lights: fog and area lights do not mix).
     void read_fog(const json& root);
     // Fails at the first axis where `max` is below `min` (pointers: the two corners' arrays).

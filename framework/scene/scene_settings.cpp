@@ -35,16 +35,25 @@ const SchemaElement kCamera{"\"camera\"",
                              {"shutter"}}};
 const SchemaElement kFog{
     "\"fog\"", "", {"Fog"}, {{"density", kRequired}, {"albedo"}, {"min"}, {"max"}}};
-const SchemaElement kPointLight{
-    "a point light",
-    "point",
-    {"Lights"},
-    {{"type", kRequired}, {"position", kRequired}, {"intensity"}, {"attenuation"}}};
-const SchemaElement kDirectionalLight{
-    "a directional light",
-    "directional",
-    {"Lights"},
-    {{"type", kRequired}, {"direction", kRequired}, {"intensity"}}};
+const SchemaElement kPointLight{"a point light",
+                                "point",
+                                {"Lights", "Light linking"},
+                                {{"type", kRequired},
+                                 {"position", kRequired},
+                                 {"intensity"},
+                                 {"attenuation"},
+                                 {"only"},
+                                 {"except"},
+                                 {"shadows"}}};
+const SchemaElement kDirectionalLight{"a directional light",
+                                      "directional",
+                                      {"Lights", "Light linking"},
+                                      {{"type", kRequired},
+                                       {"direction", kRequired},
+                                       {"intensity"},
+                                       {"only"},
+                                       {"except"},
+                                       {"shadows"}}};
 const SchemaElement kRectangleLight{"a rectangle light",
                                     "rectangle",
                                     {"Lights", "Sampling"},
@@ -286,7 +295,42 @@ void SceneSections::read_light(const json& object, const std::string& pointer) {
             at("direction"), "give the direction the light travels, e.g. [0, -1, 0]");
     }
     if (const json* v = member(object, "intensity")) light.intensity = color(*v, at("intensity"));
+    read_light_links(object, pointer, light);
     scene_.lights.push_back(light);
+}
+
+// Light linking: "only" (the materials the light lights) or "except" (those it does not), and
+// "shadows": false (nothing blocks it).
+void SceneSections::read_light_links(const json& object, const std::string& pointer,
+                                     Light& light) const {
+    auto at = [&](const char* key) { return JsonPositions::child(pointer, key); };
+    const json* only = member(object, "only");
+    const json* except = member(object, "except");
+    if (only && except)
+        fail_value(at("except"), "a light takes \"only\" or \"except\", not both",
+                   "list the materials it lights under \"only\", or those it does not under "
+                   "\"except\"");
+    if (const json* list = only ? only : except) {
+        const std::string where = at(only ? "only" : "except");
+        if (!list->is_array() || list->empty())
+            fail_value(where, label(where) + " must be a list of material names",
+                       "write e.g. [\"gold\"]");
+        std::uint32_t named = 0;
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const std::string item = JsonPositions::child(where, i);
+            const int m = material_ref((*list)[i], item);
+            if (m >= kLinkedMaterials)
+                fail_value(item,
+                           "material " + std::to_string(m) + " is past the " +
+                               std::to_string(kLinkedMaterials) + " a light can be linked to",
+                           "list the materials lights are linked to among the first " +
+                               std::to_string(kLinkedMaterials));
+            named |= std::uint32_t(1) << m;
+        }
+        light.reach_mask = only ? named : ~named;
+        light.reach_rest = !only;
+    }
+    if (const json* v = member(object, "shadows")) light.casts_shadows = boolean(*v, at("shadows"));
 }
 
 // Stage 10's area lights: a rectangle or a sphere of constant radiance.

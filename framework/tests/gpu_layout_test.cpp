@@ -311,7 +311,10 @@ TEST(GpuLayout, PackKeepsEveryValue) {
     EXPECT_EQ(g.materials[0].specular_shininess, glm::vec4(0.25f, 0.25f, 0.25f, 64));
     EXPECT_EQ(g.materials[0].transmissive_ior.w, 1.33f);
     EXPECT_EQ(g.lights[0].position_kind.w, int_bits(1));
-    EXPECT_EQ(g.lights[0].intensity, glm::vec4(2, 2, 2, 0));
+    // w: the light's links, every material reached (the scene's one: mask 1) and shadows cast.
+    EXPECT_EQ(g.lights[0].intensity,
+              glm::vec4(2, 2, 2, int_bits(kLightReachRest | kLightCastsShadows)));
+    EXPECT_EQ(g.lights[0].direction.w, int_bits(1));
     EXPECT_EQ(g.materials[0].maps, glm::ivec4(-1));
 
     // Textures: the slots, the table, the images and the texels.

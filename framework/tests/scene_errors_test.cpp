@@ -229,6 +229,18 @@ TEST(SceneLoader, OtherMistakesAreReported) {
         {"{\"lights\": [{\"type\": \"point\", \"position\": [0, 0, 0], \"attenuation\": [0, 0, "
          "0]}]}",
          "test.json:1:69: error: \"attenuation\" must not be all zero"},
+        // Light linking.
+        {"{\"materials\": [{\"name\": \"a\"}], \"lights\": [{\"type\": \"point\", \"position\": "
+         "[0, "
+         "0, 0], \"only\": [\"a\"], \"except\": [\"a\"]}]}",
+         "test.json:1:109: error: a light takes \"only\" or \"except\", not both"},
+        {"{\"materials\": [{\"name\": \"gold\"}], \"lights\": [{\"type\": \"point\", \"position\": "
+         "[0, 0, 0], \"only\": [\"gol\"]}]}",
+         "test.json:1:96: error: unknown material \"gol\"; did you mean \"gold\"?"},
+        {"{\"lights\": [{\"type\": \"point\", \"position\": [0, 0, 0], \"only\": []}]}",
+         "test.json:1:62: error: \"only\" must be a list of material names"},
+        {"{\"lights\": [{\"type\": \"directional\", \"direction\": [0, -1, 0], \"shadows\": 1}]}",
+         "test.json:1:73: error: \"shadows\" must be true or false"},
         {"{\"surfaces\": [{\"type\": \"mesh\", \"file\": \"m.obj\", \"scale\": 0}]}",
          "test.json:1:58: error: \"scale\" must not be 0"},
         {"{\"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, "

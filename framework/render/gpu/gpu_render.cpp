@@ -224,6 +224,7 @@ std::string gpu_defines(const PreparedScene& scene, RenderMode mode, bool uber) 
     define(scene.accelerator == Accelerator::Bvh && scene.bvh.built(), "HAS_BVH");
     const bool shaded = mode == RenderMode::Shaded;
     define(shaded && scene.features.shadows, "HAS_SHADOWS");
+    define(shaded && scene.features.light_links, "HAS_LIGHT_LINKS");
     define(shaded && scene.features.reflection, "HAS_REFLECTION");
     define(shaded && scene.features.refraction, "HAS_REFRACTION");
     const Features& f = scene.features;

@@ -60,7 +60,8 @@ std::string bits_literal(float x) {
     std::memcpy(&bits, &x, sizeof bits);
     if (bits < 0 || bits >= (1 << 23))
         throw GpuError("an index of " + std::to_string(bits) +
-                       " (a material or light kind) cannot be baked into a constant");
+                       " (a material, a light's kind or its linked materials) cannot be baked "
+                       "into a constant");
     return literal(x);
 }
 
@@ -265,8 +266,8 @@ std::string plane_box_light_constants(const gpu::GpuScene& g) {
     s += const_array(
         "Light", "lights", g.lights,
         [](const gpu::GpuLight& l) {
-            return "Light(" + v4(l.position_kind, true) + ", " + v4(l.direction) + ", " +
-                   v4(l.intensity) + ", " + v4(l.attenuation) + ")";
+            return "Light(" + v4(l.position_kind, true) + ", " + v4(l.direction, true) + ", " +
+                   v4(l.intensity, true) + ", " + v4(l.attenuation) + ")";
         },
         "Light(" + kZero4 + ", " + kZero4 + ", " + kZero4 + ", " + kZero4 + ")");
     return s;

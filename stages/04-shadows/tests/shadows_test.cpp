@@ -1,5 +1,6 @@
 // Stage 04 tests: the shadow ray, self-intersection (acne) far from the origin and at grazing
-// light, thin occluders, and light filtered through transparent surfaces.
+// light, thin occluders, light filtered through transparent surfaces, and light linking (the
+// visibility the framework gives direct_light).
 #include <cmath>
 #include <source_location>
 #include <sstream>
@@ -18,6 +19,7 @@ namespace {
 RT_TEST_SUITE(ShadowRayContract, "shadow-rays");
 RT_TEST_SUITE(Acne, "robust-ray-origins");
 RT_TEST_SUITE(Transmittance, "coloured-shadows-through-glass");
+RT_TEST_SUITE(LightLinking, "light-linking");
 
 Light point_light(Vec3 position) {
     Light l;
@@ -97,14 +99,17 @@ TEST_F(ShadowRayContract, KeepsThePointsTime) {
 struct AcneCount {
     int acne = 0, lit = 0, pixels = 0;
 };
+// `scene` rendered shaded, with its shadows on or off.
+Image render_with_shadows(PreparedScene scene, bool shadows) {
+    scene.shadows = shadows;
+    refresh_features(scene);
+    return render(scene, RenderMode::Shaded);
+}
+
 AcneCount count_acne(PreparedScene scene) {
     scene.mode = RenderMode::Shaded;
-    scene.shadows = false;
-    refresh_features(scene);
-    const Image unshadowed = render(scene, RenderMode::Shaded);
-    scene.shadows = true;
-    refresh_features(scene);
-    const Image shadowed = render(scene, RenderMode::Shaded);
+    const Image unshadowed = render_with_shadows(scene, false);
+    const Image shadowed = render_with_shadows(scene, true);
     AcneCount count;
     count.pixels = int(shadowed.pixels.size());
     for (std::size_t i = 0; i < shadowed.pixels.size(); ++i) {
@@ -277,6 +282,56 @@ TEST_F(Transmittance, RangeStillEndsAtTheLightPastGlass) {
         "point light at height 4, a glass triangle at height 3 and an opaque sphere beyond the "
         "light (4.5 to 6.5): k_t; after moving the origin past a transparent surface, shorten "
         "t_range.max by the distance moved, so the range still ends at the light");
+}
+
+// Two diffuse spheres side by side, materials 0 (left) and 1 (right), seen from the front under
+// one point light at the camera; no ambient term, a black background.
+PreparedScene two_spheres() {
+    PreparedScene scene;
+    scene.camera =
+        make_look_at_camera(Projection::Perspective, Vec3(0, 0, 6), Vec3(0), Vec3(0, 1, 0), 40, 2);
+    scene.image = {64, 32};
+    scene.max_depth = 0;
+    Material left;
+    left.diffuse = Color(0.8f);
+    Material right = left;
+    scene.materials = {left, right};
+    scene.spheres = {Sphere{Vec3(-1.2f, 0, 0), 1, 0}, Sphere{Vec3(1.2f, 0, 0), 1, 1}};
+    scene.lights = {point_light(Vec3(0, 0, 6))};
+    refresh_features(scene);
+    return scene;
+}
+
+TEST_F(LightLinking, ALightLinkedToAMaterialLightsOnlyIt) {
+    // The light says "only": [material 0]: the framework gives it visibility 0 at the right
+    // sphere, and direct_light must leave it out there (stage 03's visibility[light]).
+    PreparedScene scene = two_spheres();
+    scene.lights[0].reach_mask = 1;
+    scene.lights[0].reach_rest = false;
+    refresh_features(scene);
+    const Image image = render(scene, RenderMode::Shaded);
+    const Color left = image.at(16, 16), right = image.at(48, 16);
+    EXPECT_GT(left.g, 0.05f) << "the linked sphere (left) must be lit";
+    EXPECT_EQ(right, Color(0))
+        << "the right sphere is not linked to the light, which gets visibility 0 there: "
+           "direct_light must multiply each light's term by visibility[light]";
+}
+
+TEST_F(LightLinking, AShadowlessLightIsNotBlocked) {
+    // A small sphere between the light (right of the camera) and the left sphere. With
+    // "shadows": false the light is blocked by nothing: the image is the one without shadows,
+    // pixel for pixel.
+    PreparedScene scene = two_spheres();
+    scene.spheres.push_back(Sphere{Vec3(-0.6f, 0.2f, 2), Real(0.4), 1});
+    scene.lights[0].position = Vec3(3, 2, 6);
+    const Image open = render_with_shadows(scene, false);
+    const Image blocked = render_with_shadows(scene, true);
+    scene.lights[0].casts_shadows = false;
+    const Image lit = render_with_shadows(scene, true);
+    EXPECT_NE(blocked.pixels, open.pixels) << "the small sphere should cast a shadow";
+    EXPECT_EQ(lit.pixels, open.pixels)
+        << "a light with \"shadows\": false is blocked by nothing: the framework gives it "
+           "visibility 1 without a shadow ray";
 }
 
 }  // namespace

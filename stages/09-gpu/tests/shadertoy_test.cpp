@@ -63,12 +63,14 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Shadertoy,
                                            "02-intersections/scenes/triangles_normals.json"),
                          shadertoy_case);
 
-// The largest exports that still fit (120 boxes; a 160-triangle mesh and its BVH). Not graded
-// (grading.json): llvmpipe takes about 14 s of CPU to compile each one's baked arrays, in every
-// grading, where the scenes above already reach every line of the student's GLSL.
+// The largest exports that still fit (120 boxes; a 160-triangle mesh and its BVH), and the
+// linked fill light (its lights carry their linking in float bits). Not graded (grading.json):
+// llvmpipe takes about 14 s of CPU to compile each large one's baked arrays, in every grading,
+// where the scenes above already reach every line of the student's GLSL.
 INSTANTIATE_TEST_SUITE_P(Ungraded, Shadertoy,
                          ::testing::Values("05-recursion/scenes/whitted.json",
-                                           "02-intersections/scenes/mesh_normals.json"),
+                                           "02-intersections/scenes/mesh_normals.json",
+                                           "04-shadows/scenes/fill_light.json"),
                          shadertoy_case);
 
 }  // namespace
