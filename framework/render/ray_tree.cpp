@@ -86,6 +86,9 @@ void node_text(const PreparedScene& scene, const RayNode& n, int indent, std::st
                primitive_name(scene, n.hit_record.primitive) + ", material " +
                material_name(scene, n.hit_record.material) +
                (n.surface.front_face ? ", outside" : ", inside") + "\n";
+        if (scene.features.light_links)
+            out +=
+                pad + "  light linking: " + light_links_text(scene, n.hit_record.material) + "\n";
         for (const ShadowRecord& s : n.shadows)
             out += pad + "  shadow ray to light " + std::to_string(s.light) + ": " +
                    (s.blocked_by < 0 ? std::string("unblocked")
@@ -190,6 +193,21 @@ PixelTree debug_pixel(const PreparedScene& scene, int x, int y) {
     tree.y = y;
     tree.color = shade_pixel(scene, x, y, &tree.root);
     return tree;
+}
+
+std::string light_links_text(const PreparedScene& scene, int material) {
+    std::string reached, shadowless, not_reached;
+    auto add = [](std::string& list, std::size_t i) {
+        list += (list.empty() ? "" : ", ") + std::to_string(i);
+    };
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
+        add(light_reaches(light, material) ? reached : not_reached, i);
+        if (light_reaches(light, material) && !light.casts_shadows) add(shadowless, i);
+    }
+    return "reached by lights " + (reached.empty() ? "none" : reached) +
+           (shadowless.empty() ? "" : " (no shadows: " + shadowless + ")") + "; not by " +
+           (not_reached.empty() ? "any" : not_reached);
 }
 
 std::string ray_tree_text(const PreparedScene& scene, const PixelTree& tree) {

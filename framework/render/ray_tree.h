@@ -20,6 +20,8 @@ struct PixelTree {
 // tree names them (the GPU's --debug-pixel too).
 std::string primitive_name(const PreparedScene& scene, int id);
 std::string material_name(const PreparedScene& scene, int m);
+// Light linking at a hit of `material`: "reached by lights 0, 1 (no shadows: 1); not by 2".
+std::string light_links_text(const PreparedScene& scene, int material);
 
 // Traces pixel (x, y) of the shaded render, recording every ray.
 PixelTree debug_pixel(const PreparedScene& scene, int x, int y);

@@ -148,6 +148,28 @@ TEST(SceneLoader, FullSceneFillsTheFlatArrays) {
     EXPECT_TRUE(scene_features(scene).point_lights && scene_features(scene).directional_lights);
 }
 
+// Light linking: "only" and "except" become a mask of the first 32 materials and whether later
+// ones are lit; "shadows": false clears casts_shadows (docs/scene-format.md#light-linking).
+TEST(SceneLoader, LightLinksAreReadAsMasks) {
+    const rt::Scene scene = rt::parse_scene(
+        R"({"materials": [{"name": "a"}, {"name": "b"}, {"name": "c"}],
+            "lights": [{"type": "point", "position": [0, 1, 0], "only": ["b"], "shadows": false},
+                       {"type": "directional", "direction": [0, -1, 0], "except": ["a", 2]},
+                       {"type": "point", "position": [0, 2, 0]}]})",
+        "links.json", ".");
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[0].reach_mask, 0b010u);
+    EXPECT_FALSE(scene.lights[0].reach_rest);
+    EXPECT_FALSE(scene.lights[0].casts_shadows);
+    EXPECT_TRUE(rt::light_reaches(scene.lights[0], 1));
+    EXPECT_FALSE(rt::light_reaches(scene.lights[0], 40)) << "\"only\": later materials are dark";
+    EXPECT_EQ(scene.lights[1].reach_mask, ~0b101u);
+    EXPECT_TRUE(scene.lights[1].reach_rest);
+    EXPECT_TRUE(rt::light_reaches(scene.lights[1], 40)) << "\"except\": later materials are lit";
+    EXPECT_EQ(scene.lights[2].reach_mask, ~0u) << "no linking: every material";
+    EXPECT_TRUE(scene.lights[2].casts_shadows);
+}
+
 TEST(SceneLoader, DefaultMaterialCanBeNamed) {
     rt::Scene scene = parse(R"({"surfaces": [
         {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "default"}]})");

@@ -14,6 +14,7 @@
 #include "render/accelerate.h"
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
+#include "render/ray_tree.h"
 #include "render/render.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
@@ -342,6 +343,16 @@ TEST(ViewScript, ErrorsNameTheLineAndHowToWriteIt) {
     EXPECT_NE(script_error("set shadows maybe\n").find("on or off"), std::string::npos);
     EXPECT_NE(script_error("screenshot a/b\n").find("without folders"), std::string::npos);
     EXPECT_NE(script_error("key X\n").find("write key S|R|W|P|Q"), std::string::npos);
+}
+
+// The panel's (and --debug-pixel's) light-linking line for a hit: the lights that reach its
+// material, those of them that cast no shadows, and those that do not reach it.
+TEST(RayTree, NamesTheLightsThatReachAHit) {
+    const PreparedScene scene =
+        prepare_scene(load_scene(source_dir() / "stages/04-shadows/scenes/fill_light.json"));
+    EXPECT_EQ(light_links_text(scene, 1), "reached by lights 0, 1 (no shadows: 1); not by any")
+        << "material 1, gold, which the fill light is linked to";
+    EXPECT_EQ(light_links_text(scene, 0), "reached by lights 0; not by 1") << "the floor";
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "render/ray_tree.h"
 #include "render/render.h"
 
 namespace rt::view {
@@ -49,6 +50,9 @@ void ray_list(const PreparedScene& scene, const RayNode& n) {
                        n.depth);
     ImGui::SameLine();
     ImGui::TextUnformatted(what_was_hit(scene, n).c_str());
+    if (n.hit && scene.features.light_links)
+        ImGui::TextColored({1, 0.85f, 0.4f, 1}, "%*s  %s", n.depth * 2, "",
+                           light_links_text(scene, n.hit_record.material).c_str());
     ImGui::Text("%*s  contribution (%.4f, %.4f, %.4f)", n.depth * 2, "", double(n.contribution.r),
                 double(n.contribution.g), double(n.contribution.b));
     for (const ShadowRecord& s : n.shadows)
