@@ -305,9 +305,11 @@ PreparedScene two_spheres() {
 TEST_F(LightLinking, ALightLinkedToAMaterialLightsOnlyIt) {
     // The light says "only": [material 0]: the framework gives it visibility 0 at the right
     // sphere, and direct_light must leave it out there (stage 03's visibility[light]).
+    // With shadows: the left sphere's shadow ray is your light_transmittance's.
     PreparedScene scene = two_spheres();
     scene.lights[0].reach_mask = 1;
     scene.lights[0].reach_rest = false;
+    scene.shadows = true;
     refresh_features(scene);
     const Image image = render(scene, RenderMode::Shaded);
     const Color left = image.at(16, 16), right = image.at(48, 16);
