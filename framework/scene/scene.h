@@ -235,8 +235,8 @@ struct Scene {
     // Named objects and their instances (docs/scene-format.md#transforms-and-instances). Each
     // object is the description of a scene of its own (its surfaces only, in its own space; its
     // materials index this scene's table), shared between copies of this scene. prepare_scene
-    // prepares each (PreparedScene::prepared_objects). Not on the GPU (gpu::pack_scene refuses
-    // instances).
+    // prepares each (PreparedScene::prepared_objects). The GPU port draws a copy with each
+    // instance's object in world space (render/gpu/flatten_instances.h).
     std::vector<Instance> instances;
     std::vector<std::shared_ptr<const Scene>> objects;
     std::vector<std::string> object_names;  // parallel to `objects`; "" for a shape's own

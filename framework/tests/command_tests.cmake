@@ -28,11 +28,14 @@ rt_cli_error_test(UnknownFlag "--bogus" render ${rt_cli_scene} -o ${PROJECT_BINA
 rt_cli_error_test(ZeroThreads "--threads" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --threads 0)
 rt_cli_error_test(HugeWidth "--width" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.png --width 100000)
 rt_cli_error_test(BadOutputExtension "x.bmpx" render ${rt_cli_scene} -o ${PROJECT_BINARY_DIR}/x.bmpx)
-# Instances (docs/scene-format.md#transforms-and-instances) have no GPU port: one line, no image.
-# (A scene without a BVH, so that a starter tree's stubbed build_bvh says nothing first.)
-rt_cli_error_test(ExportRefusesInstances "1 instance (of a named object, or a rotated box"
-                  export-shadertoy ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/rotated_box.json
-                  -o ${PROJECT_BINARY_DIR}/x.glsl)
+# Instances (docs/scene-format.md#transforms-and-instances) on the GPU are drawn from a world-space
+# copy, which cannot keep an unevenly scaled sphere or show the CPU's primitives: one line each.
+rt_cli_error_test(GpuInstanceOfAStretchedSphere "a sphere of an instance is scaled unevenly"
+                  render ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/instance_field.json --gpu
+                  -o ${PROJECT_BINARY_DIR}/x.png)
+rt_cli_error_test(ExportOfInstancesRefusesThePrimitiveView "shows primitives and the tree"
+                  export-web ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/rotated_box.json
+                  --mode primitive -o ${PROJECT_BINARY_DIR}/x.html)
 set(rt_instance_scene ${CMAKE_CURRENT_SOURCE_DIR}/tests/scenes/instance_field.json)
 add_test(NAME Render.InstancesThreadCountIsBitIdentical
   COMMAND ${CMAKE_COMMAND} -DRT=$<TARGET_FILE:rt> -DSCENE=${rt_instance_scene}

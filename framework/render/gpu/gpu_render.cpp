@@ -18,6 +18,7 @@
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
 #include "image/image.h"
+#include "render/gpu/flatten_instances.h"
 #include "render/gpu/gpu_debug_pixel.h"
 #include "render/gpu/texel_arrays.h"
 #include "render/gpu/web_arrays.h"
@@ -136,11 +137,6 @@ int gpu_texture_lookup(const PreparedScene& scene) {
 
 void check_gpu_supported(const PreparedScene& scene, RenderMode mode) {
     const std::string where = scene.source.empty() ? "the scene" : scene.source;
-    if (const std::size_t n = scene.instances.size(); n > 0)
-        throw GpuError(where + ": " + std::to_string(n) + (n == 1 ? " instance" : " instances") +
-                       " (of a named object, or a rotated box or non-uniformly scaled sphere): "
-                       "instances are not on the GPU yet; render it on the CPU (rt render "
-                       "without --gpu)");
     if (mode == RenderMode::BvhVisits && scene.accelerator != Accelerator::Bvh)
         throw GpuError(where +
                        ": mode \"bvh_visits\" draws the scene's BVH, and it has none; add "
@@ -427,6 +423,8 @@ Image output_image(const std::vector<glm::vec4>& output, const PreparedScene& sc
 
 Image GpuRenderer::render(const PreparedScene& scene, RenderMode mode, GpuTimings* timings_out,
                           GpuPixelProbe* probe) {
+    if (!scene.instances.empty())
+        return render(flatten_instances(scene, mode), mode, timings_out, probe);
     check_gpu_supported(scene, mode);
     GpuTimings timings;
     const std::string defines = program_defines(scene, mode, options_.uber, probe != nullptr);

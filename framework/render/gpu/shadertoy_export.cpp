@@ -11,6 +11,7 @@
 #include "core/text_file.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/shader_constants.h"
+#include "render/gpu/flatten_instances.h"
 #include "render/gpu/gpu_render.h"
 #include "render/render.h"
 
@@ -392,6 +393,8 @@ std::string main_function(bool page) {
 
 ShadertoyExport export_shadertoy(const PreparedScene& scene, RenderMode mode,
                                  const ShadertoyOptions& options) {
+    if (!scene.instances.empty())
+        return export_shadertoy(flatten_instances(scene, mode), mode, options);
     check_exportable(scene, mode, options.web_page);
     const fs::path students = options.student_dir.empty() ? gpu_student_dir() : options.student_dir;
     const AssembledShader shader = assemble_shader(

@@ -114,6 +114,17 @@ TEST_P(Conformance, GpuMatchesCpu) {
     expect_gpu_matches_cpu(scene, mode, file);
 }
 
+// Instances on the GPU (render/gpu/flatten_instances.h): a box turned by 30 degrees is drawn as
+// its 12 triangles in world space, and must look as the CPU's two-level traversal sees it.
+TEST(GpuInstances, TurnedBoxMatchesTheCpu) {
+    Scene scene =
+        load_scene(::rt::testing::source_dir() / "framework/tests/scenes/rotated_box.json");
+    ASSERT_EQ(scene.instances.size(), 1u);
+    const PreparedScene prepared = prepare_scene(std::move(scene));
+    for (RenderMode mode : {RenderMode::Normals, RenderMode::Depth, RenderMode::Shaded})
+        expect_gpu_matches_cpu(prepared, mode, "rotated_box.json (an instance)");
+}
+
 // The uber shader (every HAS_ defined, what the scene has decided at run time) on scenes that
 // lack some features: it must not use what is not there (a BVH, shadows, vertex normals).
 class UberConformance : public Conformance {};

@@ -5,8 +5,9 @@
 // The CPU image is the stage's reference, reference_images/11-path-tracing/<scene>.png: the CPU
 // reference solution at 2048 samples per pixel (`rt render SCENE --spp 2048`, docs/grading.md),
 // which rt-grade grades the CPU renders against. The GPU renders each scene at its own size and
-// samples (cornell_box 120 x 120 at 128, veach_mis and sky_spheres 160 x 120 and 160 x 100 at
-// 64), as `rt render --gpu` does,
+// samples (cornell_box 120 x 120 at 128; veach_mis, sky_spheres and instance_field 160 x 120,
+// 160 x 100 and 160 x 120 at 64; instance_field's tori drawn from their world-space copy,
+// render/gpu/flatten_instances.h), as `rt render --gpu` does,
 // and must pass the metric the CPU renders are graded with (stage 10's, grading.json): the mean
 // linear colour of each 8 x 8 block, re-encoded to 8-bit sRGB, may differ by at most 6 steps, in
 // at most 1.5 % of the pixels. Calibrated (2026-12, llvmpipe): the GPU with seeds 101-105 and the
@@ -84,11 +85,9 @@ TEST(GpuSky, WhiteFurnaceSphereDisappears) {
             ASSERT_NEAR(image.at(x, y).g, 0.5, 1e-3) << "pixel " << x << ", " << y;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GpuPath,
-                         ::testing::Values("cornell_box", "veach_mis", "sky_spheres"),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             return info.param;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, GpuPath, ::testing::Values("cornell_box", "veach_mis", "sky_spheres", "instance_field"),
+    [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 RT_TEST_SUITE(GpuPathRuns, "optional-the-gpu");
 
