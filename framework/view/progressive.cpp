@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/gpu/flatten_instances.h"
 #include "render/gpu/gpu_render.h"
 #include "render/prepare.h"
 #include "render/render.h"
@@ -121,6 +122,9 @@ void ProgressiveRenderer::run() {
                         gpu_options.cancel = &cancel_;  // stage 10: between sample batches
                         gpu_renderer = std::make_unique<GpuRenderer>(gpu_options);
                     }
+                    // Instances: the GPU's world-space copy, made once for all the passes
+                    // (they change only the image size and the samples).
+                    if (!scene.instances.empty()) scene = flatten_instances(scene, scene.mode);
                     frame.image = gpu_renderer->render(scene, scene.mode);
                 } else {
                     frame.image = render(scene, scene.mode, options);

@@ -10,13 +10,13 @@
 namespace rt {
 namespace {
 
-using Vec4 = glm::vec<4, Real>;
-
 Vec3 world_point(const Instance& instance, const Vec3& p) {
-    return Vec3(instance.object_to_world * Vec4(p, 1));
+    return transform_point(glm::dmat4(instance.object_to_world), p);
 }
 
 // The scale of a map that turns and scales evenly (a sphere stays a sphere); 0 otherwise.
+// scene/transform.h's similarity_scale asks this of the loader's double matrices to 1e-9; an
+// instance keeps its map in Real, whose rounding alone is about 1e-7.
 Real even_scale(const Mat4& m) {
     const Vec3 x(m[0]), y(m[1]), z(m[2]);
     const Real s = glm::length(x);
@@ -26,16 +26,6 @@ Real even_scale(const Mat4& m) {
         std::abs(glm::dot(x, y)) <= tolerance * s && std::abs(glm::dot(y, z)) <= tolerance * s &&
         std::abs(glm::dot(z, x)) <= tolerance * s;
     return even ? s : 0;
-}
-
-// Whether the map takes each axis to an axis (moves, scales, quarter turns): a box stays a box.
-bool keeps_axes(const Mat4& m) {
-    for (int column = 0; column < 3; ++column) {
-        int nonzero = 0;
-        for (int row = 0; row < 3; ++row) nonzero += m[column][row] != 0 ? 1 : 0;
-        if (nonzero != 1) return false;
-    }
-    return true;
 }
 
 class Flattener {
@@ -65,7 +55,7 @@ class Flattener {
     // A box stays a box under moves, scales and quarter turns; turned otherwise it becomes its
     // 12 triangles (the same surface; a textured one would lose the box's texture coordinates).
     void add_box(const Instance& instance, const Box& b, int material) {
-        if (keeps_axes(instance.object_to_world)) {
+        if (keeps_axes(glm::dmat4(instance.object_to_world))) {
             const Vec3 a = world_point(instance, b.min), c = world_point(instance, b.max);
             flat_.boxes.push_back({glm::min(a, c), glm::max(a, c), material});
             return;
@@ -96,10 +86,11 @@ class Flattener {
     void add_triangles(const Instance& instance, const Scene& object, int material_override) {
         const std::uint32_t base = std::uint32_t(flat_.vertices.size());
         for (const Vec3& v : object.vertices) flat_.vertices.push_back(world_point(instance, v));
+        const glm::dmat3 to_world_normal = normal_matrix(glm::dmat4(instance.object_to_world));
         if (normals_)
             for (std::size_t i = 0; i < object.vertices.size(); ++i) {
                 const Vec3 n = object.normals.empty() ? Vec3(0) : object.normals[i];
-                flat_.normals.push_back(n == Vec3(0) ? n : world_normal(instance, n));
+                flat_.normals.push_back(transform_normal(to_world_normal, n));
             }
         if (uvs_)
             for (std::size_t i = 0; i < object.vertices.size(); ++i)
